@@ -1,0 +1,51 @@
+#!/bin/sh
+# deps.sh: install the Debian packages vroc needs that this machine lacks.
+# Checks with pkg-config and command -v first; on a ready machine it installs
+# nothing and prints one line.  Runs apt-get directly as root, through sudo
+# otherwise.  Used by `make deps`, itself a prerequisite of check, bench, demo.
+set -u
+
+missing=""
+need_pkg() { # pkg-config module, Debian package
+    pkg-config --exists "$1" 2>/dev/null || missing="$missing $2"
+}
+need_cmd() { # command, Debian package
+    command -v "$1" >/dev/null 2>&1 || missing="$missing $2"
+}
+
+need_cmd pkg-config pkg-config
+need_cmd cc gcc
+if command -v pkg-config >/dev/null 2>&1; then
+    need_pkg readline libreadline-dev
+    need_pkg osmesa libosmesa6-dev
+    need_pkg libpng libpng-dev
+    need_pkg qhull_r libqhull-dev
+    need_pkg sndfile libsndfile1-dev
+    need_pkg cmocka libcmocka-dev
+else
+    missing="$missing libreadline-dev libosmesa6-dev libpng-dev libqhull-dev libsndfile1-dev libcmocka-dev"
+fi
+need_cmd tmux tmux
+need_cmd mandoc mandoc
+need_cmd valgrind valgrind
+
+if [ -z "$missing" ]; then
+    echo "deps: all present"
+    exit 0
+fi
+
+echo "deps: installing$missing"
+if [ "$(id -u)" -eq 0 ]; then
+    SUDO=""
+elif command -v sudo >/dev/null 2>&1; then
+    SUDO="sudo"
+else
+    echo "deps: not root and no sudo: install these by hand:$missing" >&2
+    exit 1
+fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -q >/dev/null || { echo "deps: apt-get update failed" >&2; exit 1; }
+# shellcheck disable=SC2086
+$SUDO apt-get install -y -q --no-install-recommends $missing >/dev/null ||
+    { echo "deps: apt-get install failed:$missing" >&2; exit 1; }
+echo "deps: installed$missing"

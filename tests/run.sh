@@ -1,0 +1,67 @@
+#!/bin/sh
+# run.sh: runs every test of vroc and ends with one line "N passed, N failed".
+#
+# Unit tests (build/tests/test_*) print TAP through cmocka; each "ok" or "not ok"
+# line is one test.  Script tests (tests/*.sh but this file) print "ok NAME" or
+# "not ok NAME" lines the same way.  Everything runs twice: with the normal build and
+# with the AddressSanitizer + UndefinedBehaviorSanitizer build (VROC=build-san/vroc).
+# Full output goes to tests/out/log; failures are repeated at the end.
+set -u
+cd "$(dirname "$0")/.." || exit 1
+mkdir -p tests/out
+log=tests/out/log
+: > "$log"
+pass=0
+fail=0
+failed=""
+
+count() { # reads TAP-ish output on stdin, label in $1
+    while IFS= read -r line; do
+        printf '%s\n' "$line" >> "$log"
+        case "$line" in
+            "ok "*) pass=$((pass + 1)) ;;
+            "not ok "*) fail=$((fail + 1)); failed="$failed
+$1: $line" ;;
+        esac
+    done
+}
+
+export CMOCKA_MESSAGE_OUTPUT=TAP
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:exitcode=99
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+for build in build build-san; do
+    for t in $build/tests/test_*; do
+        [ -x "$t" ] || continue
+        echo "# $t" >> "$log"
+        out=$("$t" 2>&1)
+        status=$?
+        printf '%s\n' "$out" | { count "$t"; echo "$pass $fail" > tests/out/.counts; printf '%s' "$failed" > tests/out/.failed; }
+        read -r pass fail < tests/out/.counts
+        failed=$(cat tests/out/.failed)
+        if [ $status -ne 0 ] && ! printf '%s\n' "$out" | grep -q '^not ok'; then
+            fail=$((fail + 1)); failed="$failed
+$t: exited with status $status"
+            printf '%s\n' "$out" | tail -20 >> "$log"
+        fi
+    done
+    for s in tests/*.sh; do
+        [ "$s" = tests/run.sh ] && continue
+        echo "# $s ($build)" >> "$log"
+        bin=./vroc; [ "$build" = build-san ] && bin=build-san/vroc
+        out=$(VROC=$bin BUILD=$build sh "$s" 2>&1)
+        status=$?
+        printf '%s\n' "$out" | { count "$s ($build)"; echo "$pass $fail" > tests/out/.counts; printf '%s' "$failed" > tests/out/.failed; }
+        read -r pass fail < tests/out/.counts
+        failed=$(cat tests/out/.failed)
+        if [ $status -ne 0 ]; then
+            fail=$((fail + 1)); failed="$failed
+$s ($build): exited with status $status"
+        fi
+    done
+done
+rm -f tests/out/.counts tests/out/.failed
+if [ -n "$failed" ]; then
+    echo "failures (full log in $log):$failed"
+fi
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
