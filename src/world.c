@@ -1,0 +1,135 @@
+/* world.c: the objects and the settings, with every start-up value in one place.
+ *
+ * Defaults come from the thesis's Table A.5 (time_step 0.1, collision_dist 0.25,
+ * max_linear 8, max_angular 4) and from language.md for what vroc adds.
+ */
+#include "world.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+settings settings_defaults(void)
+{
+    settings s;
+    memset(&s, 0, sizeof s);
+    s.time_step = 0.1;
+    s.collision_dist = 0.25;
+    s.internal_step = 0;
+    s.max_linear = 8.0;
+    s.max_angular = 4.0;
+    s.force = (dir_amount){v3(0, 0, 0), 0};
+    snprintf(s.collision_sound, sizeof s.collision_sound, "click");
+    s.collision_vol = 1.0;
+    s.collision_heap = true;
+    s.random_box = v3(2, 2, 2);
+    s.seed = 1;
+    s.head = v3(0, 0, 0);
+    s.look_at = v3(0, 1, 0);
+    s.up = v3(0, 0, 1);
+    s.ipd = 0.064;
+    s.fov = 60;
+    s.image_w = 640;
+    s.image_h = 512;
+    snprintf(s.output, sizeof s.output, "frames");
+    s.stereo = STEREO_PAIR;
+    s.real = REAL_SOLID;
+    s.record = false;
+    s.hand = v3(0, 0, 0);
+    s.hand_rotate = (dir_amount){v3(1, 0, 0), 0};
+    s.trigger = false;
+    s.select_mode = false;
+    s.tracker[0] = '\0';
+    return s;
+}
+
+void world_init(world *w)
+{
+    memset(w, 0, sizeof *w);
+    w->set = settings_defaults();
+}
+
+void world_free(world *w)
+{
+    for (int i = 0; i < w->n; i++) {
+        body_free(w->bodies[i]);
+        free(w->bodies[i]);
+    }
+    free(w->bodies);
+    if (w->trace) fclose(w->trace);
+    if (w->events) fclose(w->events);
+    w->bodies = NULL;
+    w->n = w->cap = 0;
+    w->trace = w->events = NULL;
+}
+
+int world_find(const world *w, const char *name)
+{
+    for (int i = 0; i < w->n; i++)
+        if (strcmp(w->bodies[i]->name, name) == 0) return i;
+    return -1;
+}
+
+int world_add(world *w, body *b)
+{
+    if (w->n == w->cap) {
+        int cap = w->cap ? 2 * w->cap : 16;
+        body **nb = realloc(w->bodies, (size_t)cap * sizeof *nb);
+        if (!nb) {
+            body_free(b);
+            free(b);
+            return -1;
+        }
+        w->bodies = nb;
+        w->cap = cap;
+    }
+    w->bodies[w->n] = b;
+    return w->n++;
+}
+
+void world_delete(world *w, int i)
+{
+    body_free(w->bodies[i]);
+    free(w->bodies[i]);
+    memmove(&w->bodies[i], &w->bodies[i + 1], (size_t)(w->n - i - 1) * sizeof *w->bodies);
+    w->n--;
+    for (int k = 0; k < w->n; k++) {
+        body *b = w->bodies[k];
+        if (b->support == i) b->support = -1;
+        else if (b->support > i) b->support--;
+    }
+}
+
+void world_counts(const world *w, int *dynamic, int *stat)
+{
+    int d = 0, s = 0;
+    for (int i = 0; i < w->n; i++) {
+        if (body_is_static(w->bodies[i])) s++;
+        else d++;
+    }
+    *dynamic = d;
+    *stat = s;
+}
+
+long world_pairs(const world *w)
+{
+    int d, s;
+    world_counts(w, &d, &s);
+    return (long)d * (d - 1) / 2 + (long)d * s;
+}
+
+vec3 world_accel(const world *w)
+{
+    return v3_scale(v3_norm(w->set.force.dir), w->set.force.amount);
+}
+
+long world_subframes(const world *w)
+{
+    const settings *s = &w->set;
+    if (s->time_step <= 0) return 0;
+    double h = s->internal_step > 0 ? s->internal_step : s->collision_dist / (2 * s->max_linear);
+    if (!(h > 0) || isinf(h)) return 1;
+    double n = ceil(s->time_step / h * (1 - 1e-12));
+    if (n < 1) n = 1;
+    return n > 1e12 ? (long)1e12 : (long)n;
+}

@@ -1,0 +1,117 @@
+/* world.h: everything vroc simulates and shows: the objects and the system settings.
+ *
+ * The world owns its bodies (in creation order, which is also the order of
+ * `list`, `save` and the trace) and the settings of Table A.5 and language.md.
+ * settings_defaults gives every start-up value in one place.  The world knows
+ * nothing of text, prompts or pixels: the shell and the renderer read it.
+ */
+#ifndef VROC_WORLD_H
+#define VROC_WORLD_H
+
+#include <stdbool.h>
+#include <stdio.h>
+
+#include "body.h"
+#include "vmath.h"
+
+#define PATH_MAX_VROC 1024
+
+typedef enum { STEREO_PAIR, STEREO_SBS, STEREO_ANAGLYPH, STEREO_MONO } stereo_mode;
+typedef enum { REAL_SOLID, REAL_WIRE, REAL_HIDDEN } real_mode;
+
+/* A direction and an amount, as `force = (x,y,z) m` and `hand_rotate = (x,y,z) r`
+ * are typed. */
+typedef struct {
+    vec3 dir;
+    double amount;
+} dir_amount;
+
+typedef struct {
+    /* time (Table A.5) */
+    double time_step;       /* frame step, s; 0 halts */
+    double collision_dist;  /* m */
+    double internal_step;   /* forced internal step, s; 0 automatic */
+    double max_linear;      /* m/s */
+    double max_angular;     /* rad/s */
+    dir_amount force;       /* direction as typed, magnitude m/s^2 */
+    /* sound */
+    char collision_sound[PATH_MAX_VROC];
+    double collision_vol;
+    /* schedule */
+    bool collision_heap;
+    vec3 random_box;
+    unsigned long seed;
+    /* head and views */
+    vec3 head, look_at, up;
+    double ipd, fov;
+    int image_w, image_h;
+    char output[PATH_MAX_VROC];
+    stereo_mode stereo;
+    int background[3];
+    real_mode real;
+    bool record;
+    /* hand-held tracker (thesis Appendix A.1.2) */
+    vec3 hand;
+    dir_amount hand_rotate; /* axis and angle, radians */
+    bool trigger;
+    bool select_mode;
+    char tracker[PATH_MAX_VROC];
+} settings;
+
+typedef struct {
+    long frames;          /* frames advanced */
+    long subframes;       /* internal steps taken */
+    long pair_checks;     /* pair distance queries */
+    long collisions;      /* collisions answered */
+    double wall_time;     /* seconds spent advancing time */
+    double render_time;   /* seconds spent drawing and writing frames */
+    long frames_written;  /* image files written */
+} stats;
+
+typedef struct world {
+    body **bodies;        /* n bodies, creation order */
+    int n, cap;
+    settings set;
+    double time;          /* simulated time, s */
+    long frame;           /* frame number */
+    bool running;         /* `start` given and not stopped */
+    stats st;
+    FILE *trace;          /* `trace = FILE`, or NULL */
+    char trace_path[PATH_MAX_VROC];
+    FILE *events;         /* `events = FILE`, or NULL */
+    char events_path[PATH_MAX_VROC];
+} world;
+
+settings settings_defaults(void);
+
+void world_init(world *w);
+/* Removes every object and closes the logs (the world can be reused after
+ * world_init). */
+void world_free(world *w);
+
+/* Index of the object named name, or -1. */
+int world_find(const world *w, const char *name);
+
+/* Appends b (taking ownership).  Returns its index, or -1 on allocation failure
+ * (b is then freed). */
+int world_add(world *w, body *b);
+
+/* Removes and frees object i; later objects shift down by one. */
+void world_delete(world *w, int i);
+
+/* Number of dynamic (including resting) and static objects. */
+void world_counts(const world *w, int *dynamic, int *stat);
+
+/* Pairs checked for collision: n(n-1)/2 + n s for n dynamic and s static objects. */
+long world_pairs(const world *w);
+
+/* The global acceleration: force.dir / |force.dir| * force.amount (zero when
+ * none). */
+vec3 world_accel(const world *w);
+
+/* Internal steps per frame: ceil(time_step / hmax) with hmax = internal_step when
+ * set, else collision_dist / (2 max_linear); 1 when that bound is infinite; 0 when
+ * time_step is 0. */
+long world_subframes(const world *w);
+
+#endif
