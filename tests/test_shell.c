@@ -1,0 +1,349 @@
+/* test_shell.c: statements run against a world: the bad-input catalogue (each entry
+ * gives its message and changes nothing), objects and properties, save and read
+ * round trips. */
+#include "check.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "shell.h"
+
+static shell g_sh;
+static char *g_out, *g_errbuf;
+static size_t g_outlen, g_errlen;
+static char g_dir[64];
+
+static int setup(void **state)
+{
+    (void)state;
+    FILE *out = open_memstream(&g_out, &g_outlen);
+    FILE *err = open_memstream(&g_errbuf, &g_errlen);
+    shell_init(&g_sh, out, err);
+    g_sh.quiet = true;
+    g_sh.stop_on_error = true;
+    snprintf(g_dir, sizeof g_dir, "/tmp/vroc-shell-XXXXXX");
+    return mkdtemp(g_dir) ? 0 : -1;
+}
+
+static int teardown(void **state)
+{
+    (void)state;
+    FILE *out = g_sh.out, *err = g_sh.err;
+    shell_free(&g_sh);
+    fclose(out);
+    fclose(err);
+    free(g_out);
+    free(g_errbuf);
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", g_dir);
+    return system(cmd) == 0 ? 0 : -1;
+}
+
+/* Everything the user could observe of the world, as text. */
+static char *snapshot(void)
+{
+    char *text;
+    size_t len;
+    FILE *f = open_memstream(&text, &len);
+    settings_write(f, &g_sh.w, 0);
+    for (int i = 0; i < g_sh.w.n; i++) body_write(f, g_sh.w.bodies[i]);
+    fprintf(f, "current %d time %.17g frame %ld\n", g_sh.current, g_sh.w.time, g_sh.w.frame);
+    fclose(f);
+    return text;
+}
+
+static void clear_output(void)
+{
+    fflush(g_sh.out);
+    fflush(g_sh.err);
+    rewind(g_sh.out);
+    rewind(g_sh.err);
+    g_out[0] = g_errbuf[0] = '\0';
+    g_outlen = g_errlen = 0;
+}
+
+static cmd_status run(const char *text)
+{
+    clear_output();
+    cmd_status r = shell_run_text(&g_sh, text, NULL);
+    fflush(g_sh.out);
+    fflush(g_sh.err);
+    return r;
+}
+
+static void path_in_dir(char *out, size_t len, const char *name)
+{
+    snprintf(out, len, "%s/%s", g_dir, name);
+}
+
+static void write_file(const char *name, const char *text, size_t n)
+{
+    char path[256];
+    path_in_dir(path, sizeof path, name);
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    fwrite(text, 1, n, f);
+    fclose(f);
+}
+
+/* A world to break: a few objects with non-default state. */
+static void build_world(void)
+{
+    assert_int_equal(run("restart; gravity; time_step = 0.05\n"
+                         "sphere ball; radius = 0.25; translate = (1, 2, 3); linear_vel = (1, 0, 0)\n"
+                         "cube box; size = (1, 0.5, 0.25); rotate = (1, 1, 0) 0.5; mass = 3\n"
+                         "superquadric pillow; exp1 = 0.3; exp2 = 1.5; a1 = 0.5; ures = 12\n"
+                         "cube table; mass = -1; size = (2, 1, 0.1)\n"
+                         "sphere ball\n"),
+                     CMD_OK);
+}
+
+static void bad(const char *text, const char *want)
+{
+    build_world();
+    char *before = snapshot();
+    cmd_status r = run(text);
+    char *after = snapshot();
+    if (r != CMD_ERROR) fail_msg("'%s' did not fail", text);
+    if (!strstr(g_errbuf, want)) fail_msg("'%s': message '%s' lacks '%s'", text, g_errbuf, want);
+    if (strcmp(before, after) != 0)
+        fail_msg("'%s' changed the world:\n--- before\n%s\n--- after\n%s", text, before, after);
+    free(before);
+    free(after);
+}
+
+static void the_bad_input_catalogue(void **state)
+{
+    (void)state;
+    char path[256], text[600];
+    bad("frobnicate\n", "error: unknown command 'frobnicate'");
+    bad("radius =\n", "error: radius: missing value");
+    bad("translate = (1, 2\n", "unfinished vector");
+    bad("translate = (1, 2, x)\n", "expected a number, got 'x'");
+    bad("radius = nan\n", "radius must be a finite number (got nan)");
+    bad("translate = (inf, 0, 0)\n", "translate must be a finite number (got inf)");
+    bad("mass = 0\n", "mass must not be 0");
+    bad("radius = -1\n", "radius must be > 0 (got -1)");
+    bad("radius = 1 2\n", "unexpected '2'");
+    /* the first statements of a bad line do not run either: parsed whole first */
+    bad("radius = 0.5; translate = (0, 0, 0); bogus\n", "unknown command 'bogus'");
+    bad("nosuch.radius = 2\n", "no object named 'nosuch'");
+    bad("cube ball\n", "'ball' is already a sphere; it cannot also be a cube");
+    bad("delete ghost\n", "no object named 'ghost'");
+    bad("print ghost\n", "no object named 'ghost'");
+    bad("distance ball ghost\n", "no object named 'ghost'");
+    bad("read /nonexistent/scene.vroc\n", "cannot read '/nonexistent/scene.vroc'");
+    path_in_dir(path, sizeof path, "self.vroc");
+    snprintf(text, sizeof text, "sphere other\nread \"%s\"\n", path);
+    write_file("self.vroc", text, strlen(text));
+    snprintf(text, sizeof text, "read \"%s\"\n", path);
+    bad(text, "reads itself");
+    write_file("garbage.vroc", "sphere z\n\x7f\x45\x4c\x46\x02\x01\x01\0\0\0", 18);
+    path_in_dir(path, sizeof path, "garbage.vroc");
+    snprintf(text, sizeof text, "read \"%s\"\n", path);
+    bad(text, "garbage.vroc:2: error: unexpected");
+    size_t n = 1 << 20;
+    char *big = malloc(n + 32);
+    memcpy(big, "sphere z\nradius = ", 18);
+    memset(big + 18, '7', n);
+    memcpy(big + 18 + n, "x\n", 3);
+    write_file("long.vroc", big, strlen(big));
+    path_in_dir(path, sizeof path, "long.vroc");
+    snprintf(text, sizeof text, "read \"%s\"\n", path);
+    bad(text, "long.vroc:2: error: radius: expected a number, got '7777");
+    free(big);
+    path_in_dir(path, sizeof path, "late-typo.vroc");
+    write_file("late-typo.vroc", "sphere early\nradius = 9\n\n\n\nradius = 9\nradiuss = 1\n", 46);
+    snprintf(text, sizeof text, "read \"%s\"\n", path);
+    bad(text, "late-typo.vroc:7: error: unknown command 'radiuss'");
+    bad("save /nonexistent/dir/world.vroc\n", "cannot write '/nonexistent/dir/world.vroc'");
+    bad("trace = /nonexistent/dir/t.csv\n", "cannot write '/nonexistent/dir/t.csv'");
+    bad("collision_sound = /nonexistent.wav\n", "cannot read '/nonexistent.wav'");
+    bad("tracker = /nonexistent.trk\n", "cannot read '/nonexistent.trk'");
+    bad("run 1; run 1; run 1e9999\n", "run must be a finite number");
+    bad("reselect\n", "no object has been selected");
+    bad("ball.size = (1, 1, 1); box.radius = 2; bogus\n", "unknown command 'bogus'");
+}
+
+static void no_current_object(void **state)
+{
+    (void)state;
+    assert_int_equal(run("restart\n"), CMD_OK);
+    char *before = snapshot();
+    assert_int_equal(run("radius = 2\n"), CMD_ERROR);
+    assert_non_null(strstr(g_errbuf, "no current object: create one with sphere NAME"));
+    char *after = snapshot();
+    assert_string_equal(before, after);
+    free(before);
+    free(after);
+}
+
+static void properties_of_other_classes_are_ignored(void **state)
+{
+    (void)state;
+    build_world();
+    char *before = snapshot();
+    assert_int_equal(run("box.radius = 2\n"), CMD_OK);
+    assert_non_null(strstr(g_errbuf, "warning: radius does not apply to cube 'box'"));
+    char *after = snapshot();
+    assert_string_equal(before, after);
+    free(before);
+    free(after);
+}
+
+static void names_select_objects(void **state)
+{
+    (void)state;
+    build_world();
+    /* NAME.property does not change the current object */
+    assert_int_equal(run("box.mass = 5; radius = 0.5\n"), CMD_OK);
+    assert_near(g_sh.w.bodies[world_find(&g_sh.w, "box")]->mass, 5, 0);
+    assert_near(g_sh.w.bodies[world_find(&g_sh.w, "ball")]->sp.radius, 0.5, 0);
+    /* reusing a name of the same type reselects it */
+    assert_int_equal(run("cube box; size = (2, 2, 2)\n"), CMD_OK);
+    assert_int_equal(g_sh.w.n, 4);
+    assert_near(g_sh.w.bodies[world_find(&g_sh.w, "box")]->sp.size.x, 2, 0);
+    assert_int_equal(run("delete box; list\n"), CMD_OK);
+    assert_int_equal(g_sh.w.n, 3);
+    assert_null(strstr(g_out, "box"));
+    assert_non_null(strstr(g_out, "table"));
+    assert_non_null(strstr(g_out, "static"));
+    assert_int_equal(g_sh.current, -1);
+    assert_int_equal(run("radius = 1\n"), CMD_ERROR);
+}
+
+static void save_restart_read_round_trips_exactly(void **state)
+{
+    (void)state;
+    build_world();
+    assert_int_equal(run("box.angular_vel = (0.3, -1.1, 2.2); pillow.angular_vel = (1, 1, 1)\n"
+                         "pillow.translate = (0.1, 0.2, 0.3); ball.color = (1, 2, 3)\n"
+                         "force = (0.1, 0.2, -1) 3.3; stereo = sbs; record = off; ipd = 0.07\n"
+                         "image_size = (320, 200); background = (9, 8, 7); real = wire\n"
+                         "hand_rotate = (0, 1, 0) 0.25; select on; seed = 77\n"
+                         "run 7\n"),
+                     CMD_OK);
+    char *before = snapshot();
+    char path[256], text[400];
+    path_in_dir(path, sizeof path, "saved.vroc");
+    snprintf(text, sizeof text, "save \"%s\"\n", path);
+    assert_int_equal(run(text), CMD_OK);
+    snprintf(text, sizeof text, "restart; read \"%s\"\n", path);
+    assert_int_equal(run(text), CMD_OK);
+    char *after = snapshot();
+    /* time and frame restart at 0: compare all but the last line */
+    *strstr(before, "current ") = '\0';
+    *strstr(after, "current ") = '\0';
+    assert_string_equal(before, after);
+    assert_int_equal(g_sh.current, world_find(&g_sh.w, "ball"));
+    free(before);
+    free(after);
+}
+
+static void restart_returns_every_setting(void **state)
+{
+    (void)state;
+    build_world();
+    assert_int_equal(run("stereo = mono; trace = off; restart\n"), CMD_OK);
+    char *text;
+    size_t len;
+    FILE *f = open_memstream(&text, &len);
+    settings_write(f, &g_sh.w, 0);
+    fclose(f);
+    world fresh;
+    world_init(&fresh);
+    char *want;
+    f = open_memstream(&want, &len);
+    settings_write(f, &fresh, 0);
+    fclose(f);
+    assert_string_equal(text, want);
+    assert_int_equal(g_sh.w.n, 0);
+    world_free(&fresh);
+    free(text);
+    free(want);
+}
+
+static void show_lists_every_setting(void **state)
+{
+    (void)state;
+    assert_int_equal(run("show\n"), CMD_OK);
+    for (int i = 0; i < command_count; i++) {
+        const command *c = &command_table[i];
+        if (c->form != FORM_SETTING) continue;
+        char line[64];
+        snprintf(line, sizeof line, "\n%s = ", c->name);
+        if (!strstr(g_out, line) && strncmp(g_out, line + 1, strlen(line) - 1) != 0)
+            fail_msg("show does not write %s", c->name);
+    }
+    /* and show's text reads back */
+    char *text = strdup(g_out);
+    assert_int_equal(run(text), CMD_OK);
+    free(text);
+}
+
+static void time_and_stats(void **state)
+{
+    (void)state;
+    assert_int_equal(run("restart; time_step = 1e6; run 1\n"), CMD_ERROR);
+    assert_non_null(strstr(g_errbuf, "internal steps per frame (limit 1000000)"));
+    assert_int_equal(g_sh.w.frame, 0);
+    assert_int_equal(run("restart; sphere a; cube t; mass = -1; run 3; time; stats\n"), CMD_OK);
+    assert_non_null(strstr(g_out, "time = 0.3"));
+    assert_non_null(strstr(g_out, "objects = 2\npairs = 1\nsubframes = 7\nframes = 3\n"));
+    assert_int_equal(run("quit; sphere never\n"), CMD_QUIT);
+    assert_int_equal(world_find(&g_sh.w, "never"), -1);
+}
+
+static void trace_writes_a_row_per_object_per_frame(void **state)
+{
+    (void)state;
+    char path[256], text[400];
+    path_in_dir(path, sizeof path, "trace.csv");
+    snprintf(text, sizeof text,
+             "restart; gravity; sphere a; linear_vel = (1, 0, 4); sphere b; translate = (5, 0, 0)\n"
+             "trace = \"%s\"; run 10; trace = off; run 5\n",
+             path);
+    assert_int_equal(run(text), CMD_OK);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    char line[1024];
+    int rows = 0;
+    double z = 0, t = 0;
+    assert_non_null(fgets(line, sizeof line, f));
+    assert_string_equal(line, "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,state\n");
+    while (fgets(line, sizeof line, f)) {
+        rows++;
+        int commas = 0;
+        for (char *p = line; *p; p++) commas += *p == ',';
+        assert_int_equal(commas, 16);
+        long frame;
+        char name[16];
+        double x, y;
+        assert_int_equal(sscanf(line, "%ld,%lf,%15[^,],%lf,%lf,%lf", &frame, &t, name, &x, &y, &z), 6);
+        if (strcmp(name, "a") == 0 && frame == 10) {
+            assert_near(x, 1.0, 1e-9);
+            assert_near(z, 4.0 - 4.9, 1e-9);
+            assert_near(t, 1.0, 1e-12);
+        }
+        assert_non_null(strstr(line, ",dynamic\n"));
+    }
+    fclose(f);
+    assert_int_equal(rows, 2 * 11); /* two objects, at the start and after 10 frames */
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(the_bad_input_catalogue),
+        cmocka_unit_test(no_current_object),
+        cmocka_unit_test(properties_of_other_classes_are_ignored),
+        cmocka_unit_test(names_select_objects),
+        cmocka_unit_test(save_restart_read_round_trips_exactly),
+        cmocka_unit_test(restart_returns_every_setting),
+        cmocka_unit_test(show_lists_every_setting),
+        cmocka_unit_test(time_and_stats),
+        cmocka_unit_test(trace_writes_a_row_per_object_per_frame),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}
