@@ -1,0 +1,335 @@
+/* shape.c: the thesis's primitives (sphere, cube, superquadric; Tables A.2 to A.4)
+ * turned into a drawing mesh, a collision polyhedron and mass properties.
+ *
+ * Spheres and cubes have closed-form mass properties; a superquadric's are those of
+ * its collision polyhedron, the convex hull of its tessellation (poly.c), which is
+ * what collides.  The superquadric is Barr's superellipsoid (Barr 1981,
+ * "Superquadrics and angle-preserving transformations"), with the normal
+ *   n = (c(eta,2-e1) c(omega,2-e2) / a1, c(eta,2-e1) s(omega,2-e2) / a2, s(eta,2-e1) / a3)
+ * where it is finite; at cusps (exponents >= 2 where a cosine or sine vanishes) the
+ * mesh takes the area-weighted mean of the neighbouring triangles' normals.
+ * Angles are multiples of pi / (2 vres) and 2 pi / ures, so their sines and cosines
+ * are computed by octant reduction: exactly 0 and 1 at the axes and symmetric, so
+ * that |cos|^e with a small e gives no stray points near the poles and axes.
+ */
+#include "shape.h"
+
+#include <limits.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const double PI = 3.14159265358979323846;
+
+static void set_err(char *err, size_t errlen, const char *fmt, ...)
+{
+    if (!err || errlen == 0) return;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(err, errlen, fmt, ap);
+    va_end(ap);
+}
+
+shape_params shape_defaults(shape_kind kind)
+{
+    return (shape_params){.kind = kind,
+                          .radius = 1,
+                          .size = v3(1, 1, 1),
+                          .exp1 = 1,
+                          .exp2 = 1,
+                          .a1 = 1,
+                          .a2 = 1,
+                          .a3 = 1,
+                          .ures = 10,
+                          .vres = 10};
+}
+
+void shape_free(shape *s)
+{
+    if (!s) return;
+    poly_free(s->hull);
+    free(s->draw.pos);
+    free(s->draw.nrm);
+    free(s->draw.tri);
+    memset(s, 0, sizeof *s);
+}
+
+/* ---- the superquadric tessellation ---- */
+
+/* sin and cos of pi k / m, exact at multiples of pi / 2 and symmetric about them. */
+static void sincos_pi(long k, long m, double *s, double *c)
+{
+    double ss = 1, sc = 1;
+    k %= 2 * m;
+    if (k < 0) k += 2 * m;
+    if (k >= m) { /* x + pi */
+        k -= m;
+        ss = sc = -1;
+    }
+    if (2 * k > m) { /* pi - x */
+        k = m - k;
+        sc = -sc;
+    }
+    double sv, cv;
+    if (4 * k > m) { /* x = pi/2 - y */
+        double y = PI * (double)(m - 2 * k) / (double)(2 * m);
+        sv = cos(y);
+        cv = sin(y);
+    } else {
+        double x = PI * (double)k / (double)m;
+        sv = sin(x);
+        cv = cos(x);
+    }
+    *s = ss * sv;
+    *c = sc * cv;
+}
+
+/* sign(v) |v|^e; at v = 0 it is 0 for e > 0 and undefined (NaN) otherwise. */
+static double spow(double v, double e)
+{
+    if (v == 0) return e > 0 ? 0.0 : NAN;
+    return copysign(pow(fabs(v), e), v);
+}
+
+/* The angles of the tessellation: eta_j = -pi/2 + pi j / vres (j = 0 and vres are
+ * the poles), omega_i = -pi + 2 pi i / ures. */
+typedef struct {
+    double se, ce, so, co;
+} sq_angle;
+
+static sq_angle sq_at(const shape_params *p, int j, int i)
+{
+    sq_angle a;
+    sincos_pi(2L * j - p->vres, 2L * p->vres, &a.se, &a.ce);
+    sincos_pi(2L * i - p->ures, p->ures, &a.so, &a.co);
+    return a;
+}
+
+static vec3 sq_point(const shape_params *p, sq_angle a)
+{
+    double ce = spow(a.ce, p->exp1);
+    return v3(p->a1 * ce * spow(a.co, p->exp2), p->a2 * ce * spow(a.so, p->exp2),
+              p->a3 * spow(a.se, p->exp1));
+}
+
+/* The analytic outward normal (not unit), NaN where the surface has a cusp. */
+static vec3 sq_normal(const shape_params *p, sq_angle a)
+{
+    double ce = spow(a.ce, 2 - p->exp1);
+    return v3(ce * spow(a.co, 2 - p->exp2) / p->a1, ce * spow(a.so, 2 - p->exp2) / p->a2,
+              spow(a.se, 2 - p->exp1) / p->a3);
+}
+
+static int sq_count(const shape_params *p)
+{
+    long long n = (long long)p->ures * (p->vres - 1) + 2;
+    return n > INT_MAX / 8 ? -1 : (int)n;
+}
+
+int superquadric_points(const shape_params *p, vec3 *out, int max)
+{
+    int n = sq_count(p), k = 0;
+    if (n < 0) return -1;
+    if (out && k < max) out[k] = sq_point(p, sq_at(p, 0, 0));
+    k++;
+    for (int j = 1; j < p->vres; j++)
+        for (int i = 0; i < p->ures; i++, k++)
+            if (out && k < max) out[k] = sq_point(p, sq_at(p, j, i));
+    if (out && k < max) out[k] = sq_point(p, sq_at(p, p->vres, 0));
+    return n;
+}
+
+static int mesh_alloc(mesh *m, int nv, int nt)
+{
+    m->nv = nv;
+    m->nt = nt;
+    m->pos = malloc((size_t)nv * sizeof *m->pos);
+    m->nrm = malloc((size_t)nv * sizeof *m->nrm);
+    m->tri = malloc((size_t)nt * sizeof *m->tri);
+    return m->pos && m->nrm && m->tri ? 0 : -1;
+}
+
+static void put_tri(int (*tri)[3], int *t, int a, int b, int c)
+{
+    tri[*t][0] = a;
+    tri[*t][1] = b;
+    tri[*t][2] = c;
+    (*t)++;
+}
+
+/* Triangles of the tessellation, ccw seen from outside: a quad between ring j and
+ * ring j + 1 is (j,i) (j,i+1) (j+1,i+1) (j+1,i); the caps are fans about the poles. */
+static void sq_triangles(const shape_params *p, int (*tri)[3])
+{
+    int u = p->ures, top = p->vres - 1, north = u * top + 1, t = 0;
+#define RING(j, i) (1 + ((j) - 1) * u + ((i) % u))
+    for (int i = 0; i < u; i++) {
+        put_tri(tri, &t, 0, RING(1, i + 1), RING(1, i));
+        put_tri(tri, &t, RING(top, i), RING(top, i + 1), north);
+    }
+    for (int j = 1; j < top; j++)
+        for (int i = 0; i < u; i++) {
+            put_tri(tri, &t, RING(j, i), RING(j, i + 1), RING(j + 1, i + 1));
+            put_tri(tri, &t, RING(j, i), RING(j + 1, i + 1), RING(j + 1, i));
+        }
+#undef RING
+}
+
+/* Unit normals: analytic where finite, else the area-weighted mean of the
+ * neighbouring triangles' normals, else the direction from the centre. */
+static void sq_normals(const shape_params *p, mesh *m)
+{
+    for (int v = 0; v < m->nv; v++) m->nrm[v] = v3(0, 0, 0);
+    for (int t = 0; t < m->nt; t++) {
+        vec3 a = m->pos[m->tri[t][0]], b = m->pos[m->tri[t][1]], c = m->pos[m->tri[t][2]];
+        vec3 n = v3_cross(v3_sub(b, a), v3_sub(c, a));
+        for (int k = 0; k < 3; k++) m->nrm[m->tri[t][k]] = v3_add(m->nrm[m->tri[t][k]], n);
+    }
+    for (int v = 0; v < m->nv; v++) {
+        vec3 n = v3(NAN, NAN, NAN);
+        if (v == 0 || v == m->nv - 1) {
+            if (p->exp1 < 2) n = v3(0, 0, v == 0 ? -1 : 1);
+        } else {
+            int j = 1 + (v - 1) / p->ures, i = (v - 1) % p->ures;
+            n = sq_normal(p, sq_at(p, j, i));
+        }
+        if (!v3_finite(n) || !(v3_len(n) > 0)) n = m->nrm[v];
+        if (!v3_finite(n) || !(v3_len(n) > 0)) n = m->pos[v];
+        m->nrm[v] = v3_norm(n);
+    }
+}
+
+/* The tessellation as a smooth triangle mesh. */
+static int sq_mesh(const shape_params *p, mesh *m)
+{
+    int nv = sq_count(p);
+    if (nv < 0 || mesh_alloc(m, nv, 2 * p->ures * (p->vres - 1)) < 0) return -1;
+    superquadric_points(p, m->pos, nv);
+    sq_triangles(p, m->tri);
+    sq_normals(p, m);
+    return 0;
+}
+
+/* ---- the cube ---- */
+
+/* 24 vertices (4 per face, flat normals) and 12 triangles. */
+static int cube_mesh(vec3 h, mesh *m)
+{
+    if (mesh_alloc(m, 24, 12) < 0) return -1;
+    double hh[3] = {h.x, h.y, h.z};
+    int v = 0, t = 0;
+    for (int axis = 0; axis < 3; axis++)
+        for (int s = -1; s <= 1; s += 2) {
+            int u = (axis + 1) % 3, w = (axis + 2) % 3;
+            if (s < 0) { /* keep u x w = outward normal */
+                int x = u;
+                u = w;
+                w = x;
+            }
+            static const double su[4] = {-1, 1, 1, -1}, sw[4] = {-1, -1, 1, 1};
+            for (int k = 0; k < 4; k++) {
+                double c[3], n[3] = {0, 0, 0};
+                c[axis] = s * hh[axis];
+                c[u] = su[k] * hh[u];
+                c[w] = sw[k] * hh[w];
+                n[axis] = s;
+                m->pos[v + k] = v3(c[0], c[1], c[2]);
+                m->nrm[v + k] = v3(n[0], n[1], n[2]);
+            }
+            m->tri[t][0] = v, m->tri[t][1] = v + 1, m->tri[t++][2] = v + 2;
+            m->tri[t][0] = v, m->tri[t][1] = v + 2, m->tri[t++][2] = v + 3;
+            v += 4;
+        }
+    return 0;
+}
+
+static mass_props box_mass(vec3 h)
+{
+    double vol = 8 * h.x * h.y * h.z;
+    double xx = h.x * h.x, yy = h.y * h.y, zz = h.z * h.z;
+    return (mass_props){vol, v3(0, 0, 0),
+                        m3_diag(v3_scale(v3(yy + zz, xx + zz, xx + yy), vol / 3))};
+}
+
+/* ---- building ---- */
+
+static int build_sphere(shape *s, char *err, size_t errlen)
+{
+    double r = s->p.radius;
+    shape_params ball = s->p;
+    ball.a1 = ball.a2 = ball.a3 = r;
+    ball.exp1 = ball.exp2 = 1;
+    if (sq_count(&ball) < 0 || sq_mesh(&ball, &s->draw) < 0) {
+        set_err(err, errlen, "sphere: resolution %d x %d is too large", s->p.ures,
+                s->p.vres);
+        return -1;
+    }
+    double vol = 4.0 / 3.0 * PI * r * r * r;
+    s->mass = (mass_props){vol, v3(0, 0, 0), m3_scale(m3_identity(), 0.4 * vol * r * r)};
+    s->r_in = s->r_out = r;
+    return 0;
+}
+
+static int build_cube(shape *s, char *err, size_t errlen)
+{
+    vec3 h = s->p.size, c[8];
+    for (int k = 0; k < 8; k++)
+        c[k] = v3(k & 1 ? h.x : -h.x, k & 2 ? h.y : -h.y, k & 4 ? h.z : -h.z);
+    char why[200];
+    s->hull = poly_hull(c, 8, why, sizeof why);
+    if (!s->hull) {
+        set_err(err, errlen, "cube: %s", why);
+        return -1;
+    }
+    if (cube_mesh(h, &s->draw) < 0) {
+        set_err(err, errlen, "cube: out of memory");
+        return -1;
+    }
+    s->mass = box_mass(h);
+    s->r_in = fmin(h.x, fmin(h.y, h.z));
+    s->r_out = v3_len(h);
+    return 0;
+}
+
+static int build_superquadric(shape *s, char *err, size_t errlen)
+{
+    if (sq_count(&s->p) < 0) {
+        set_err(err, errlen, "superquadric: resolution %d x %d is too large", s->p.ures,
+                s->p.vres);
+        return -1;
+    }
+    if (sq_mesh(&s->p, &s->draw) < 0) {
+        set_err(err, errlen, "superquadric: out of memory at resolution %d x %d",
+                s->p.ures, s->p.vres);
+        return -1;
+    }
+    char why[200];
+    s->hull = poly_hull(s->draw.pos, s->draw.nv, why, sizeof why);
+    if (!s->hull) {
+        set_err(err, errlen, "superquadric: %s", why);
+        return -1;
+    }
+    s->mass = poly_mass(s->hull);
+    s->r_in = poly_inner_radius(s->hull, s->mass.com);
+    s->r_out = poly_outer_radius(s->hull, s->mass.com);
+    return 0;
+}
+
+int shape_build(shape *s, const shape_params *p, char *err, size_t errlen)
+{
+    shape_params params = *p; /* p may point into s */
+    memset(s, 0, sizeof *s);
+    s->p = params;
+    int rc;
+    switch (params.kind) {
+    case SHAPE_SPHERE: rc = build_sphere(s, err, errlen); break;
+    case SHAPE_CUBE: rc = build_cube(s, err, errlen); break;
+    case SHAPE_SUPERQUADRIC: rc = build_superquadric(s, err, errlen); break;
+    default:
+        set_err(err, errlen, "unknown shape kind %d", (int)params.kind);
+        rc = -1;
+    }
+    if (rc < 0) shape_free(s);
+    return rc;
+}
