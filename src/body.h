@@ -56,6 +56,9 @@ typedef struct body {
     vec3 I_princ;      /* principal moments */
 
     int support;       /* index of the body this one rests on, or -1 */
+    int slide;         /* the support it slides on (see sim.c), or -1 */
+    long slide_pair;   /* the pair of that contact in world.pairs */
+    vec3 slide_n;      /* that support's normal, towards this body */
 } body;
 
 /* A fresh body of the given kind named name, with the thesis's defaults:

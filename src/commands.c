@@ -147,12 +147,19 @@ static cmd_status cmd_property(shell *sh, const stmt *st)
     vec3 v = stmt_vec(st);
     shape_params old = b->sp;
     /* anything but the look or the sound of an object wakes it */
-    if (strcmp(n, "color") != 0 && strcmp(n, "volume") != 0 && b->state == STATE_RESTING)
-        b->state = STATE_DYNAMIC;
+    if (strcmp(n, "color") != 0 && strcmp(n, "volume") != 0) {
+        if (b->state == STATE_RESTING) b->state = STATE_DYNAMIC;
+        b->slide = -1;
+    }
+    /* objects resting on this one lose their support's old place */
+    sim_wake_on(&sh->w, world_find(&sh->w, b->name));
     if (strcmp(n, "linear_vel") == 0) b->v = v;
     else if (strcmp(n, "angular_vel") == 0) body_set_angular_vel(b, v);
     else if (strcmp(n, "elasticity") == 0) b->elasticity = x;
-    else if (strcmp(n, "mass") == 0) body_set_mass(b, x);
+    else if (strcmp(n, "mass") == 0) {
+        body_set_mass(b, x);
+        sh->w.pairs_dirty = true; /* static objects have no pairs among themselves */
+    }
     else if (strcmp(n, "volume") == 0) b->volume = x;
     else if (strcmp(n, "translate") == 0) b->x = v;
     else if (strcmp(n, "rotate") == 0) body_set_rotation(b, v, st->num[3]);
@@ -183,6 +190,7 @@ static cmd_status cmd_property(shell *sh, const stmt *st)
 static cmd_status cmd_setting(shell *sh, const stmt *st)
 {
     const command *c = st->cmd;
+    if (c->off == S(force)) sim_wake_all(&sh->w); /* rest depends on the force */
     char *field = (char *)&sh->w.set + c->off;
     switch (c->arg) {
     case VAL_NUMBER: *(double *)field = st->num[0]; break;
@@ -301,6 +309,7 @@ static cmd_status cmd_gravity(shell *sh, const stmt *st)
 {
     (void)st;
     sh->w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
+    sim_wake_all(&sh->w);
     return CMD_OK;
 }
 
@@ -559,7 +568,7 @@ static cmd_status cmd_run(shell *sh, const stmt *st)
 
 static cmd_status cmd_start(shell *sh, const stmt *st)
 {
-    (void)st;
+    if (shell_check_start(sh, st) != CMD_OK) return CMD_ERROR;
     sh->w.running = true;
     if (!sh->interactive)
         sh_info(sh, "time started; it runs in real time at the prompt (use run N in scripts)");

@@ -135,9 +135,38 @@ cmd_status shell_run_file(shell *sh, const char *path)
     return run_parsed(sh, p, err);
 }
 
+typedef struct {
+    shell *sh;
+    const stmt *st;
+} pen_ctx;
+
+static void report_penetration(void *ctx, const body *a, const body *b, double depth)
+{
+    pen_ctx *c = ctx;
+    char d[32];
+    sh_error(c->sh, c->st, "'%s' and '%s' interpenetrate by %s m", a->name, b->name,
+             fmt_num(d, depth));
+}
+
+cmd_status shell_check_start(shell *sh, const stmt *st)
+{
+    pen_ctx ctx = {sh, st};
+    long n = sim_penetrations(&sh->w, report_penetration, &ctx);
+    if (n < 0) {
+        sh_error(sh, st, "out of memory");
+        return CMD_ERROR;
+    }
+    if (n > 0) {
+        sh_error(sh, st, "time cannot run while objects interpenetrate: move them apart first");
+        return CMD_ERROR;
+    }
+    return CMD_OK;
+}
+
 cmd_status shell_advance(shell *sh, const stmt *st, long n)
 {
     char err[1024];
+    if (n > 0 && shell_check_start(sh, st) != CMD_OK) return CMD_ERROR;
     double t0 = now();
     cmd_status r = CMD_OK;
     for (long k = 0; k < n; k++) {

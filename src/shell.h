@@ -53,6 +53,10 @@ cmd_status shell_run_file(shell *sh, const char *path);
 /* Runs a parsed program, stopping at the first error (or quit). */
 cmd_status shell_run_program(shell *sh, const program *p);
 
+/* Refuses to let time run while objects interpenetrate (thesis 3.4.2, step 1):
+ * names every such pair with its depth. */
+cmd_status shell_check_start(shell *sh, const stmt *st);
+
 /* Advances n frames (honouring Ctrl-C); records frames when record is on. */
 cmd_status shell_advance(shell *sh, const stmt *st, long n);
 

@@ -1,11 +1,15 @@
-/* sim.h: advancing simulated time (thesis 3.2.3 and 3.4.2).
+/* sim.h: advancing simulated time with collisions (thesis 3.2.3, 3.3.3, 3.4.2).
  *
  * A frame of time_step is cut into world_subframes() equal internal steps.  Within
  * an internal step every dynamic body flies freely under the global acceleration:
  * linear motion exactly (x += v h + a h^2/2, v += a h), rotation by a symmetric
  * splitting about the principal axes that keeps the angular momentum L exactly and
  * the energy to O(h^2) (Dullweber, Leimkuhler and McLachlan 1997), then the speed
- * limits max_linear and max_angular.
+ * limits max_linear and max_angular.  At the end of the step the pairs are checked;
+ * a pair found touching or penetrating is traced back in time by bisection to its
+ * first contact, the earliest such collision is answered (contact.h) with every
+ * object at that instant, and the rest of the step goes on from there.  Objects
+ * whose motion dies down on a support come to rest (thesis 3.3.3).
  */
 #ifndef VROC_SIM_H
 #define VROC_SIM_H
@@ -17,6 +21,21 @@
 /* Most internal steps one frame may take; more is an error asking for fewer. */
 #define SIM_MAX_SUBFRAMES 1000000L
 
+/* Time of impact: bisection stops when the bracket is this short (s). */
+#define SIM_TOI_TIME 1e-10
+/* After a collision the pair is set apart to at least this distance (m). */
+#define SIM_SEPARATION 1e-7
+/* Below this speed (m/s: |v| + |w| times the outer radius) an object on a support
+ * underneath, against the global force, comes to rest (the thesis's contact state):
+ * at once when it collides with the support, or at the end of a frame when it
+ * slides on it.  Above it, an object that no longer bounces off such a support
+ * slides on it: the part of the force that presses it onto the support is taken
+ * away while it stays there. */
+#define SIM_REST_SPEED 0.05
+/* Collisions one internal step may answer before the step gives up and lets the
+ * objects through (a guard against endless micro-collisions; counted in stats). */
+#define SIM_MAX_COLLISIONS_PER_STEP 10000
+
 /* Advances the world by one frame.  Returns 0, or -1 with a message in err when the
  * settings ask for more than SIM_MAX_SUBFRAMES internal steps (nothing moves then).
  * With time_step 0 nothing moves and the frame still counts. */
@@ -25,5 +44,18 @@ int sim_frame(world *w, char *err, size_t errlen);
 /* Free flight of one dynamic body over h seconds under acceleration a, then the
  * speed limits. */
 void sim_flight(body *b, double h, vec3 a, double max_linear, double max_angular);
+
+/* Rebuilds the pair list when objects were added, deleted or changed mass. */
+int sim_update_pairs(world *w);
+
+/* Calls report for every pair that interpenetrates now (deeper than the contact
+ * tolerance), with the depth estimate; returns how many.  -1 when out of memory. */
+typedef void (*sim_report)(void *ctx, const body *a, const body *b, double depth);
+long sim_penetrations(world *w, sim_report report, void *ctx);
+
+/* Wakes every resting object (after a change of the global force), and those
+ * resting on object i (after a command moved it; i = -1 for none). */
+void sim_wake_all(world *w);
+void sim_wake_on(world *w, int i);
 
 #endif

@@ -58,6 +58,12 @@ void world_free(world *w)
     free(w->bodies);
     if (w->trace) fclose(w->trace);
     if (w->events) fclose(w->events);
+    free(w->pairs);
+    free(w->snap);
+    w->pairs = NULL;
+    w->snap = NULL;
+    w->npairs = w->cappairs = 0;
+    w->capsnap = 0;
     w->bodies = NULL;
     w->n = w->cap = 0;
     w->trace = w->events = NULL;
@@ -84,6 +90,7 @@ int world_add(world *w, body *b)
         w->cap = cap;
     }
     w->bodies[w->n] = b;
+    w->pairs_dirty = true;
     return w->n++;
 }
 
@@ -93,10 +100,12 @@ void world_delete(world *w, int i)
     free(w->bodies[i]);
     memmove(&w->bodies[i], &w->bodies[i + 1], (size_t)(w->n - i - 1) * sizeof *w->bodies);
     w->n--;
+    w->pairs_dirty = true;
     for (int k = 0; k < w->n; k++) {
         body *b = w->bodies[k];
         if (b->support == i) b->support = -1;
         else if (b->support > i) b->support--;
+        if (b->slide >= i) b->slide = -1; /* the pairs are rebuilt anyway */
     }
 }
 

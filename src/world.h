@@ -12,6 +12,7 @@
 #include <stdio.h>
 
 #include "body.h"
+#include "closest.h"
 #include "vmath.h"
 
 #define PATH_MAX_VROC 1024
@@ -66,13 +67,26 @@ typedef struct {
     double wall_time;     /* seconds spent advancing time */
     double render_time;   /* seconds spent drawing and writing frames */
     long frames_written;  /* image files written */
+    long restarts;        /* closest-feature walks redone from scratch */
 } stats;
+
+/* A pair of objects that may collide: dynamic-dynamic or dynamic-static (resting
+ * objects count as dynamic), never static-static (thesis 3.3.2). */
+typedef struct {
+    int a, b;             /* body indices, a < b */
+    closest_cache cache;  /* closest features of the last query */
+    double next;          /* earliest time the pair could collide (the schedule) */
+    int heap;             /* its place in the schedule's heap, or -1 */
+} pair;
 
 typedef struct world {
     body **bodies;        /* n bodies, creation order */
     int n, cap;
     settings set;
     double time;          /* simulated time, s */
+    double time_base;     /* time = time_base + base_frames * base_step, so that */
+    double base_step;     /* frames of one time_step add up without drift */
+    long base_frames;
     long frame;           /* frame number */
     bool running;         /* `start` given and not stopped */
     stats st;
@@ -80,6 +94,11 @@ typedef struct world {
     char trace_path[PATH_MAX_VROC];
     FILE *events;         /* `events = FILE`, or NULL */
     char events_path[PATH_MAX_VROC];
+    pair *pairs;          /* the pairs, rebuilt by the simulation when pairs_dirty */
+    long npairs, cappairs;
+    bool pairs_dirty;     /* objects were added, deleted or changed mass */
+    body *snap;           /* scratch: states saved during an internal step */
+    int capsnap;
 } world;
 
 settings settings_defaults(void);

@@ -72,7 +72,7 @@ cat > "$TMP/world.vroc" <<'EOS'
 gravity
 sphere ball; radius = 0.3; translate = (0.1, 0.2, 3); linear_vel = (1, -2, 0.5); angular_vel = (0.1, 0.2, 0.3)
 cube box; size = (0.5, 0.25, 0.125); rotate = (1, 2, 3) 0.7; angular_vel = (1, 0.5, 2); mass = 2.5
-superquadric pillow; exp1 = 0.4; exp2 = 1.7; a1 = 0.6; a2 = 0.4; a3 = 0.2; ures = 14; vres = 9; color = (250, 200, 10)
+superquadric pillow; exp1 = 0.4; exp2 = 1.7; a1 = 0.6; a2 = 0.4; a3 = 0.2; ures = 14; vres = 9; color = (250, 200, 10); translate = (3, 0, 0)
 cube floor; mass = -1; size = (5, 5, 0.1); translate = (0, 0, -5)
 run 13
 EOS

@@ -94,7 +94,8 @@ static void build_world(void)
                          "sphere ball; radius = 0.25; translate = (1, 2, 3); linear_vel = (1, 0, 0)\n"
                          "cube box; size = (1, 0.5, 0.25); rotate = (1, 1, 0) 0.5; mass = 3\n"
                          "superquadric pillow; exp1 = 0.3; exp2 = 1.5; a1 = 0.5; ures = 12\n"
-                         "cube table; mass = -1; size = (2, 1, 0.1)\n"
+                         "translate = (4, 0, 0)\n"
+                         "cube table; mass = -1; size = (2, 1, 0.1); translate = (0, 0, -3)\n"
                          "sphere ball\n"),
                      CMD_OK);
 }
@@ -218,7 +219,7 @@ static void save_restart_read_round_trips_exactly(void **state)
     (void)state;
     build_world();
     assert_int_equal(run("box.angular_vel = (0.3, -1.1, 2.2); pillow.angular_vel = (1, 1, 1)\n"
-                         "pillow.translate = (0.1, 0.2, 0.3); ball.color = (1, 2, 3)\n"
+                         "pillow.translate = (4.1, 0.2, 0.3); ball.color = (1, 2, 3)\n"
                          "force = (0.1, 0.2, -1) 3.3; stereo = sbs; record = off; ipd = 0.07\n"
                          "image_size = (320, 200); background = (9, 8, 7); real = wire\n"
                          "hand_rotate = (0, 1, 0) 0.25; select on; seed = 77\n"
@@ -282,13 +283,35 @@ static void show_lists_every_setting(void **state)
     free(text);
 }
 
+static void time_cannot_run_through_objects(void **state)
+{
+    (void)state;
+    assert_int_equal(run("restart; sphere a; sphere b; translate = (1.5, 0, 0); cube c\n"
+                         "translate = (0, 3, 0); mass = -1\n"),
+                     CMD_OK);
+    char *before = snapshot();
+    assert_int_equal(run("run 1\n"), CMD_ERROR);
+    assert_non_null(strstr(g_errbuf, "error: 'a' and 'b' interpenetrate by 0.5 m"));
+    assert_non_null(strstr(g_errbuf, "time cannot run while objects interpenetrate"));
+    assert_int_equal(run("step\n"), CMD_ERROR);
+    assert_int_equal(run("start\n"), CMD_ERROR);
+    assert_false(g_sh.w.running);
+    char *after = snapshot();
+    assert_string_equal(before, after);
+    free(before);
+    free(after);
+    assert_int_equal(run("b.translate = (2.5, 0, 0); run 1\n"), CMD_OK);
+}
+
 static void time_and_stats(void **state)
 {
     (void)state;
     assert_int_equal(run("restart; time_step = 1e6; run 1\n"), CMD_ERROR);
     assert_non_null(strstr(g_errbuf, "internal steps per frame (limit 1000000)"));
     assert_int_equal(g_sh.w.frame, 0);
-    assert_int_equal(run("restart; sphere a; cube t; mass = -1; run 3; time; stats\n"), CMD_OK);
+    assert_int_equal(run("restart; sphere a; cube t; mass = -1; translate = (0, 0, -5)\n"
+                         "run 3; time; stats\n"),
+                     CMD_OK);
     assert_non_null(strstr(g_out, "time = 0.3"));
     assert_non_null(strstr(g_out, "objects = 2\npairs = 1\nsubframes = 7\nframes = 3\n"));
     assert_int_equal(run("quit; sphere never\n"), CMD_QUIT);
@@ -342,6 +365,7 @@ int main(void)
         cmocka_unit_test(save_restart_read_round_trips_exactly),
         cmocka_unit_test(restart_returns_every_setting),
         cmocka_unit_test(show_lists_every_setting),
+        cmocka_unit_test(time_cannot_run_through_objects),
         cmocka_unit_test(time_and_stats),
         cmocka_unit_test(trace_writes_a_row_per_object_per_frame),
     };

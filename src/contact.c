@@ -1,0 +1,245 @@
+/* contact.c: contact region and collision impulse (thesis 3.2.2; design.md,
+ * "Dynamics").
+ *
+ * The impulse j along the normal n solves the thesis's momentum equations with
+ * restitution e for the normal component of the relative velocity at the contact
+ * point:  j = (1 + e) s / (1/m_a + 1/m_b + n.((I_a^-1 (r_a x n)) x r_a)
+ *                                     + n.((I_b^-1 (r_b x n)) x r_b)),
+ * s the closing speed.  The contact region is found from the objects' supporting
+ * features along n, projected onto the contact plane: a vertex, a segment or a
+ * convex polygon each; their overlap's centre is the contact point.
+ */
+#include "contact.h"
+
+#include <stdlib.h>
+
+typedef struct {
+    double x, y;
+} p2;
+
+/* Supporting points of b in direction d (world): those within tol of the furthest,
+ * in plane coordinates (u, v).  Returns the count (at most max). */
+static int support_set(const body *b, vec3 d, vec3 u, vec3 v, double tol, p2 *out, int max)
+{
+    if (b->sp.kind == SHAPE_SPHERE) {
+        vec3 p = v3_mad(body_com(b), v3_norm(d), b->sp.radius);
+        out[0] = (p2){v3_dot(p, u), v3_dot(p, v)};
+        return 1;
+    }
+    const poly *h = b->shape.hull;
+    vec3 dl = q_unrotate(b->q, d);
+    double best = -HUGE_VAL;
+    for (int i = 0; i < h->nv; i++) best = fmax(best, v3_dot(h->v[i], dl));
+    int n = 0;
+    for (int i = 0; i < h->nv && n < max; i++) {
+        if (v3_dot(h->v[i], dl) < best - tol) continue;
+        vec3 p = v3_add(b->x, q_rotate(b->q, h->v[i]));
+        out[n++] = (p2){v3_dot(p, u), v3_dot(p, v)};
+    }
+    return n;
+}
+
+static double cross2(p2 o, p2 a, p2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
+
+static int cmp_p2(const void *a, const void *b)
+{
+    const p2 *p = a, *q = b;
+    if (p->x != q->x) return p->x < q->x ? -1 : 1;
+    return p->y < q->y ? -1 : p->y > q->y;
+}
+
+/* Convex hull in place, counter-clockwise (Andrew's monotone chain); returns the
+ * count: 1 a point, 2 a segment, >= 3 a polygon.  pts needs room for 2n points. */
+static int hull2(p2 *pts, int n, double eps)
+{
+    if (n <= 1) return n;
+    qsort(pts, (size_t)n, sizeof *pts, cmp_p2);
+    p2 *h = pts + n;
+    int k = 0;
+    for (int i = 0; i < n; i++) {
+        while (k >= 2 && cross2(h[k - 2], h[k - 1], pts[i]) <= eps) k--;
+        h[k++] = pts[i];
+    }
+    for (int i = n - 2, t = k + 1; i >= 0; i--) {
+        while (k >= t && cross2(h[k - 2], h[k - 1], pts[i]) <= eps) k--;
+        h[k++] = pts[i];
+    }
+    k--; /* the last point repeats the first */
+    if (k < 1) k = 1;
+    for (int i = 0; i < k; i++) pts[i] = h[i];
+    return k;
+}
+
+/* Clips polygon (n points, ccw) by the half-plane left of a->b; returns the count. */
+static int clip_poly(const p2 *in, int n, p2 a, p2 b, p2 *out)
+{
+    int m = 0;
+    for (int i = 0; i < n; i++) {
+        p2 p = in[i], q = in[(i + 1) % n];
+        double dp = cross2(a, b, p), dq = cross2(a, b, q);
+        if (dp >= 0) out[m++] = p;
+        if ((dp >= 0) != (dq >= 0)) {
+            double t = dp / (dp - dq);
+            out[m++] = (p2){p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)};
+        }
+    }
+    return m;
+}
+
+static bool polygon_centroid(const p2 *p, int n, p2 *c)
+{
+    double a = 0, cx = 0, cy = 0;
+    for (int i = 0; i < n; i++) {
+        p2 s = p[i], t = p[(i + 1) % n];
+        double w = s.x * t.y - t.x * s.y;
+        a += w;
+        cx += (s.x + t.x) * w;
+        cy += (s.y + t.y) * w;
+    }
+    if (fabs(a) < 1e-18) return false;
+    *c = (p2){cx / (3 * a), cy / (3 * a)};
+    return true;
+}
+
+/* Part of segment s0-s1 inside convex polygon poly (ccw); false when none. */
+static bool clip_segment(p2 s0, p2 s1, const p2 *poly, int n, p2 *mid)
+{
+    double t0 = 0, t1 = 1;
+    for (int i = 0; i < n; i++) {
+        p2 a = poly[i], b = poly[(i + 1) % n];
+        double d0 = cross2(a, b, s0), d1 = cross2(a, b, s1);
+        if (d0 < 0 && d1 < 0) return false;
+        if (d0 < 0) t0 = fmax(t0, d0 / (d0 - d1));
+        else if (d1 < 0) t1 = fmin(t1, d0 / (d0 - d1));
+    }
+    if (t0 > t1) return false;
+    double t = 0.5 * (t0 + t1);
+    *mid = (p2){s0.x + t * (s1.x - s0.x), s0.y + t * (s1.y - s0.y)};
+    return true;
+}
+
+/* Overlap of two nearly parallel segments: its middle; false when not parallel or
+ * apart. */
+static bool segment_overlap(const p2 *a, const p2 *b, double eps, p2 *mid)
+{
+    p2 d = {a[1].x - a[0].x, a[1].y - a[0].y};
+    double l = sqrt(d.x * d.x + d.y * d.y);
+    if (l == 0) return false;
+    d.x /= l;
+    d.y /= l;
+    p2 e = {b[1].x - b[0].x, b[1].y - b[0].y};
+    double le = sqrt(e.x * e.x + e.y * e.y);
+    if (le == 0 || fabs(d.x * e.y - d.y * e.x) > 1e-6 * le) return false;
+    if (fabs(d.x * (b[0].y - a[0].y) - d.y * (b[0].x - a[0].x)) > eps) return false;
+    double s0 = 0, s1 = l;
+    double t0 = d.x * (b[0].x - a[0].x) + d.y * (b[0].y - a[0].y);
+    double t1 = d.x * (b[1].x - a[0].x) + d.y * (b[1].y - a[0].y);
+    double lo = fmax(s0, fmin(t0, t1)), hi = fmin(s1, fmax(t0, t1));
+    if (lo > hi) return false;
+    double t = 0.5 * (lo + hi);
+    *mid = (p2){a[0].x + d.x * t, a[0].y + d.y * t};
+    return true;
+}
+
+#define CONTACT_MAX_SUPPORT 256
+
+vec3 contact_point(const body *a, const body *b, const closest_result *r, double tol)
+{
+    vec3 n = r->normal;
+    vec3 mid = v3_scale(v3_add(r->pa, r->pb), 0.5);
+    vec3 u = v3_norm(fabs(n.x) < 0.6 ? v3_cross(n, v3(1, 0, 0)) : v3_cross(n, v3(0, 1, 0)));
+    vec3 v = v3_cross(n, u);
+    p2 *sa = malloc(4 * CONTACT_MAX_SUPPORT * sizeof *sa);
+    if (!sa) return mid;
+    p2 *sb = sa + 2 * CONTACT_MAX_SUPPORT;
+    /* a's features facing b lie along -n; b's facing a along +n */
+    int na = support_set(a, v3_neg(n), u, v, tol, sa, CONTACT_MAX_SUPPORT);
+    int nb = support_set(b, n, u, v, tol, sb, CONTACT_MAX_SUPPORT);
+    double eps = 1e-12 * (a->shape.r_out + b->shape.r_out) * (a->shape.r_out + b->shape.r_out);
+    na = hull2(sa, na, eps);
+    nb = hull2(sb, nb, eps);
+    p2 c;
+    bool found = false;
+    if (na >= 3 && nb >= 3) {
+        p2 buf[2][4 * CONTACT_MAX_SUPPORT];
+        int m = na;
+        for (int i = 0; i < m; i++) buf[0][i] = sa[i];
+        int cur = 0;
+        for (int i = 0; i < nb && m > 0; i++) {
+            m = clip_poly(buf[cur], m, sb[i], sb[(i + 1) % nb], buf[1 - cur]);
+            cur = 1 - cur;
+        }
+        found = m >= 3 && polygon_centroid(buf[cur], m, &c);
+    } else if (na == 2 && nb >= 3) {
+        found = clip_segment(sa[0], sa[1], sb, nb, &c);
+    } else if (nb == 2 && na >= 3) {
+        found = clip_segment(sb[0], sb[1], sa, na, &c);
+    } else if (na == 2 && nb == 2) {
+        found = segment_overlap(sa, sb, sqrt(eps) + tol, &c);
+    }
+    free(sa);
+    if (!found) return mid;
+    return v3_add(v3_add(v3_scale(u, c.x), v3_scale(v, c.y)), v3_scale(n, v3_dot(mid, n)));
+}
+
+bool contact_stable(const body *m, vec3 n, double tol)
+{
+    if (m->sp.kind == SHAPE_SPHERE) return true;
+    vec3 u = v3_norm(fabs(n.x) < 0.6 ? v3_cross(n, v3(1, 0, 0)) : v3_cross(n, v3(0, 1, 0)));
+    vec3 v = v3_cross(n, u);
+    p2 *s = malloc(2 * CONTACT_MAX_SUPPORT * sizeof *s);
+    if (!s) return false;
+    int k = support_set(m, v3_neg(n), u, v, tol, s, CONTACT_MAX_SUPPORT);
+    double r = m->shape.r_out;
+    k = hull2(s, k, 1e-12 * r * r);
+    vec3 c = body_com(m);
+    p2 cp = {v3_dot(c, u), v3_dot(c, v)};
+    bool inside = k >= 3;
+    for (int i = 0; i < k && inside; i++)
+        if (cross2(s[i], s[(i + 1) % k], cp) < 1e-9 * r * r) inside = false;
+    free(s);
+    return inside;
+}
+
+vec3 contact_point_velocity(const body *b, vec3 p)
+{
+    if (body_is_static(b) || b->state == STATE_RESTING) return v3(0, 0, 0);
+    return v3_add(b->v, v3_cross(b->w, v3_sub(p, body_com(b))));
+}
+
+double contact_closing_speed(const body *a, const body *b, vec3 p, vec3 n)
+{
+    vec3 rel = v3_sub(contact_point_velocity(a, p), contact_point_velocity(b, p));
+    return -v3_dot(rel, n);
+}
+
+/* n . ((I^-1 (r x n)) x r): the rotational part of the effective inverse mass. */
+static double angular_term(const body *b, vec3 r, vec3 n)
+{
+    if (body_is_static(b)) return 0;
+    vec3 t = m3_mulv(body_inertia_world_inv(b), v3_cross(r, n));
+    return v3_dot(n, v3_cross(t, r));
+}
+
+contact contact_respond(body *a, body *b, vec3 p, vec3 n, double e)
+{
+    contact c = {p, n, contact_closing_speed(a, b, p, n), 0};
+    if (c.speed <= 0) return c;
+    vec3 ra = v3_sub(p, body_com(a)), rb = v3_sub(p, body_com(b));
+    double k = a->inv_mass + b->inv_mass + angular_term(a, ra, n) + angular_term(b, rb, n);
+    if (!(k > 0)) return c;
+    double j = (1 + e) * c.speed / k;
+    vec3 J = v3_scale(n, j);
+    if (!body_is_static(a)) {
+        a->v = v3_mad(a->v, J, a->inv_mass);
+        a->L = v3_add(a->L, v3_cross(ra, J));
+        body_update_w(a);
+    }
+    if (!body_is_static(b)) {
+        b->v = v3_mad(b->v, J, -b->inv_mass);
+        b->L = v3_sub(b->L, v3_cross(rb, J));
+        body_update_w(b);
+    }
+    c.impulse = j;
+    return c;
+}

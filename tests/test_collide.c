@@ -1,0 +1,410 @@
+/* test_collide.c: collisions in time against textbook answers (issue 5).
+ *
+ * Head-on collisions of unequal masses, bounce heights e^2 h, conservation of
+ * momentum, angular momentum and energy in a closed system, an off-centre hit,
+ * nothing through a plate, a box landing flat, Newton's cradle, rest. */
+#include "check.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "sim.h"
+#include "world.h"
+
+static body *add(world *w, const char *name, shape_kind kind)
+{
+    body *b = malloc(sizeof *b);
+    assert_non_null(b);
+    body_init(b, name, kind);
+    char err[256];
+    assert_int_equal(body_build(b, err, sizeof err), 0);
+    assert_true(world_add(w, b) >= 0);
+    return b;
+}
+
+static void rebuild(body *b)
+{
+    char err[256];
+    assert_int_equal(body_build(b, err, sizeof err), 0);
+}
+
+static void frames(world *w, int n)
+{
+    char err[256];
+    for (int i = 0; i < n; i++) assert_int_equal(sim_frame(w, err, sizeof err), 0);
+}
+
+static void head_on(double e, double want1, double want2)
+{
+    world w;
+    world_init(&w);
+    body *a = add(&w, "a", SHAPE_SPHERE), *b = add(&w, "b", SHAPE_SPHERE);
+    a->sp.radius = b->sp.radius = 0.5;
+    rebuild(a);
+    rebuild(b);
+    body_set_mass(a, 1);
+    body_set_mass(b, 3);
+    a->elasticity = b->elasticity = e;
+    a->x = v3(-2, 0, 0);
+    b->x = v3(0.5, 0, 0);
+    a->v = v3(2, 0, 0);
+    frames(&w, 20);
+    assert_int_equal(w.st.collisions, 1);
+    assert_near(a->v.x, want1, 1e-6);
+    assert_near(b->v.x, want2, 1e-6);
+    assert_near(a->v.y, 0, 1e-12);
+    world_free(&w);
+}
+
+static void head_on_unequal_masses(void **state)
+{
+    (void)state;
+    head_on(1, -1, 1);
+    head_on(0, 0.5, 0.5);
+    head_on(0.5, -0.25, 0.75); /* v1 = (m1 - e m2) u / (m1 + m2), v2 = (1 + e) m1 u / (m1 + m2) */
+}
+
+/* Height of the apex of the flight the ball is in now, above the floor's top. */
+static double apex(const body *b, double g, double floor_top)
+{
+    return b->x.z - b->sp.radius - floor_top + b->v.z * b->v.z / (2 * g);
+}
+
+static void bounce_height(double e, double h, double time_step, double internal_step)
+{
+    world w;
+    world_init(&w);
+    w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
+    w.set.time_step = time_step;
+    w.set.internal_step = internal_step;
+    w.set.max_linear = 50;
+    body *floor_ = add(&w, "floor", SHAPE_CUBE);
+    floor_->sp.size = v3(5, 5, 0.5);
+    rebuild(floor_);
+    body_set_mass(floor_, -1);
+    body *ball = add(&w, "ball", SHAPE_SPHERE);
+    ball->sp.radius = 0.2;
+    rebuild(ball);
+    ball->elasticity = e;
+    ball->x = v3(0.3, -0.2, 0.5 + 0.2 + h);
+    char err[256];
+    while (w.st.collisions == 0) assert_int_equal(sim_frame(&w, err, sizeof err), 0);
+    double a = apex(ball, 9.8, 0.5);
+    assert_rel(a, e * e * h, 1e-4);
+    world_free(&w);
+}
+
+static void bounce_apex_is_e_squared_h(void **state)
+{
+    (void)state;
+    const double steps[][2] = {{0.1, 0}, {0.02, 0}, {0.1, 0.001}, {0.05, 0.013}, {0.5, 0}};
+    for (size_t k = 0; k < sizeof steps / sizeof steps[0]; k++) {
+        bounce_height(0.8, 1.0, steps[k][0], steps[k][1]);
+        bounce_height(0.5, 2.5, steps[k][0], steps[k][1]);
+        bounce_height(1.0, 0.7, steps[k][0], steps[k][1]);
+    }
+}
+
+static vec3 momentum(const world *w)
+{
+    vec3 p = v3(0, 0, 0);
+    for (int i = 0; i < w->n; i++) p = v3_mad(p, w->bodies[i]->v, w->bodies[i]->mass);
+    return p;
+}
+
+/* Angular momentum about the origin: orbital plus spin. */
+static vec3 angular_momentum(const world *w)
+{
+    vec3 l = v3(0, 0, 0);
+    for (int i = 0; i < w->n; i++) {
+        const body *b = w->bodies[i];
+        l = v3_add(l, v3_add(v3_cross(body_com(b), v3_scale(b->v, b->mass)), b->L));
+    }
+    return l;
+}
+
+static double energy(const world *w)
+{
+    double e = 0;
+    for (int i = 0; i < w->n; i++) e += body_energy(w->bodies[i]);
+    return e;
+}
+
+static double urand(unsigned long long *s, double lo, double hi)
+{
+    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
+    return lo + (hi - lo) * (double)(*s >> 11) / 9007199254740992.0;
+}
+
+static void closed_system_conserves(void **state)
+{
+    (void)state;
+    world w;
+    world_init(&w);
+    w.set.max_linear = 100;
+    w.set.max_angular = 100;
+    unsigned long long seed = 7;
+    /* 20 objects on a 3x3x3 grid (less 7), moving inwards: many collisions */
+    int k = 0;
+    for (int i = 0; i < 27 && k < 20; i++) {
+        if (i % 4 == 3) continue;
+        char name[16];
+        snprintf(name, sizeof name, "o%d", k);
+        body *b = add(&w, name, k % 2 ? SHAPE_SUPERQUADRIC : SHAPE_SPHERE);
+        b->sp.radius = urand(&seed, 0.2, 0.35);
+        b->sp.exp1 = urand(&seed, 0.4, 1.6);
+        b->sp.exp2 = urand(&seed, 0.4, 1.6);
+        b->sp.a1 = urand(&seed, 0.2, 0.35);
+        b->sp.a2 = urand(&seed, 0.2, 0.35);
+        b->sp.a3 = urand(&seed, 0.2, 0.35);
+        b->sp.ures = b->sp.vres = 12;
+        rebuild(b);
+        body_set_mass(b, urand(&seed, 0.5, 3));
+        vec3 c = v3(i % 3 - 1, (i / 3) % 3 - 1, i / 9 - 1);
+        b->x = v3_scale(c, 1.0);
+        body_set_rotation(b, v3(urand(&seed, -1, 1), urand(&seed, -1, 1), 1), urand(&seed, 0, 3));
+        b->v = v3_add(v3_scale(c, -0.5), v3(urand(&seed, -.3, .3), urand(&seed, -.3, .3), urand(&seed, -.3, .3)));
+        body_set_angular_vel(b, v3(urand(&seed, -1, 1), urand(&seed, -1, 1), urand(&seed, -1, 1)));
+        k++;
+    }
+    vec3 p0 = momentum(&w), l0 = angular_momentum(&w);
+    double e0 = energy(&w);
+    assert_int_equal(sim_penetrations(&w, NULL, NULL), 0);
+    frames(&w, 100); /* 10 s */
+    print_message("closed system: %ld collisions in 10 s\n", w.st.collisions);
+    assert_true(w.st.collisions >= 20);
+    vec3 p1 = momentum(&w), l1 = angular_momentum(&w);
+    double scale_p = 0, scale_l = 0;
+    for (int i = 0; i < w.n; i++) {
+        scale_p += w.bodies[i]->mass * v3_len(w.bodies[i]->v);
+        scale_l += v3_len(w.bodies[i]->L) + w.bodies[i]->mass * v3_len(body_com(w.bodies[i])) * v3_len(w.bodies[i]->v);
+    }
+    assert_true(v3_len(v3_sub(p1, p0)) <= 1e-9 * scale_p);
+    assert_true(v3_len(v3_sub(l1, l0)) <= 1e-9 * scale_l);
+    assert_rel(energy(&w), e0, 1e-6);
+    world_free(&w);
+}
+
+static void off_centre_hit_conserves_momentum_about_a_point(void **state)
+{
+    (void)state;
+    world w;
+    world_init(&w);
+    body *box = add(&w, "box", SHAPE_CUBE);
+    box->sp.size = v3(0.5, 0.2, 0.3);
+    rebuild(box);
+    body_set_mass(box, 4);
+    box->elasticity = 0.6;
+    body *ball = add(&w, "ball", SHAPE_SPHERE);
+    ball->sp.radius = 0.1;
+    rebuild(ball);
+    body_set_mass(ball, 1);
+    ball->x = v3(0.35, -1, 0.1); /* off centre in x and z */
+    ball->v = v3(0, 3, 0);
+    vec3 p0 = momentum(&w), l0 = angular_momentum(&w);
+    frames(&w, 10);
+    assert_int_equal(w.st.collisions, 1);
+    assert_vec_near(momentum(&w), p0, 1e-12);
+    assert_vec_near(angular_momentum(&w), l0, 1e-12);
+    assert_true(v3_len(box->w) > 0.5); /* it spins */
+    assert_true(energy(&w) < 0.5 * 9); /* e < 1 loses energy */
+    world_free(&w);
+}
+
+static void nothing_passes_through_a_plate(void **state)
+{
+    (void)state;
+    unsigned long long seed = 99;
+    int through = 0;
+    for (int shot = 0; shot < 1000; shot++) {
+        world w;
+        world_init(&w);
+        w.set.collision_dist = urand(&seed, 0.05, 0.3);
+        w.set.max_linear = urand(&seed, 2, 30);
+        if (shot % 3 == 0) w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
+        body *plate = add(&w, "plate", SHAPE_CUBE);
+        double half = 0.5 * w.set.collision_dist * urand(&seed, 1.05, 2);
+        plate->sp.size = v3(20, 20, half);
+        rebuild(plate);
+        body_set_mass(plate, -1);
+        int kind = shot % 3;
+        body *b = add(&w, "shot", (shape_kind)kind);
+        b->sp.radius = urand(&seed, 0.05, 0.3);
+        b->sp.size = v3(urand(&seed, 0.05, 0.3), urand(&seed, 0.05, 0.3), urand(&seed, 0.05, 0.3));
+        b->sp.a1 = urand(&seed, 0.05, 0.3);
+        b->sp.exp1 = urand(&seed, 0.3, 2);
+        b->sp.exp2 = urand(&seed, 0.3, 2);
+        rebuild(b);
+        b->elasticity = urand(&seed, 0, 1);
+        b->x = v3(urand(&seed, -1, 1), urand(&seed, -1, 1), half + b->shape.r_out + urand(&seed, 0.01, 2));
+        body_set_rotation(b, v3(urand(&seed, -1, 1), urand(&seed, -1, 1), urand(&seed, -1, 1)), urand(&seed, 0, 3));
+        vec3 dir = v3_norm(v3(urand(&seed, -1, 1), urand(&seed, -1, 1), -urand(&seed, 0.2, 1)));
+        b->v = v3_scale(dir, w.set.max_linear * urand(&seed, 0.5, 1));
+        body_set_angular_vel(b, v3(urand(&seed, -3, 3), urand(&seed, -3, 3), urand(&seed, -3, 3)));
+        for (int f = 0; f < 15; f++) {
+            frames(&w, 1);
+            vec3 c = body_com(b);
+            /* below the plate while over it (it may slide off its edge and fall) */
+            if (c.z < 0 && fabs(c.x) < 20 - b->shape.r_out && fabs(c.y) < 20 - b->shape.r_out) {
+                through++;
+                print_message("shot %d through: kind %d dist %g vmax %g\n", shot, kind,
+                              w.set.collision_dist, w.set.max_linear);
+                break;
+            }
+        }
+        world_free(&w);
+    }
+    assert_int_equal(through, 0);
+}
+
+static void box_dropped_flat_rests_flat(void **state)
+{
+    (void)state;
+    world w;
+    world_init(&w);
+    w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
+    body *table = add(&w, "table", SHAPE_CUBE);
+    table->sp.size = v3(2, 2, 0.1);
+    rebuild(table);
+    body_set_mass(table, -1);
+    body *box = add(&w, "box", SHAPE_CUBE);
+    box->sp.size = v3(0.3, 0.2, 0.1);
+    rebuild(box);
+    box->elasticity = 0.5;
+    body_set_rotation(box, v3(0, 0, 1), 0.4); /* turned about the vertical: still flat */
+    box->x = v3(0.2, -0.3, 1.5);
+    quat q0 = box->q;
+    int f = 0;
+    while (box->state != STATE_RESTING && f < 100) {
+        frames(&w, 1);
+        f++;
+    }
+    print_message("box dropped flat: resting after %d frames, %ld collisions\n", f, w.st.collisions);
+    assert_int_equal(box->state, STATE_RESTING);
+    assert_true(f < 60);
+    assert_near(q0.w, box->q.w, 1e-6);
+    assert_near(q0.x, box->q.x, 1e-6);
+    assert_near(q0.y, box->q.y, 1e-6);
+    assert_near(q0.z, box->q.z, 1e-6);
+    assert_near(box->x.z, 0.1 + 0.1, 1e-4);
+    assert_near(box->x.x, 0.2, 1e-9);
+    world_free(&w);
+}
+
+static void box_dropped_on_its_corner_settles(void **state)
+{
+    (void)state;
+    world w;
+    world_init(&w);
+    w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
+    body *table = add(&w, "table", SHAPE_CUBE);
+    table->sp.size = v3(3, 3, 0.1);
+    rebuild(table);
+    body_set_mass(table, -1);
+    body *box = add(&w, "box", SHAPE_CUBE);
+    box->sp.size = v3(0.2, 0.2, 0.2);
+    rebuild(box);
+    box->elasticity = 0.4;
+    body_set_rotation(box, v3(1, 0.4, 0.1), 0.8); /* a corner down, off balance */
+    box->x = v3(0, 0, 1.5);
+    frames(&w, 150);
+    assert_int_equal(box->state, STATE_RESTING);
+    /* it rests on a face: its lowest point is on the table, its centre a half side up */
+    assert_near(box->x.z, 0.1 + 0.2, 2e-3);
+    world_free(&w);
+}
+
+static void ball_comes_to_rest_in_finite_time(void **state)
+{
+    (void)state;
+    world w;
+    world_init(&w);
+    w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
+    body *table = add(&w, "table", SHAPE_CUBE);
+    table->sp.size = v3(1, 1, 0.05);
+    rebuild(table);
+    body_set_mass(table, -1);
+    body *ball = add(&w, "ball", SHAPE_SPHERE);
+    ball->sp.radius = 0.1;
+    rebuild(ball);
+    ball->elasticity = 0.8;
+    ball->x = v3(0, 0, 1.05);
+    int f = 0;
+    while (ball->state != STATE_RESTING && f < 200) {
+        frames(&w, 1);
+        f++;
+    }
+    /* bounces last 2 v0 / (g (1 - e)) = 4.04 s after a 0.45 s fall */
+    print_message("ball e=0.8: resting after %d frames, %ld collisions, %ld pair checks\n", f,
+                  w.st.collisions, w.st.pair_checks);
+    assert_int_equal(ball->state, STATE_RESTING);
+    assert_true(f <= 50);
+    assert_true(w.st.pair_checks < 100000); /* no storm of micro-collisions */
+    assert_near(ball->x.z, 0.05 + 0.1, 1e-4);
+    long checks = w.st.pair_checks;
+    frames(&w, 100); /* resting: no more work */
+    assert_int_equal(w.st.pair_checks, checks);
+    /* something hits it: it wakes */
+    body *hit = add(&w, "hit", SHAPE_SPHERE);
+    hit->sp.radius = 0.1;
+    rebuild(hit);
+    hit->x = v3(-1, 0, 0.15);
+    hit->v = v3(3, 0, 0);
+    frames(&w, 5);
+    assert_true(ball->v.x > 1);
+    world_free(&w);
+}
+
+static void newtons_cradle(void **state)
+{
+    (void)state;
+    world w;
+    world_init(&w);
+    body *ball[5];
+    for (int i = 0; i < 5; i++) {
+        char name[8];
+        snprintf(name, sizeof name, "b%d", i);
+        ball[i] = add(&w, name, SHAPE_SPHERE);
+        ball[i]->sp.radius = 0.1;
+        rebuild(ball[i]);
+        ball[i]->x = v3(i * 0.201, 0, 1);
+    }
+    ball[0]->x.x = -0.5;
+    ball[0]->v = v3(2, 0, 0);
+    frames(&w, 10);
+    for (int i = 0; i < 4; i++) assert_near(ball[i]->v.x, 0, 1e-6);
+    assert_near(ball[4]->v.x, 2, 1e-6);
+    assert_int_equal(w.st.collisions, 4);
+    world_free(&w);
+}
+
+static void penetration_is_reported(void **state)
+{
+    (void)state;
+    world w;
+    world_init(&w);
+    body *a = add(&w, "a", SHAPE_SPHERE), *b = add(&w, "b", SHAPE_CUBE);
+    (void)a;
+    b->x = v3(1.5, 0, 0);
+    assert_int_equal(sim_penetrations(&w, NULL, NULL), 1);
+    b->x = v3(2.5, 0, 0);
+    assert_int_equal(sim_penetrations(&w, NULL, NULL), 0);
+    world_free(&w);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(head_on_unequal_masses),
+        cmocka_unit_test(bounce_apex_is_e_squared_h),
+        cmocka_unit_test(closed_system_conserves),
+        cmocka_unit_test(off_centre_hit_conserves_momentum_about_a_point),
+        cmocka_unit_test(nothing_passes_through_a_plate),
+        cmocka_unit_test(box_dropped_flat_rests_flat),
+        cmocka_unit_test(box_dropped_on_its_corner_settles),
+        cmocka_unit_test(ball_comes_to_rest_in_finite_time),
+        cmocka_unit_test(newtons_cradle),
+        cmocka_unit_test(penetration_is_reported),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
