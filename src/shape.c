@@ -14,6 +14,8 @@
  */
 #include "shape.h"
 
+#include "closest.h"
+
 #include <limits.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -48,6 +50,7 @@ shape_params shape_defaults(shape_kind kind)
 void shape_free(shape *s)
 {
     if (!s) return;
+    closest_hull_free(s->feat);
     poly_free(s->hull);
     free(s->draw.pos);
     free(s->draw.nrm);
@@ -328,6 +331,11 @@ int shape_build(shape *s, const shape_params *p, char *err, size_t errlen)
     case SHAPE_SUPERQUADRIC: rc = build_superquadric(s, err, errlen); break;
     default:
         set_err(err, errlen, "unknown shape kind %d", (int)params.kind);
+        rc = -1;
+    }
+    /* the Voronoi regions of the hull's features, for closest-feature tracking */
+    if (rc == 0 && s->hull && !(s->feat = closest_hull_new(s->hull))) {
+        set_err(err, errlen, "out of memory for the closest-feature data");
         rc = -1;
     }
     if (rc < 0) shape_free(s);
