@@ -94,6 +94,8 @@ cmd_status shell_run_program(shell *sh, const program *p)
 {
     for (int i = 0; i < p->n; i++) {
         cmd_status r = p->s[i].cmd->run(sh, &p->s[i]);
+        /* whatever a statement changed, the schedule's predictions start afresh */
+        sh->w.sched_dirty = true;
         if (r != CMD_OK) return r;
     }
     return CMD_OK;

@@ -25,6 +25,7 @@
 
 #include "contact.h"
 #include "log.h"
+#include "schedule.h"
 
 /* ------------------------------------------------------------ free flight */
 
@@ -107,6 +108,7 @@ int sim_update_pairs(world *w)
     }
     w->npairs = k;
     w->pairs_dirty = false;
+    w->sched_dirty = true; /* the heap holds the old pairs */
     for (int i = 0; i < w->n; i++) w->bodies[i]->slide = -1; /* slide_pair is stale */
     return 0;
 }
@@ -143,8 +145,11 @@ long sim_penetrations(world *w, sim_report report, void *ctx)
 
 /* ------------------------------------------------------------ waking and rest */
 
-static void wake(body *b)
+/* A resting object moves again (its pairs are then made due by the caller, or by
+ * the shell after a command). */
+static void wake(world *w, int i)
 {
+    body *b = w->bodies[i];
     if (b->state == STATE_RESTING) {
         b->state = STATE_DYNAMIC;
         b->support = -1;
@@ -163,14 +168,14 @@ static vec3 accel_of(const world *w, const body *b)
 
 void sim_wake_all(world *w)
 {
-    for (int i = 0; i < w->n; i++) wake(w->bodies[i]);
+    for (int i = 0; i < w->n; i++) wake(w, i);
 }
 
 void sim_wake_on(world *w, int i)
 {
     for (int k = 0; k < w->n; k++) {
         body *b = w->bodies[k];
-        if (b->state == STATE_RESTING && b->support == i) wake(b);
+        if (b->state == STATE_RESTING && b->support == i) wake(w, k);
         if (b->slide == i) b->slide = -1;
     }
 }
@@ -194,10 +199,12 @@ static void wake_unsupported(world *w)
         changed = false;
         for (int i = 0; i < w->n; i++) {
             body *b = w->bodies[i];
-            if (b->slide >= 0 && w->bodies[b->slide]->state == STATE_DYNAMIC) b->slide = -1;
+            const body *s = b->slide >= 0 ? w->bodies[b->slide] : NULL;
+            if (s && s->state == STATE_DYNAMIC && s->slide < 0) b->slide = -1;
             if (b->state != STATE_RESTING) continue;
             if (b->support < 0 || w->bodies[b->support]->state == STATE_DYNAMIC) {
-                wake(b);
+                wake(w, i);
+                sched_object_due(w, i, w->time);
                 changed = true;
             }
         }
@@ -208,11 +215,19 @@ static void wake_unsupported(world *w)
  * the frame, slower than the rest speed, rests on it. */
 static void rest_still_objects(world *w)
 {
-    for (int i = 0; i < w->n; i++) {
-        body *b = w->bodies[i];
-        if (b->state != STATE_DYNAMIC || b->slide < 0) continue;
-        double speed = v3_len(b->v) + v3_len(b->w) * b->shape.r_out;
-        if (speed < SIM_REST_SPEED) come_to_rest(b, b->slide);
+    bool changed = true;
+    while (changed) { /* a stack comes to rest from the bottom up */
+        changed = false;
+        for (int i = 0; i < w->n; i++) {
+            body *b = w->bodies[i];
+            if (b->state != STATE_DYNAMIC || b->slide < 0) continue;
+            if (w->bodies[b->slide]->state == STATE_DYNAMIC) continue;
+            double speed = v3_len(b->v) + v3_len(b->w) * b->shape.r_out;
+            if (speed < SIM_REST_SPEED) {
+                come_to_rest(b, b->slide);
+                changed = true;
+            }
+        }
     }
 }
 
@@ -305,8 +320,11 @@ static void collide(world *w, pair *p)
     vec3 pt = contact_point(a, b, &r, 1e-6 * scale + fmax(0, -r.distance));
     double e = fmin(a->elasticity, b->elasticity);
     /* a resting object hit by a moving one takes part as a dynamic one */
-    if (a->state == STATE_RESTING && b->state == STATE_DYNAMIC) wake(a);
-    if (b->state == STATE_RESTING && a->state == STATE_DYNAMIC) wake(b);
+    if (a->state == STATE_RESTING && b->state == STATE_DYNAMIC) wake(w, p->a);
+    if (b->state == STATE_RESTING && a->state == STATE_DYNAMIC) wake(w, p->b);
+    /* their motion changes: every pair of theirs is due again */
+    sched_object_due(w, p->a, w->time);
+    sched_object_due(w, p->b, w->time);
     contact c = contact_respond(a, b, pt, r.normal, e);
     if (c.impulse > 0) {
         w->st.collisions++;
@@ -328,12 +346,13 @@ static void collide(world *w, pair *p)
         body *m = k == 0 ? a : b, *s = k == 0 ? b : a;
         int si = k == 0 ? p->b : p->a;
         vec3 n = k == 0 ? r.normal : v3_neg(r.normal); /* from the support to m */
-        if (m->state != STATE_DYNAMIC || s->state == STATE_DYNAMIC) continue;
+        /* a support: a static or resting object, or one that slides itself */
+        if (m->state != STATE_DYNAMIC || (s->state == STATE_DYNAMIC && s->slide < 0)) continue;
         double vn = v3_dot(m->v, n);
         if (v3_dot(n, up) < 0.7 || vn > SIM_REST_SPEED) continue;
         if (!contact_stable(m, n, 1e-6 * scale)) continue;
         double speed = v3_len(m->v) + v3_len(m->w) * m->shape.r_out;
-        if (speed < SIM_REST_SPEED) {
+        if (speed < SIM_REST_SPEED && s->state != STATE_DYNAMIC) {
             come_to_rest(m, si);
         } else {
             m->slide = si;
@@ -343,7 +362,17 @@ static void collide(world *w, pair *p)
         }
         settled = true;
     }
-    if (apart || settled) separate(a, b, r.normal, r.distance, SIM_SEPARATION);
+    /* an object that barely moves against a support below it without standing on
+     * it (rocking on an edge or a corner), and keeps colliding in this step, is set
+     * a hop apart, so that gravity takes milliseconds, not microseconds, to bring
+     * it back: the micro-collisions that turn it over stay few */
+    double sep = SIM_SEPARATION;
+    a->step_hits++;
+    b->step_hits++;
+    if (!settled && c.speed < SIM_REST_SPEED && fabs(v3_dot(r.normal, up)) > 0.7 &&
+        (a->step_hits > SIM_HOP_AFTER || b->step_hits > SIM_HOP_AFTER))
+        sep = SIM_HOP;
+    if (apart || settled || sep > SIM_SEPARATION) separate(a, b, r.normal, r.distance, sep);
 }
 
 /* Sliding objects leave their support when they lift off, pass its edge, stop
@@ -369,26 +398,81 @@ static void check_slides(world *w)
     }
 }
 
+static int due_room(world *w, long n)
+{
+    if (n <= w->capdue) return 0;
+    long *d = realloc(w->due, (size_t)n * sizeof *d);
+    if (d) w->due = d;
+    double *dn = realloc(w->due_next, (size_t)n * sizeof *dn);
+    if (dn) w->due_next = dn;
+    if (!d || !dn) return -1;
+    w->capdue = n;
+    return 0;
+}
+
+/* The pairs to check at time t_end: with the heap, those due by then (taken out of
+ * the way at +inf until their new time is known); without it, every pair. */
+static long take_due(world *w, double t_end)
+{
+    long n = 0;
+    if (!w->set.collision_heap) {
+        for (long i = 0; i < w->npairs; i++) w->due[n++] = i;
+        return n;
+    }
+    double next;
+    long i;
+    while ((i = sched_top(w, &next)) >= 0 && next <= t_end) {
+        w->due[n++] = i;
+        sched_set(w, i, HUGE_VAL);
+        w->st.heap_pops++;
+    }
+    return n;
+}
+
+static void put_back(world *w, long n)
+{
+    if (!w->set.collision_heap) return;
+    for (long k = 0; k < n; k++) sched_set(w, w->due[k], w->due_next[k]);
+}
+
 /* One internal step of h seconds (thesis 3.4.2, steps 3 to 5). */
 static int internal_step(world *w, double h)
 {
-    double left = h, t0 = w->time;
+    double left = h, t0 = w->time, t_end = t0 + h;
+    if (due_room(w, w->npairs) != 0) return -1;
+    for (int i = 0; i < w->n; i++) w->bodies[i]->step_hits = 0;
     for (int n = 0; left > 0; n++) {
         if (save_states(w) != 0) return -1;
         fly_all(w, left);
+        long ndue = take_due(w, t_end);
         pair *first = NULL;
         double when = left;
-        for (long i = 0; i < w->npairs; i++) {
-            pair *p = &w->pairs[i];
+        for (long k = 0; k < ndue; k++) {
+            pair *p = &w->pairs[w->due[k]];
+            w->due_next[k] = HUGE_VAL;
             if (!pair_moves(w, p)) continue;
             closest_result r = query(w, p, w->bodies[p->a], w->bodies[p->b]);
-            if (r.status != CLOSEST_PENETRATING) continue;
+            if (r.status != CLOSEST_PENETRATING) {
+                w->due_next[k] = t_end + sched_predict(w, p, r.distance);
+                continue;
+            }
             double t = time_of_impact(w, p, left);
-            if (t < when || !first) {
+            w->due_next[k] = t0 + (h - left) + t; /* checked again once answered */
+            /* the earliest; among equals the first pair, whatever order the
+             * schedule gave them in, so that the heap changes nothing */
+            if (!first || t < when || (t == when && p < first)) {
                 when = t;
                 first = p;
             }
         }
+        /* the world goes back to answer a collision: what was predicted from the
+         * states about to be dropped no longer holds (the speed limits make a
+         * flight depend on where it is cut), so those pairs are due again then */
+        if (first) {
+            double tc = t0 + (h - left) + when;
+            for (long k = 0; k < ndue; k++) w->due_next[k] = fmin(w->due_next[k], tc);
+        }
+        put_back(w, ndue);
         if (!first || n >= SIM_MAX_COLLISIONS_PER_STEP) break;
         restore_states(w);
         fly_all(w, when);
@@ -397,7 +481,7 @@ static int internal_step(world *w, double h)
         collide(w, first);
         wake_unsupported(w);
     }
-    w->time = t0 + h;
+    w->time = t_end;
     check_slides(w);
     return 0;
 }
@@ -412,10 +496,11 @@ int sim_frame(world *w, char *err, size_t errlen)
                  w->set.time_step, n, SIM_MAX_SUBFRAMES);
         return -1;
     }
-    if (sim_update_pairs(w) != 0) {
+    if (sim_update_pairs(w) != 0 || (w->sched_dirty && sched_build(w, w->time) != 0)) {
         snprintf(err, errlen, "out of memory");
         return -1;
     }
+    w->sched_dirty = false;
     double t0 = w->time, h = n > 0 ? w->set.time_step / (double)n : 0;
     wake_unsupported(w);
     for (long k = 0; k < n; k++) {

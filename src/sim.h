@@ -25,6 +25,11 @@
 #define SIM_TOI_TIME 1e-10
 /* After a collision the pair is set apart to at least this distance (m). */
 #define SIM_SEPARATION 1e-7
+/* An object that collides slowly (below SIM_REST_SPEED) with a support under it but
+ * cannot stand on it there, more than SIM_HOP_AFTER times in one internal step, is
+ * set SIM_HOP apart (m) from it. */
+#define SIM_HOP 1e-4
+#define SIM_HOP_AFTER 16
 /* Below this speed (m/s: |v| + |w| times the outer radius) an object on a support
  * underneath, against the global force, comes to rest (the thesis's contact state):
  * at once when it collides with the support, or at the end of a frame when it
@@ -34,7 +39,7 @@
 #define SIM_REST_SPEED 0.05
 /* Collisions one internal step may answer before the step gives up and lets the
  * objects through (a guard against endless micro-collisions; counted in stats). */
-#define SIM_MAX_COLLISIONS_PER_STEP 10000
+#define SIM_MAX_COLLISIONS_PER_STEP 1000
 
 /* Advances the world by one frame.  Returns 0, or -1 with a message in err when the
  * settings ask for more than SIM_MAX_SUBFRAMES internal steps (nothing moves then).

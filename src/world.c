@@ -60,6 +60,15 @@ void world_free(world *w)
     if (w->events) fclose(w->events);
     free(w->pairs);
     free(w->snap);
+    free(w->heap);
+    free(w->obj_first);
+    free(w->obj_pairs);
+    w->heap = w->obj_first = w->obj_pairs = NULL;
+    free(w->due);
+    free(w->due_next);
+    w->due = NULL;
+    w->due_next = NULL;
+    w->capdue = 0;
     w->pairs = NULL;
     w->snap = NULL;
     w->npairs = w->cappairs = 0;

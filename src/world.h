@@ -68,6 +68,7 @@ typedef struct {
     double render_time;   /* seconds spent drawing and writing frames */
     long frames_written;  /* image files written */
     long restarts;        /* closest-feature walks redone from scratch */
+    long heap_pops;       /* pairs taken from the schedule to be checked */
 } stats;
 
 /* A pair of objects that may collide: dynamic-dynamic or dynamic-static (resting
@@ -76,7 +77,7 @@ typedef struct {
     int a, b;             /* body indices, a < b */
     closest_cache cache;  /* closest features of the last query */
     double next;          /* earliest time the pair could collide (the schedule) */
-    int heap;             /* its place in the schedule's heap, or -1 */
+    long heap;            /* its place in the schedule's heap */
 } pair;
 
 typedef struct world {
@@ -97,6 +98,13 @@ typedef struct world {
     pair *pairs;          /* the pairs, rebuilt by the simulation when pairs_dirty */
     long npairs, cappairs;
     bool pairs_dirty;     /* objects were added, deleted or changed mass */
+    long *heap;           /* the schedule: pair indices, a binary min-heap on next */
+    long *obj_first;      /* the pairs of object k: obj_pairs[obj_first[k] .. */
+    long *obj_pairs;      /*   obj_first[k + 1] - 1] */
+    bool sched_dirty;     /* a command changed something: every pair is due */
+    long *due;            /* scratch: the pairs checked in a step, their new times */
+    double *due_next;
+    long capdue;
     body *snap;           /* scratch: states saved during an internal step */
     int capsnap;
 } world;

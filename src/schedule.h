@@ -1,0 +1,37 @@
+/* schedule.h: the collision heap (thesis 3.3.1).
+ *
+ * Each pair gets the earliest time it could possibly collide: its distance, less
+ * what rotation can bring the surfaces closer ((R - r) of each rotating object, or
+ * |w| R t when that is smaller), against the farthest vroc's own integrator can
+ * carry the two centres of mass towards each other (|v| t + |a| t^2 / 2, and never
+ * more than max_linear t).  Pairs sit in an indexed binary heap keyed by that time;
+ * an internal step checks only the pairs that are due.  A change of an object's
+ * motion makes all its pairs due at once.
+ */
+#ifndef VROC_SCHEDULE_H
+#define VROC_SCHEDULE_H
+
+#include "world.h"
+
+/* Time (s, from now) before which pair p, its objects distance d apart now, cannot
+ * collide; 0 when d <= 0, HUGE_VAL when neither object moves. */
+double sched_predict(const world *w, const pair *p, double d);
+
+/* Builds the heap over every pair, all due at time t, and the lists of each
+ * object's pairs.  Returns 0, or -1 when out of memory. */
+int sched_build(world *w, double t);
+
+/* Sets pair i's time to next and restores the heap. */
+void sched_set(world *w, long i, double next);
+
+/* The pair due first, or -1 for none; its time in *next. */
+long sched_top(const world *w, double *next);
+
+/* Makes every pair of object k due at time t (sooner only: a pair already due
+ * earlier keeps its time). */
+void sched_object_due(world *w, int k, double t);
+
+/* Checks the heap's invariants (for tests): 0 when they hold. */
+int sched_check(const world *w);
+
+#endif

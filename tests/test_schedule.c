@@ -1,0 +1,223 @@
+/* test_schedule.c: the collision heap (issue 6): its invariants, and predicted
+ * collision times that are never later than the true first contact. */
+#include "check.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "log.h"
+#include "schedule.h"
+#include "sim.h"
+#include "world.h"
+
+static double urand(unsigned long long *s, double lo, double hi)
+{
+    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
+    return lo + (hi - lo) * (double)(*s >> 11) / 9007199254740992.0;
+}
+
+static body *add(world *w, const char *name, shape_kind kind)
+{
+    body *b = malloc(sizeof *b);
+    assert_non_null(b);
+    body_init(b, name, kind);
+    char err[256];
+    assert_int_equal(body_build(b, err, sizeof err), 0);
+    assert_true(world_add(w, b) >= 0);
+    return b;
+}
+
+static void heap_keeps_its_order(void **state)
+{
+    (void)state;
+    world w;
+    world_init(&w);
+    for (int i = 0; i < 40; i++) {
+        char name[8];
+        snprintf(name, sizeof name, "o%d", i);
+        add(&w, name, SHAPE_SPHERE);
+    }
+    assert_int_equal(sim_update_pairs(&w), 0);
+    assert_int_equal(sched_build(&w, 0), 0);
+    assert_int_equal(w.npairs, 40 * 39 / 2);
+    unsigned long long s = 5;
+    for (int k = 0; k < 20000; k++) {
+        long i = (long)urand(&s, 0, (double)w.npairs);
+        sched_set(&w, i, urand(&s, 0, 100));
+        if (k % 1000 == 0) assert_int_equal(sched_check(&w), 0);
+    }
+    assert_int_equal(sched_check(&w), 0);
+    /* taking the top and pushing it far away yields the times in order */
+    double last = -1, next;
+    for (long k = 0; k < w.npairs; k++) {
+        long i = sched_top(&w, &next);
+        assert_true(next >= last);
+        last = next;
+        sched_set(&w, i, HUGE_VAL);
+    }
+    assert_int_equal(sched_check(&w), 0);
+    /* every pair of object 3 made due, and only those */
+    sched_object_due(&w, 3, 1.0);
+    long due = 0;
+    for (long i = 0; i < w.npairs; i++)
+        if (w.pairs[i].next == 1.0) {
+            assert_true(w.pairs[i].a == 3 || w.pairs[i].b == 3);
+            due++;
+        }
+    assert_int_equal(due, 39);
+    assert_int_equal(sched_check(&w), 0);
+    world_free(&w);
+}
+
+/* First time the two bodies touch when flown with vroc's integrator in steps of
+ * h, found to 1e-9 s; HUGE_VAL when not within tmax. */
+static double first_contact(const world *w, const body *a0, const body *b0, double h, double tmax)
+{
+    body a = *a0, b = *b0;
+    vec3 g = world_accel(w);
+    double t = 0;
+    while (t < tmax) {
+        body na = a, nb = b;
+        if (na.state == STATE_DYNAMIC) sim_flight(&na, h, g, w->set.max_linear, w->set.max_angular);
+        if (nb.state == STATE_DYNAMIC) sim_flight(&nb, h, g, w->set.max_linear, w->set.max_angular);
+        closest_result r = closest_query(&na, &nb, NULL);
+        if (r.status != CLOSEST_SEPARATED) {
+            /* contact within this step: bisect its length */
+            double lo = 0, hi = h;
+            while (hi - lo > 1e-9) {
+                double mid = 0.5 * (lo + hi);
+                na = a;
+                nb = b;
+                if (na.state == STATE_DYNAMIC) sim_flight(&na, mid, g, w->set.max_linear, w->set.max_angular);
+                if (nb.state == STATE_DYNAMIC) sim_flight(&nb, mid, g, w->set.max_linear, w->set.max_angular);
+                if (closest_query(&na, &nb, NULL).status == CLOSEST_SEPARATED) lo = mid;
+                else hi = mid;
+            }
+            return t + lo;
+        }
+        a = na;
+        b = nb;
+        t += h;
+    }
+    return HUGE_VAL;
+}
+
+static void predictions_are_never_late(void **state)
+{
+    (void)state;
+    unsigned long long s = 11;
+    int collided = 0, tight = 0;
+    const int trials = 600;
+    for (int k = 0; k < trials; k++) {
+        world w;
+        world_init(&w);
+        w.set.max_linear = urand(&s, 1, 12);
+        w.set.max_angular = urand(&s, 1, 8);
+        if (k % 2) w.set.force = (dir_amount){v3(urand(&s, -1, 1), urand(&s, -1, 1), -1), 9.8};
+        body *ob[2];
+        for (int j = 0; j < 2; j++) {
+            char name[4] = {(char)('a' + j), 0};
+            ob[j] = add(&w, name, (shape_kind)((k + j) % 3));
+            body *b = ob[j];
+            b->sp.radius = urand(&s, 0.1, 0.5);
+            b->sp.size = v3(urand(&s, 0.05, 0.5), urand(&s, 0.05, 0.5), urand(&s, 0.05, 0.5));
+            b->sp.a1 = urand(&s, 0.1, 0.5);
+            b->sp.a2 = urand(&s, 0.1, 0.5);
+            b->sp.a3 = urand(&s, 0.05, 0.5);
+            b->sp.exp1 = urand(&s, 0.2, 2);
+            b->sp.exp2 = urand(&s, 0.2, 2);
+            char err[256];
+            assert_int_equal(body_build(b, err, sizeof err), 0);
+            body_set_rotation(b, v3(urand(&s, -1, 1), urand(&s, -1, 1), urand(&s, -1, 1)), urand(&s, 0, 3));
+            body_set_angular_vel(b, v3(urand(&s, -6, 6), urand(&s, -6, 6), urand(&s, -6, 6)));
+        }
+        if (k % 5 == 0) body_set_mass(ob[1], -1); /* a static partner */
+        ob[0]->x = v3(0, 0, 0);
+        ob[1]->x = v3(urand(&s, 1.2, 3), urand(&s, -0.5, 0.5), urand(&s, -0.5, 0.5));
+        /* aimed at each other, with some scatter */
+        vec3 dir = v3_norm(v3_sub(ob[1]->x, ob[0]->x));
+        ob[0]->v = v3_add(v3_scale(dir, urand(&s, 0, 8)), v3(urand(&s, -1, 1), urand(&s, -1, 1), urand(&s, -1, 1)));
+        if (!body_is_static(ob[1]))
+            ob[1]->v = v3_add(v3_scale(dir, -urand(&s, 0, 4)), v3(urand(&s, -1, 1), urand(&s, -1, 1), urand(&s, -1, 1)));
+        closest_result r = closest_query(ob[0], ob[1], NULL);
+        if (r.status != CLOSEST_SEPARATED) {
+            world_free(&w);
+            continue;
+        }
+        assert_int_equal(sim_update_pairs(&w), 0);
+        double predicted = sched_predict(&w, &w.pairs[0], r.distance);
+        double truth = first_contact(&w, ob[0], ob[1], urand(&s, 0.001, 0.02), 3);
+        if (truth < HUGE_VAL) collided++;
+        if (predicted > truth)
+            fail_msg("trial %d: predicted %.9g s but they touch at %.9g s", k, predicted, truth);
+        if (truth < HUGE_VAL && predicted > 0.3 * truth) tight++;
+        world_free(&w);
+    }
+    print_message("never late: %d of %d trials collided; %d predictions within 70%% of the truth\n",
+                  collided, trials, tight);
+    assert_true(collided > trials / 3); /* the test must exercise real collisions */
+    assert_true(tight > collided / 4);  /* and the bound must be of use */
+}
+
+/* The heap and checking every pair give the same trajectories. */
+static void heap_on_and_off_agree(void **state)
+{
+    (void)state;
+    world ws[2];
+    for (int m = 0; m < 2; m++) {
+        world *w = &ws[m];
+        world_init(w);
+        w->set.collision_heap = m == 0;
+        w->set.force = (dir_amount){v3(0, 0, -1), 9.8};
+        unsigned long long s = 3;
+        body *floor_ = add(w, "floor", SHAPE_CUBE);
+        floor_->sp.size = v3(3, 3, 0.1);
+        char err[256];
+        assert_int_equal(body_build(floor_, err, sizeof err), 0);
+        body_set_mass(floor_, -1);
+        for (int i = 0; i < 30; i++) {
+            char name[8];
+            snprintf(name, sizeof name, "o%d", i);
+            body *b = add(w, name, (shape_kind)(i % 3));
+            b->sp.radius = 0.15;
+            b->sp.size = v3(0.15, 0.1, 0.12);
+            b->sp.a1 = b->sp.a2 = b->sp.a3 = 0.14;
+            b->sp.exp1 = 0.6;
+            assert_int_equal(body_build(b, err, sizeof err), 0);
+            b->x = v3((i % 6) * 0.5 - 1.25, (i / 6) * 0.5 - 1, 0.6 + urand(&s, 0, 1.5));
+            b->v = v3(urand(&s, -1, 1), urand(&s, -1, 1), urand(&s, -1, 1));
+            body_set_angular_vel(b, v3(urand(&s, -2, 2), urand(&s, -2, 2), urand(&s, -2, 2)));
+            b->elasticity = 0.7;
+        }
+    }
+    char err[256];
+    if (getenv("VROC_DEBUG_EVENTS")) {
+        log_events_open(&ws[0], "/tmp/ev-on.csv", err, sizeof err);
+        log_events_open(&ws[1], "/tmp/ev-off.csv", err, sizeof err);
+    }
+    for (int f = 0; f < 25; f++) {
+        for (int m = 1; m >= 0; m--) { assert_int_equal(sim_frame(&ws[m], err, sizeof err), 0); if (getenv("VROC_DEBUG_EVENTS")) fprintf(stderr, "f %d m %d coll %ld checks %ld\n", f, m, ws[m].st.collisions, ws[m].st.pair_checks); }
+        for (int i = 0; i < ws[0].n; i++) {
+            const body *a = ws[0].bodies[i], *b = ws[1].bodies[i];
+            if (memcmp(&a->x, &b->x, sizeof a->x) != 0 || memcmp(&a->q, &b->q, sizeof a->q) != 0 ||
+                memcmp(&a->v, &b->v, sizeof a->v) != 0 || a->state != b->state)
+                fail_msg("frame %d: %s differs with the heap on and off: dx %g dv %g states %d %d", f, a->name, v3_dist(a->x, b->x), v3_dist(a->v, b->v), a->state, b->state);
+        }
+    }
+    print_message("heap on: %ld pair checks, off: %ld; %ld collisions\n", ws[0].st.pair_checks,
+                  ws[1].st.pair_checks, ws[0].st.collisions);
+    assert_true(ws[0].st.collisions > 30);
+    assert_true(ws[0].st.pair_checks < ws[1].st.pair_checks);
+    world_free(&ws[0]);
+    world_free(&ws[1]);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(heap_keeps_its_order),
+        cmocka_unit_test(predictions_are_never_late),
+        cmocka_unit_test(heap_on_and_off_agree),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
