@@ -109,7 +109,8 @@ bench: deps
 # ---- the main job ----
 demo: deps
 	@$(MAKE) --no-print-directory vroc
-	./vroc -b scenes/simple.vroc -c 'stats'
+	./vroc -b scenes/simple.vroc -c 'output = "frames"; record = on; run 30; stats'
+	@echo "demo: stereo frames of the Simple scene are in frames/"
 
 deps:
 	@sh src/deps.sh

@@ -554,6 +554,8 @@ static cmd_status cmd_stats(shell *sh, const stmt *st)
     fprintf(sh->out, "sim_time = %s\n", fmt_num(a, w->time));
     fprintf(sh->out, "wall_time = %.6f\n", w->st.wall_time);
     fprintf(sh->out, "internal_steps = %ld\n", w->st.subframes);
+    fprintf(sh->out, "heap_pops = %ld\n", w->st.heap_pops);
+    fprintf(sh->out, "restarts = %ld\n", w->st.restarts);
     fprintf(sh->out, "render_time = %.6f\n", w->st.render_time);
     fprintf(sh->out, "files_written = %ld\n", w->st.frames_written);
     return CMD_OK;
