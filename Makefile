@@ -45,6 +45,14 @@ SAN_OBJ  = $(patsubst src/%.c,build-san/%.o,$(SRC)) build-san/help_data.o
 
 all: vroc man/vroc.1
 
+# main.o holds the scenes folder: it is rebuilt when PREFIX changes
+build/prefix: FORCE
+	@mkdir -p build
+	@echo '$(SCENEDIR)' | cmp -s - $@ || echo '$(SCENEDIR)' > $@
+build/main.o build-san/main.o: build/prefix
+.PHONY: FORCE
+FORCE:
+
 vroc: build/main.o build/libvroc.a
 	$(CC) $(OPT) -o $@ $^ $(LIBS) $(LDFLAGS)
 

@@ -34,8 +34,9 @@ static bool is_dir(const char *p)
     return stat(p, &sb) == 0 && S_ISDIR(sb.st_mode);
 }
 
-/* The scenes folder: $VROC_SCENES, else the installed one, else scenes/ beside
- * the executable (an uninstalled build). */
+/* The scenes folder: $VROC_SCENES, else the installed one, else share/vroc/scenes
+ * beside the executable's folder (an installation moved elsewhere, or under
+ * DESTDIR), else scenes/ beside the executable (an uninstalled build). */
 static const char *scene_dir(char *buf, size_t len)
 {
     const char *env = getenv("VROC_SCENES");
@@ -48,6 +49,8 @@ static const char *scene_dir(char *buf, size_t len)
         char *slash = strrchr(exe, '/');
         if (slash) {
             *slash = '\0';
+            snprintf(buf, len, "%s/../share/vroc/scenes", exe);
+            if (is_dir(buf)) return buf;
             snprintf(buf, len, "%s/scenes", exe);
             if (is_dir(buf)) return buf;
         }
