@@ -90,11 +90,11 @@ build-san/vroc: build-san/main.o build-san/libvroc.a
 	$(CC) $(OPT) $(SAN) -o $@ $^ $(LIBS)
 
 # ---- tests ----
-build/tests/%: tests/%.c tests/check.h build/libvroc.a
+build/tests/%: tests/%.c tests/check.h tests/worlds.h build/libvroc.a
 	@mkdir -p build/tests
 	$(CC) $(CFLAGS_ALL) -MMD -MP -o $@ $< build/libvroc.a $(LIBS) $(TEST_LIBS)
 
-build-san/tests/%: tests/%.c tests/check.h build-san/libvroc.a
+build-san/tests/%: tests/%.c tests/check.h tests/worlds.h build-san/libvroc.a
 	@mkdir -p build-san/tests
 	$(CC) $(CFLAGS_ALL) $(SAN) -o $@ $< build-san/libvroc.a $(LIBS) $(TEST_LIBS)
 

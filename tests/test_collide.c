@@ -10,23 +10,7 @@
 
 #include "sim.h"
 #include "world.h"
-
-static body *add(world *w, const char *name, shape_kind kind)
-{
-    body *b = malloc(sizeof *b);
-    assert_non_null(b);
-    body_init(b, name, kind);
-    char err[256];
-    assert_int_equal(body_build(b, err, sizeof err), 0);
-    assert_true(world_add(w, b) >= 0);
-    return b;
-}
-
-static void rebuild(body *b)
-{
-    char err[256];
-    assert_int_equal(body_build(b, err, sizeof err), 0);
-}
+#include "worlds.h"
 
 static void frames(world *w, int n)
 {
@@ -128,12 +112,6 @@ static double energy(const world *w)
     double e = 0;
     for (int i = 0; i < w->n; i++) e += body_energy(w->bodies[i]);
     return e;
-}
-
-static double urand(unsigned long long *s, double lo, double hi)
-{
-    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
-    return lo + (hi - lo) * (double)(*s >> 11) / 9007199254740992.0;
 }
 
 static void closed_system_conserves(void **state)

@@ -11,17 +11,7 @@
 
 #include "sim.h"
 #include "world.h"
-
-static body *add(world *w, const char *name, shape_kind kind)
-{
-    body *b = malloc(sizeof *b);
-    assert_non_null(b);
-    body_init(b, name, kind);
-    char err[256];
-    assert_int_equal(body_build(b, err, sizeof err), 0);
-    assert_true(world_add(w, b) >= 0);
-    return b;
-}
+#include "worlds.h"
 
 static void run_frames(world *w, int n)
 {

@@ -9,23 +9,7 @@
 #include "schedule.h"
 #include "sim.h"
 #include "world.h"
-
-static double urand(unsigned long long *s, double lo, double hi)
-{
-    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
-    return lo + (hi - lo) * (double)(*s >> 11) / 9007199254740992.0;
-}
-
-static body *add(world *w, const char *name, shape_kind kind)
-{
-    body *b = malloc(sizeof *b);
-    assert_non_null(b);
-    body_init(b, name, kind);
-    char err[256];
-    assert_int_equal(body_build(b, err, sizeof err), 0);
-    assert_true(world_add(w, b) >= 0);
-    return b;
-}
+#include "worlds.h"
 
 static void heap_keeps_its_order(void **state)
 {

@@ -1,0 +1,35 @@
+/* worlds.h: building small worlds in unit tests (include after check.h). */
+#ifndef VROC_TEST_WORLDS_H
+#define VROC_TEST_WORLDS_H
+
+#include <stdlib.h>
+
+#include "world.h"
+
+/* A new object of the given kind with the thesis's defaults, built and added to w. */
+static inline body *add(world *w, const char *name, shape_kind kind)
+{
+    body *b = malloc(sizeof *b);
+    assert_non_null(b);
+    body_init(b, name, kind);
+    char err[256];
+    assert_int_equal(body_build(b, err, sizeof err), 0);
+    assert_true(world_add(w, b) >= 0);
+    return b;
+}
+
+/* Builds b again after its shape parameters changed. */
+static inline void rebuild(body *b)
+{
+    char err[256];
+    assert_int_equal(body_build(b, err, sizeof err), 0);
+}
+
+/* A uniform number in [lo, hi) from a 64-bit LCG: the same sequence everywhere. */
+static inline double urand(unsigned long long *s, double lo, double hi)
+{
+    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
+    return lo + (hi - lo) * (double)(*s >> 11) / 9007199254740992.0;
+}
+
+#endif
