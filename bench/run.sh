@@ -1,0 +1,355 @@
+#!/bin/sh
+# bench/run.sh: vroc's benchmarks next to the thesis's chapter 5 tables (design.md,
+# "Performance").  Run from the repository root after the benchmarks are built
+# (`make bench` does both).
+#
+# Measures with build/bench/bench_sim (see its header for what is timed):
+#   - the thesis scenes (Table 5.1): simulation only with the collision heap on and
+#     off, and with both eyes rendered into memory at 640x512 after every frame;
+#     100 frames (10 s of simulated time at 0.1 s, as the thesis's "average over
+#     approximately 10 seconds"), median of 5 runs or more (3 for the heap off and
+#     rendered runs);
+#   - the random environment (Table 5.6) for 20 to 100 objects, and 200, 500 and
+#     1000 for scaling (fewer runs and frames there, as printed);
+# then prints build/bench/bench_view and build/bench/bench_closest.
+#
+# Environment: BENCH_QUICK=1 measures less (1 run, fewer frames) for a smoke test.
+
+set -u
+
+SIM=build/bench/bench_sim
+TMP=$(mktemp -d "${TMPDIR:-/tmp}/vroc-bench.XXXXXX") || exit 1
+trap 'rm -rf "$TMP"' EXIT INT TERM
+RAW="$TMP/raw"
+: >"$RAW"
+
+QUICK=${BENCH_QUICK:-0}
+# A slow scene is measured as it is, within bounds: a run stops after BUDGET seconds
+# (the figure covers the frames it did, marked *), and no further run of the same
+# measurement starts after MAXT seconds of runs.
+BUDGET=20
+MAXT=20
+# After SOFT seconds in all (slow scenes), every later measurement is cut to one run
+# of at most 10 s, so that `make bench` stays near ten minutes; the output says so.
+SOFT=${BENCH_SOFT:-420}
+START=$(date +%s)
+
+if [ ! -x "$SIM" ]; then
+    echo "bench/run.sh: $SIM is missing; run 'make bench'" >&2
+    exit 1
+fi
+
+# ---------------------------------------------------------------- helpers
+
+# field LINE KEY: the value of KEY=value in a bench_sim line (empty when absent).
+field() {
+    printf '%s\n' "$1" | tr ' ' '\n' | sed -n "s/^$2=//p"
+}
+
+# num VALUE: a figure for a table: thousands separated, 1 or 2 decimals when small,
+# '-' for none.
+num() {
+    awk -v v="$1" 'BEGIN {
+        if (v == "" || v == "-") { printf "-"; exit }
+        a = v < 0 ? -v : v
+        if (a >= 100) {
+            s = sprintf("%.0f", a); o = ""
+            while (length(s) > 3) { o = "," substr(s, length(s) - 2) o; s = substr(s, 1, length(s) - 3) }
+            printf "%s%s%s", (v < 0 ? "-" : ""), s, o
+        } else if (a >= 10) printf "%.1f", v
+        else printf "%.2f", v
+    }'
+}
+
+# ratio A B: A / B with "x", '-' when either is missing or B is 0.
+ratio() {
+    awk -v a="$1" -v b="$2" 'BEGIN {
+        if (a == "" || b == "" || a == "-" || b == "-" || b + 0 == 0) { printf "-"; exit }
+        r = a / b
+        if (r >= 100) printf "%.0fx", r; else if (r >= 10) printf "%.1fx", r
+        else if (r >= 0.1) printf "%.2fx", r; else printf "%.2gx", r
+    }'
+}
+
+# measure TAG ARGS...: runs bench_sim, keeps its line in $TMP/TAG (empty on failure,
+# with the reason in $TMP/TAG.err) and in the raw list.
+measure() {
+    tag=$1
+    shift
+    printf 'bench: %-28s' "$tag" >&2
+    t0=$(date +%s)
+    set -- --budget "$BUDGET" --max-time "$MAXT" "$@"
+    if [ $((t0 - START)) -gt "$SOFT" ]; then
+        set -- "$@" --runs 1 --budget 10 --max-time 10
+        echo "$tag" >>"$TMP/cut"
+    fi
+    if "$SIM" "$@" >"$TMP/$tag" 2>"$TMP/$tag.err"; then
+        cat "$TMP/$tag" >>"$RAW"
+        printf ' %3ss  %s fps\n' "$(($(date +%s) - t0))" "$(num "$(field "$(cat "$TMP/$tag")" frames_per_s)")" >&2
+    else
+        : >"$TMP/$tag"
+        printf ' failed: %s\n' "$(head -n 1 "$TMP/$tag.err")" >&2
+    fi
+}
+
+# get TAG KEY: a field of a measurement ('' when it was not made).
+get() {
+    if [ -s "$TMP/$1" ]; then field "$(cat "$TMP/$1")" "$2"; fi
+}
+
+# note TAG: " (truncated)" when a run hit the time budget.
+trunc() {
+    if [ "$(get "$1" truncated)" = 1 ]; then printf '*'; fi
+}
+
+rule() {
+    printf '%s\n' "------------------------------------------------------------------------------------------------------------"
+}
+
+# ---------------------------------------------------------------- the thesis's figures
+
+# id|name|file|objects|pairs|subframes|HP750 f/s|HP750 sub/s|HP750 no-heap f/s|sub/s|
+#   PxPl5 1GP f/s|sub/s|PxPl5 25GP f/s|sub/s|best f/s|goal f/s|heap goal
+# Tables 5.1 to 5.5 of the thesis; goals from design.md.
+THESIS='simple|Simple|scenes/simple.vroc|4|6|6|34|204|23|138|28|168|28|168|34|30000|-
+computer-desks|Computer Desks|scenes/computer-desks.vroc|43|438|2|4|8|1|2|7|14|18|36|18|15000|10
+basketball|Virtual Basketball|scenes/basketball.vroc|9|8|58|22|1276|5|290|21|1218|23|1334|23|20000|-
+office|Office|scenes/office.vroc|43|308|12|4|48|0.2|2.4|7|84|15|180|15|15000|10
+bounce|Bounce|scenes/bounce.vroc|35|342|6|4|24|0.4|2.4|13|78|18|108|18|15000|10'
+
+# N|pairs|stereo f/s|sub/s (Table 5.6, Pixel-Planes 5, 25 GPs)
+RANDOM_THESIS='20|190|22|44
+40|780|17|34
+60|1770|16|32
+80|3160|13|26
+100|4950|12.5|25'
+RANDOM_GOAL=1000 # frames/s, Random 100, simulation only (design.md)
+
+if [ "$QUICK" = 1 ]; then
+    F=20; R=1; R3=1; MT=0
+else
+    F=100; R=5; R3=3; MT=2
+fi
+
+# ---------------------------------------------------------------- measurements
+
+MISSING=""
+printf '%s\n' "$THESIS" | while IFS='|' read -r id name file rest; do
+    if [ ! -f "$file" ]; then
+        echo "bench: $file is missing: $name skipped" >&2
+        continue
+    fi
+    measure "$id.on" "$file" --frames "$F" --runs "$R" --min-time "$MT" --heap on
+    measure "$id.off" "$file" --frames "$F" --runs "$R3" --heap off
+    measure "$id.render" "$file" --frames "$F" --runs "$R3" --heap on --render
+done
+for id in $(printf '%s\n' "$THESIS" | cut -d'|' -f1); do
+    file=$(printf '%s\n' "$THESIS" | grep "^$id|" | cut -d'|' -f3)
+    [ -f "$file" ] || MISSING="$MISSING $file"
+done
+
+for n in 20 40 60 80 100; do
+    measure "random$n.on" --random "$n" --frames "$F" --runs "$R" --heap on
+    measure "random$n.off" --random "$n" --frames "$F" --runs "$R3" --heap off
+    measure "random$n.render" --random "$n" --frames "$F" --runs "$R3" --heap on --render
+done
+if [ "$QUICK" = 1 ]; then
+    SCALE="200:1:10 500:1:5 1000:1:3"
+else
+    SCALE="200:3:100 500:3:20 1000:3:20"
+fi
+for s in $SCALE; do
+    n=${s%%:*}
+    rf=${s#*:}
+    measure "random$n.on" --random "$n" --frames "${rf#*:}" --runs "${rf%%:*}" --heap on \
+        --budget 60 --max-time 50
+done
+
+# ---------------------------------------------------------------- report
+
+echo
+echo "vroc benchmarks: this machine next to the thesis (Chapter 5)"
+rule
+printf 'machine: %s, %s cores; %s\n' \
+    "$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -n 1)" \
+    "$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo '?')" "$(uname -sr)"
+printf 'vroc: %s%s, %s\n' "$(git rev-parse --short HEAD 2>/dev/null || echo '?')" \
+    "$(if [ -n "$(git status --porcelain -- src 2>/dev/null)" ]; then echo ' (src modified)'; fi)" \
+    "$(date '+%Y-%m-%d %H:%M')"
+echo "One core, one thread (llvmpipe may use more for drawing).  frames/s = frames / wall time"
+echo "of sim_frame (and view_render), first frame included; every figure is the median of"
+echo "the runs, each run on a freshly loaded scene.  Thesis: HP750 = HP-750 TVRX-T4 (mono"
+echo "640x512 images), PxPl5 = Pixel-Planes 5 with 1 or 25 GPs (stereo, head-tracked)."
+if [ -n "$MISSING" ]; then
+    echo "Missing scenes, not measured:$MISSING"
+fi
+if [ "$QUICK" = 1 ]; then echo "BENCH_QUICK=1: 1 run of 20 frames each, figures rough."; fi
+
+echo
+echo "Table 5.1: environment characteristics (thesis / vroc)"
+rule
+printf '%-20s %14s %16s %16s  %s\n' environment objects pairs subframes match
+printf '%s\n' "$THESIS" | while IFS='|' read -r id name file to tp ts rest; do
+    if [ ! -s "$TMP/$id.on" ]; then
+        printf '%-20s %6s / %-6s %7s / %-6s %7s / %-6s  %s\n' "$name" "$to" - "$tp" - "$ts" - \
+            "not measured"
+        continue
+    fi
+    vo=$(get "$id.on" objects); vp=$(get "$id.on" pairs); vs=$(get "$id.on" subframes)
+    m=yes
+    [ "$vo/$vp/$vs" = "$to/$tp/$ts" ] || m=NO
+    printf '%-20s %6s / %-6s %7s / %-6s %7s / %-6s  %s\n' "$name" "$to" "$vo" "$tp" "$vp" "$ts" "$vs" "$m"
+done
+
+echo
+echo "Tables 5.2, 5.4, 5.5: frames/s (subframes/s), collision heap on"
+rule
+printf '%-20s %-11s %-11s %-11s | %-20s %-18s | %5s %7s %9s\n' \
+    "" "thesis" "thesis" "thesis" "vroc" "vroc sim +" "thesis" "vroc" "vroc sim"
+printf '%-20s %-11s %-11s %-11s | %-20s %-18s | %5s %7s %9s\n' \
+    environment "HP750" "PxPl5 1GP" "PxPl5 25GP" "simulation only" "stereo 640x512" best goal "/ goal"
+printf '%s\n' "$THESIS" | while IFS='|' read -r id name file to tp ts hf hs nf ns gf gs pf ps best goal hg; do
+    sim="-"; ren="-"; vs=""
+    if [ -s "$TMP/$id.on" ]; then
+        vf=$(get "$id.on" frames_per_s)
+        sim="$(num "$vf") ($(num "$(get "$id.on" subframes_per_s)"))$(trunc "$id.on")"
+        vs=$(ratio "$vf" "$goal")
+    fi
+    if [ -s "$TMP/$id.render" ]; then
+        ren="$(num "$(get "$id.render" frames_per_s)") ($(num "$(get "$id.render" subframes_per_s)"))$(trunc "$id.render")"
+    fi
+    printf '%-20s %-11s %-11s %-11s | %-20s %-18s | %5s %7s %9s\n' "$name" "$hf ($hs)" "$gf ($gs)" \
+        "$pf ($ps)" "$sim" "$ren" "$best" "$(num "$goal")" "${vs:--}"
+done
+echo "goal: design.md's simulation-only frames/s; '/ goal' >= 1.00x meets it.  The stereo column"
+echo "adds view_render of both eyes into memory after every frame (no PNG files)."
+
+echo
+echo "Table 5.3: collision heap off (frames/s, subframes/s) and what the heap buys"
+rule
+printf '%-20s %-12s %8s | %-20s %-20s %9s %6s | %-17s\n' \
+    "" "thesis HP750" "thesis" "vroc" "vroc" "vroc" "" "pair checks/frame"
+printf '%-20s %-12s %8s | %-20s %-20s %9s %6s | %-17s\n' \
+    environment "heap off" "on/off" "heap off" "heap on" "on/off" goal "on / off"
+printf '%s\n' "$THESIS" | while IFS='|' read -r id name file to tp ts hf hs nf ns gf gs pf ps best goal hg; do
+    tr_=$(ratio "$hf" "$nf")
+    off="-"; on="-"; r="-"; pc="-"
+    if [ -s "$TMP/$id.off" ]; then
+        off="$(num "$(get "$id.off" frames_per_s)") ($(num "$(get "$id.off" subframes_per_s)"))$(trunc "$id.off")"
+    fi
+    if [ -s "$TMP/$id.on" ]; then
+        on="$(num "$(get "$id.on" frames_per_s)") ($(num "$(get "$id.on" subframes_per_s)"))$(trunc "$id.on")"
+    fi
+    if [ -s "$TMP/$id.on" ] && [ -s "$TMP/$id.off" ]; then
+        r=$(ratio "$(get "$id.on" frames_per_s)" "$(get "$id.off" frames_per_s)")
+        pc="$(num "$(get "$id.on" pair_checks_per_frame)") / $(num "$(get "$id.off" pair_checks_per_frame)")"
+    fi
+    g="-"
+    [ "$hg" = "-" ] || g=">=${hg}x"
+    printf '%-20s %-12s %8s | %-20s %-20s %9s %6s | %-17s\n' "$name" "$nf ($ns)" "$tr_" "$off" "$on" "$r" "$g" "$pc"
+done
+echo "thesis on/off = Table 5.2 / Table 5.3 (HP750).  goal: design.md, heap on >= 10x heap off."
+
+echo
+echo "Where the frames go (simulation only, heap on; per frame of 0.1 s unless said)"
+rule
+printf '%-20s %11s %12s %12s %12s %12s %11s\n' environment "collisions" "pair checks" \
+    "checks/pair" "heap pops" "restarts" "1st frame"
+printf '%s\n' "$THESIS" | while IFS='|' read -r id name rest; do
+    [ -s "$TMP/$id.on" ] || continue
+    printf '%-20s %11s %12s %12s %12s %12s %8s ms\n' "$name" \
+        "$(num "$(get "$id.on" collisions_per_frame)")" "$(num "$(get "$id.on" pair_checks_per_frame)")" \
+        "$(num "$(awk -v c="$(get "$id.on" pair_checks_per_frame)" -v p="$(get "$id.on" pairs)" \
+            'BEGIN { if (p > 0) printf "%.2f", c / p; else printf "-" }')")" \
+        "$(num "$(get "$id.on" heap_pops_per_frame)")" "$(num "$(get "$id.on" restarts_per_frame)")" \
+        "$(num "$(get "$id.on" first_frame_ms)")"
+done
+echo "pair checks: closest-feature queries, the time-of-impact bisection's (about 30 per"
+echo "collision) included; checks/pair: those per object pair; heap pops: pairs taken from the"
+echo "schedule; restarts: walks redone from scratch; 1st frame: the one that builds pairs and heap."
+
+echo
+echo "Table 5.6: random objects, frames/s (subframes/s)"
+rule
+printf '%-7s %-17s | %-12s | %-19s %-17s %-17s %7s | %7s %9s %9s\n' \
+    "" "pairs" "thesis" "vroc" "vroc sim +" "vroc" "heap" "collis." "pair" "heap pops"
+printf '%-7s %-17s | %-12s | %-19s %-17s %-17s %7s | %7s %9s %9s\n' \
+    objects "thesis/vroc" "PxPl5 25GP" "simulation only" "stereo 640x512" "heap off" "on/off" "/frame" "checks/f" "/frame"
+row() { # N thesis-pairs thesis-fps thesis-sub
+    n=$1; t="random$1"
+    tpairs=$2; tf=$3
+    sim="-"; ren="-"; off="-"; r="-"; c="-"; pc="-"; hp="-"; vp="-"
+    if [ -s "$TMP/$t.on" ]; then
+        vp=$(get "$t.on" pairs)
+        sim="$(num "$(get "$t.on" frames_per_s)") ($(num "$(get "$t.on" subframes_per_s)"))$(trunc "$t.on")"
+        c=$(num "$(get "$t.on" collisions_per_frame)")
+        pc=$(num "$(get "$t.on" pair_checks_per_frame)")
+        hp=$(num "$(get "$t.on" heap_pops_per_frame)")
+    fi
+    [ -s "$TMP/$t.render" ] && ren="$(num "$(get "$t.render" frames_per_s)") ($(num "$(get "$t.render" subframes_per_s)"))$(trunc "$t.render")"
+    if [ -s "$TMP/$t.off" ]; then
+        off="$(num "$(get "$t.off" frames_per_s)") ($(num "$(get "$t.off" subframes_per_s)"))$(trunc "$t.off")"
+        r=$(ratio "$(get "$t.on" frames_per_s)" "$(get "$t.off" frames_per_s)")
+    fi
+    th="-"
+    [ "$tf" = "-" ] || th="$tf ($4)"
+    printf '%-7s %-17s | %-12s | %-19s %-17s %-17s %7s | %7s %9s %9s\n' "$n" "$tpairs / $vp" "$th" \
+        "$sim" "$ren" "$off" "$r" "$c" "$pc" "$hp"
+}
+printf '%s\n' "$RANDOM_THESIS" | while IFS='|' read -r n p f s; do row "$n" "$p" "$f" "$s"; done
+echo "scaling (simulation only, heap on; not in the thesis):"
+for s in $SCALE; do
+    n=${s%%:*}
+    row "$n" "$((n * (n - 1) / 2))" - -
+done
+r100=$(get random100.on frames_per_s)
+printf 'goal: Random 100 at %s frames/s simulation only; vroc %s (%s of the goal).\n' \
+    "$(num $RANDOM_GOAL)" "$(num "$r100")" "$(ratio "$r100" "$RANDOM_GOAL")"
+l=$(get random20.on random_box); h=$(get random100.on random_box)
+echo "The random environment: 'random N' (mixed spheres, cubes and superquadrics 0.08 to 0.2 m,"
+echo "up to 2 m/s and 2 rad/s, elasticity 1), no force, time_step 0.1, max_linear 2,"
+echo "collision_dist 0.2 (2 subframes, as the thesis); random_box (X, X, 2) with X = 2 sqrt(N/20)"
+echo "(the same density for every N: random_box ${l:-?} at 20 ... ${h:-?} at 100), closed by 6"
+echo "static walls (each adds N pairs: vroc's pairs are N(N-1)/2 + 6N).  Runs x frames: 20..100:"
+echo "$R x $F heap on, $R3 x $F heap off and stereo;$(for s in $SCALE; do n=${s%%:*}; rf=${s#*:}; printf ' %s: %s x %s;' "$n" "${rf%%:*}" "${rf#*:}"; done)"
+echo "heap off not measured beyond 100."
+echo "Every measurement: a run stops after $BUDGET s, and no run starts after $MAXT s of runs"
+echo "(the scaling rows: 60 s and 50 s)."
+if [ -s "$TMP/cut" ]; then
+    echo "Over $SOFT s in all: these were cut to 1 run of at most 10 s: $(tr '\n' ' ' <"$TMP/cut")"
+fi
+if grep -q 'truncated=1' "$RAW"; then
+    echo "* a run stopped at the $BUDGET s budget: the figure covers the frames it did."
+fi
+
+# the collision scenes of scenes/ (issue 5): frames/s with collisions, heap on
+echo
+echo "Collision scenes: simulation only, heap on (frames/s, collisions and pair checks per frame)"
+rule
+printf '%-18s %14s %12s %14s\n' scene frames/s collisions pair-checks
+for id in ball-on-table newtons-cradle box-drop billiards; do
+    [ -f "scenes/$id.vroc" ] || continue
+    measure "$id.on" "scenes/$id.vroc" --frames "$F" --runs "$R" --min-time "$MT" --heap on
+    printf '%-18s %14s %12s %14s\n' "$id" "$(num "$(get "$id.on" frames_per_s)")" \
+        "$(get "$id.on" collisions_per_frame)" "$(get "$id.on" pair_checks_per_frame)"
+done
+
+for b in view closest; do
+    echo
+    echo "bench_$b"
+    rule
+    if [ -x "build/bench/bench_$b" ]; then
+        "build/bench/bench_$b" || echo "(bench_$b failed with status $?)"
+    else
+        echo "build/bench/bench_$b is missing: skipped"
+    fi
+done
+
+echo
+echo "raw bench_sim lines (fields: see bench/bench_sim.c)"
+rule
+cat "$RAW"
+for f in "$TMP"/*.err; do
+    [ -s "$f" ] || continue
+    echo "$(basename "$f" .err): $(head -n 3 "$f")"
+done
