@@ -11,21 +11,15 @@
  *                                             a convex body stays between its
  *                                             inscribed and circumscribed spheres)
  * with w_max = 3 |L| / I_min, which bounds how far vroc's rotation integrator turns
- * a body per second for any inertia tensor (see spin_bound).  The bound only grows with t, so the earliest time is found by bisection
- * from below: the time returned is never later than the true one.
+ * a body per second for any inertia tensor (see spin_bound).  The bound grows with
+ * t and is quadratic between a few breakpoints, so the earliest time is the root
+ * of a quadratic on the right piece, taken from below and checked: the time
+ * returned is never later than the true one.
  */
 #include "schedule.h"
 
 #include <math.h>
 #include <stdlib.h>
-
-/* Closing bound of one object over t seconds (0 when it does not move). */
-static double reach(const body *b, double t, double acc, double vmax, double wmax)
-{
-    double lin = fmin(v3_len(b->v) * t + 0.5 * acc * t * t, vmax * t);
-    double rot = fmin(b->shape.r_out - b->shape.r_in, wmax * b->shape.r_out * t);
-    return lin + rot;
-}
 
 /* A bound on how fast the body's points turn about its centre of mass, rad/s, as
  * vroc integrates rotation: each step is five rotations about principal axes by
@@ -37,39 +31,99 @@ static double spin_bound(const body *b)
     return imin > 0 ? 3 * v3_len(b->L) / imin : 0;
 }
 
+/* The closing bound of the pair's moving objects, a + b t + c t^2 on the piece of
+ * time around t (the bound is quadratic between the breakpoints where an object's
+ * speed bound reaches max_linear or its rotation allowance runs out). */
+typedef struct {
+    double s, acc, vmax, t_lin; /* centre: s t + acc t^2 / 2 until t_lin, then vmax t */
+    double rate, cap, t_rot;    /* surface: rate t until t_rot, then cap */
+} reach_terms;
+
+static reach_terms terms_of(const body *b, double acc, double vmax)
+{
+    reach_terms r;
+    r.s = v3_len(b->v);
+    r.acc = acc;
+    r.vmax = vmax;
+    if (r.s >= vmax) r.t_lin = 0;
+    else r.t_lin = acc > 0 ? 2 * (vmax - r.s) / acc : HUGE_VAL;
+    r.cap = b->shape.r_out - b->shape.r_in;
+    r.rate = spin_bound(b) * b->shape.r_out;
+    r.t_rot = r.rate > 0 ? r.cap / r.rate : 0;
+    return r;
+}
+
+static void add_piece(const reach_terms *r, double t, double *a, double *b, double *c)
+{
+    if (t < r->t_lin) {
+        *b += r->s;
+        *c += 0.5 * r->acc;
+    } else {
+        *b += r->vmax;
+    }
+    if (t < r->t_rot) *b += r->rate;
+    else *a += r->cap;
+}
+
+static double eval(const reach_terms *r, int n, double t)
+{
+    double f = 0;
+    for (int k = 0; k < n; k++) {
+        f += t < r[k].t_lin ? r[k].s * t + 0.5 * r[k].acc * t * t : r[k].vmax * t;
+        f += t < r[k].t_rot ? r[k].rate * t : r[k].cap;
+    }
+    return f;
+}
+
 double sched_predict(const world *w, const pair *p, double d)
 {
     if (d <= 0) return 0;
     const body *ob[2] = {w->bodies[p->a], w->bodies[p->b]};
     double acc = v3_len(world_accel(w)), vmax = w->set.max_linear;
-    double wmax[2];
-    int moving = 0;
-    for (int k = 0; k < 2; k++) {
-        wmax[k] = spin_bound(ob[k]);
-        if (ob[k]->state == STATE_DYNAMIC) moving++;
-    }
-    if (moving == 0) return HUGE_VAL;
+    reach_terms r[2];
+    int n = 0;
+    for (int k = 0; k < 2; k++)
+        if (ob[k]->state == STATE_DYNAMIC) r[n++] = terms_of(ob[k], acc, vmax);
+    if (n == 0) return HUGE_VAL;
     /* a margin for the rounding of the flight and of the distance */
     double target = d - 1e-9 * (1 + ob[0]->shape.r_out + ob[1]->shape.r_out);
     if (target <= 0) return 0;
-    double hi = 1e-3;
-    for (;;) {
-        double f = 0;
-        for (int k = 0; k < 2; k++)
-            if (ob[k]->state == STATE_DYNAMIC) f += reach(ob[k], hi, acc, vmax, wmax[k]);
-        if (f >= target) break;
-        if (hi > 1e9) return HUGE_VAL; /* not moving towards anything, in effect */
-        hi *= 4;
+    /* the breakpoints, in order; between two of them the bound is quadratic */
+    double bp[5];
+    int nb = 0;
+    for (int k = 0; k < n; k++) {
+        if (r[k].t_lin > 0 && r[k].t_lin < HUGE_VAL) bp[nb++] = r[k].t_lin;
+        if (r[k].t_rot > 0) bp[nb++] = r[k].t_rot;
     }
+    bp[nb++] = HUGE_VAL;
+    for (int i = 1; i < nb; i++)
+        for (int j = i; j > 0 && bp[j] < bp[j - 1]; j--) {
+            double x = bp[j];
+            bp[j] = bp[j - 1];
+            bp[j - 1] = x;
+        }
     double lo = 0;
-    for (int it = 0; it < 60 && hi - lo > 1e-12 * hi; it++) {
-        double mid = 0.5 * (lo + hi), f = 0;
-        for (int k = 0; k < 2; k++)
-            if (ob[k]->state == STATE_DYNAMIC) f += reach(ob[k], mid, acc, vmax, wmax[k]);
-        if (f >= target) hi = mid;
-        else lo = mid;
+    for (int i = 0; i < nb; lo = bp[i++]) {
+        double hi = bp[i];
+        if (hi <= lo) continue;
+        if (hi < HUGE_VAL && eval(r, n, hi) < target) continue;
+        double a = 0, b = 0, c = 0; /* the bound on [lo, hi): a + b t + c t^2 */
+        for (int k = 0; k < n; k++) add_piece(&r[k], lo, &a, &b, &c);
+        double cc = a - target, t;
+        if (c > 0) { /* c t^2 + b t + cc = 0, its root above lo, stably */
+            double disc = fmax(0, b * b - 4 * c * cc);
+            double q = -0.5 * (b + sqrt(disc));
+            t = fabs(q) > 0 ? cc / q : 0;
+        } else if (b > 0) {
+            t = -cc / b;
+        } else {
+            return HUGE_VAL; /* nothing moves closer */
+        }
+        t = fmax(lo, fmin(t, hi)) * (1 - 1e-12);
+        while (t > 0 && eval(r, n, t) >= target) t *= 1 - 1e-9; /* never late */
+        return t;
     }
-    return lo;
+    return HUGE_VAL;
 }
 
 /* ---- the indexed binary heap ---- */
