@@ -58,7 +58,6 @@ typedef struct body {
     int support;       /* index of the body this one rests on, or -1 */
     int slide;         /* the support it slides on (see sim.c), or -1 */
     long slide_pair;   /* the pair of that contact in world.pairs */
-    int step_hits;     /* collisions in the current internal step */
     vec3 slide_n;      /* that support's normal, towards this body */
 } body;
 

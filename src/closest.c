@@ -1032,10 +1032,11 @@ static void sat_estimate(const walk *w, closest_result *r)
 /* The result of a finished walk between two polyhedra (or a brute-force pair).  A
  * pair at distance 0 (within tolerance) is touching when some candidate axis of
  * sat_estimate separates the two, else penetrating. */
-static void finish_pair(const walk *w, int how, closest_result *r)
+static void finish_pair(const walk *w, int how, closest_result *r, bool depth)
 {
     if (how != W_DONE) {
-        sat_estimate(w, r);
+        if (depth) sat_estimate(w, r);
+        else r->distance = 0;
         return;
     }
     pair_geom g;
@@ -1049,6 +1050,11 @@ static void finish_pair(const walk *w, int how, closest_result *r)
         r->normal = v3_len2(g.n) > 0 ? g.n : v3_norm(v3_sub(g.p[0], g.p[1]));
         return;
     }
+    if (!depth) { /* touching or penetrating: which, does not matter */
+        r->distance = 0;
+        r->normal = g.n;
+        return;
+    }
     closest_result e;
     sat_estimate(w, &e);
     if (!(e.distance >= -w->eps)) {
@@ -1060,7 +1066,7 @@ static void finish_pair(const walk *w, int how, closest_result *r)
 }
 
 static void poly_poly(const closest_object *a, const closest_object *b, const closest_hull *ha,
-                      const closest_hull *hb, closest_cache *cache, closest_result *r)
+                      const closest_hull *hb, closest_cache *cache, closest_result *r, bool depth)
 {
     walk w;
     walk_init(&w, a, b, ha, hb);
@@ -1074,7 +1080,7 @@ static void poly_poly(const closest_object *a, const closest_object *b, const cl
     }
     bool restarted, brute;
     int how = walk_solve(&w, a, b, from_cache, &restarted, &brute);
-    finish_pair(&w, how, r);
+    finish_pair(&w, how, r, depth);
     if (brute) {
         /* the smallest pair is the answer only if its plane separates the two */
         vec3 n = r->normal;
@@ -1082,7 +1088,8 @@ static void poly_poly(const closest_object *a, const closest_object *b, const cl
         bool sep = r->distance > 0;
         for (int v = 0; v < ha->p->nv && sep; v++) sep = v3_dot(n, world(&w, 0, ha->p->v[v])) >= lo;
         for (int v = 0; v < hb->p->nv && sep; v++) sep = v3_dot(n, world(&w, 1, hb->p->v[v])) <= hi;
-        if (!sep) sat_estimate(&w, r);
+        if (!sep && depth) sat_estimate(&w, r);
+        else if (!sep) r->distance = 0;
     }
     set_status(r);
     r->steps = w.steps;
@@ -1216,7 +1223,8 @@ static void sphere_poly(const closest_object *p, const closest_object *s, const 
 
 /* ---- entry points ---- */
 
-closest_result closest_distance(closest_object a, closest_object b, closest_cache *cache)
+static closest_result distance_of(closest_object a, closest_object b, closest_cache *cache,
+                                  bool depth)
 {
     closest_result r;
     memset(&r, 0, sizeof r);
@@ -1256,11 +1264,16 @@ closest_result closest_distance(closest_object a, closest_object b, closest_cach
     } else if (sb) {
         sphere_poly(&a, &b, h[0], cache, &r);
     } else {
-        poly_poly(&a, &b, h[0], h[1], cache, &r);
+        poly_poly(&a, &b, h[0], h[1], cache, &r, depth);
     }
     closest_hull_free(own[0]);
     closest_hull_free(own[1]);
     return r;
+}
+
+closest_result closest_distance(closest_object a, closest_object b, closest_cache *cache)
+{
+    return distance_of(a, b, cache, true);
 }
 
 /* Canonical order of a pair: by name, then by address. */
@@ -1271,7 +1284,7 @@ static bool body_before(const body *a, const body *b)
     return (uintptr_t)a <= (uintptr_t)b;
 }
 
-closest_result closest_query(const body *a, const body *b, closest_cache *cache)
+static closest_result query_of(const body *a, const body *b, closest_cache *cache, bool depth)
 {
     closest_result r;
     if (!a || !b || !a->built || !b->built) {
@@ -1279,15 +1292,25 @@ closest_result closest_query(const body *a, const body *b, closest_cache *cache)
         return r;
     }
     closest_object oa = {&a->shape, a->x, a->q}, ob = {&b->shape, b->x, b->q};
-    if (body_before(a, b)) return closest_distance(oa, ob, cache);
+    if (body_before(a, b)) return distance_of(oa, ob, cache, depth);
     closest_cache c2, *cp = NULL;
     if (cache) {
         c2 = (closest_cache){cache->fb, cache->fa, cache->valid};
         cp = &c2;
     }
-    r = closest_distance(ob, oa, cp);
+    r = distance_of(ob, oa, cp, depth);
     if (r.status == CLOSEST_INVALID) return r;
     if (cache) *cache = (closest_cache){c2.fb, c2.fa, c2.valid};
     mirror(&r);
     return r;
+}
+
+closest_result closest_query(const body *a, const body *b, closest_cache *cache)
+{
+    return query_of(a, b, cache, true);
+}
+
+closest_result closest_query_apart(const body *a, const body *b, closest_cache *cache)
+{
+    return query_of(a, b, cache, false);
 }

@@ -101,6 +101,13 @@ void closest_hull_free(closest_hull *h);
  * x or q, gives status CLOSEST_INVALID, distance NAN, and leaves the cache alone. */
 closest_result closest_query(const body *a, const body *b, closest_cache *cache);
 
+/* closest_query for callers that need to know only whether the pair is apart, and
+ * how far: the status and, when separated, everything are the same as
+ * closest_query's; when touching or penetrating, distance is 0 and the points and
+ * normal are unspecified (no penetration estimate is made, which is most of the
+ * cost of an overlapping query). */
+closest_result closest_query_apart(const body *a, const body *b, closest_cache *cache);
+
 /* The same for two placed shapes, computed in the order given (so swapping a and b
  * mirrors the result up to the choice among equally close features).  A polyhedral
  * shape without closest data (shape.feat NULL) is handled by building it for the

@@ -221,25 +221,75 @@ static double angular_term(const body *b, vec3 r, vec3 n)
     return v3_dot(n, v3_cross(t, r));
 }
 
-contact contact_respond(body *a, body *b, vec3 p, vec3 n, double e)
+contact contact_respond(body *a, body *b, vec3 p, vec3 n, double e, int fixed)
 {
     contact c = {p, n, contact_closing_speed(a, b, p, n), 0};
     if (c.speed <= 0) return c;
     vec3 ra = v3_sub(p, body_com(a)), rb = v3_sub(p, body_com(b));
-    double k = a->inv_mass + b->inv_mass + angular_term(a, ra, n) + angular_term(b, rb, n);
+    bool move_a = !body_is_static(a) && !(fixed & 1), move_b = !body_is_static(b) && !(fixed & 2);
+    double k = (move_a ? a->inv_mass + angular_term(a, ra, n) : 0) +
+               (move_b ? b->inv_mass + angular_term(b, rb, n) : 0);
     if (!(k > 0)) return c;
     double j = (1 + e) * c.speed / k;
     vec3 J = v3_scale(n, j);
-    if (!body_is_static(a)) {
+    if (move_a) {
         a->v = v3_mad(a->v, J, a->inv_mass);
         a->L = v3_add(a->L, v3_cross(ra, J));
         body_update_w(a);
     }
-    if (!body_is_static(b)) {
+    if (move_b) {
         b->v = v3_mad(b->v, J, -b->inv_mass);
         b->L = v3_sub(b->L, v3_cross(rb, J));
         body_update_w(b);
     }
     c.impulse = j;
     return c;
+}
+
+/* The shortest rotation taking unit vector a onto unit vector b. */
+static quat rotation_between(vec3 a, vec3 b)
+{
+    vec3 axis = v3_cross(a, b);
+    double s = v3_len(axis), c = v3_dot(a, b);
+    if (s < 1e-15) {
+        if (c > 0) return q_identity();
+        vec3 p = fabs(a.x) < 0.6 ? v3(1, 0, 0) : v3(0, 1, 0);
+        return q_axis_angle(v3_norm(v3_cross(a, p)), M_PI);
+    }
+    return q_axis_angle(v3_scale(axis, 1 / s), atan2(s, c));
+}
+
+bool contact_settle_pose(const body *m, vec3 n, double max_angle, quat *q, double *height)
+{
+    const poly *h = m->shape.hull;
+    if (!h) return false;
+    vec3 com = m->shape.mass.com, down = q_unrotate(m->q, v3_neg(n));
+    double margin = 1e-3 * m->shape.r_out, best = cos(max_angle);
+    int pick = -1;
+    for (int f = 0; f < h->nf; f++) {
+        const poly_face *F = &h->f[f];
+        double c = v3_dot(F->n, down);
+        if (c <= best) continue;
+        /* stable: the centre of mass, dropped onto the face's plane, lies inside the
+         * face by margin */
+        vec3 p = v3_mad(com, F->n, F->d - v3_dot(F->n, com));
+        bool inside = true;
+        for (int k = 0; k < F->count && inside; k++) {
+            vec3 a = h->v[h->face_vert[F->first + k]];
+            vec3 b = h->v[h->face_vert[F->first + (k + 1) % F->count]];
+            vec3 e = v3_sub(b, a);
+            double l = v3_len(e);
+            if (l > 0 && v3_dot(v3_cross(e, v3_sub(p, a)), F->n) < margin * l) inside = false;
+        }
+        if (inside) {
+            best = c;
+            pick = f;
+        }
+    }
+    if (pick < 0) return false;
+    const poly_face *F = &h->f[pick];
+    /* turn the face's normal, in world axes, onto -n */
+    *q = q_normalize(q_mul(rotation_between(q_rotate(m->q, F->n), v3_neg(n)), m->q));
+    *height = F->d - v3_dot(F->n, com);
+    return true;
 }

@@ -29,6 +29,14 @@ vec3 contact_point(const body *a, const body *b, const closest_result *r, double
  * that holds the projection of m's centre of mass. */
 bool contact_stable(const body *m, vec3 n, double tol);
 
+/* The pose in which m, a polyhedron touching a support below it (n from the support
+ * to m), would come to lie on one of its faces: the face that m can stand on (its
+ * centre of mass over the face) whose outward normal is nearest -n, within
+ * max_angle radians.  Writes the orientation that turns that face flat onto the
+ * support, rotated the shortest way, and the height of m's centre of mass above the
+ * face's plane; false when no face qualifies (or m is a sphere). */
+bool contact_settle_pose(const body *m, vec3 n, double max_angle, quat *q, double *height);
+
 /* Velocity of the material point of b at world point p. */
 vec3 contact_point_velocity(const body *b, vec3 p);
 
@@ -36,8 +44,9 @@ vec3 contact_point_velocity(const body *b, vec3 p);
 double contact_closing_speed(const body *a, const body *b, vec3 p, vec3 n);
 
 /* Applies the impulse that answers the collision of a and b at p with normal n
- * (from b to a) and restitution e, when they approach.  Returns what was done
- * (impulse 0 when they do not approach). */
-contact contact_respond(body *a, body *b, vec3 p, vec3 n, double e);
+ * (from b to a) and restitution e, when they approach; fixed has bit 1 set to treat
+ * a as immovable (infinite mass), bit 2 for b.  Returns what was done (impulse 0
+ * when they do not approach). */
+contact contact_respond(body *a, body *b, vec3 p, vec3 n, double e, int fixed);
 
 #endif

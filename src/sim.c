@@ -10,12 +10,17 @@
  * tensor (Dullweber, Leimkuhler, McLachlan, J. Chem. Phys. 107, 1997).
  *
  * An internal step (thesis 3.4.2, steps 3 to 5): save every state, fly the whole
- * step, check the pairs.  If some pair touches or penetrates, each such pair is
- * bisected in time from the saved states to its first contact; the world goes back
- * to the saved states, flies to the earliest contact, answers it, and the rest of
- * the step starts over from there.  So collisions are answered in the order they
- * happen, simultaneous ones one after another, and the flight between them stays
- * exact.
+ * step, check the due pairs.  If some pair touches or penetrates, each such pair is
+ * bisected in time to its first contact; the world goes back to the earliest
+ * contact, answers it, and the rest of the step starts over from there.  So
+ * collisions are answered in the order they happen, simultaneous ones one after
+ * another.  Each object flies from its own saved state, which only a collision
+ * that changes it renews: going back in time leaves the others' flights, and
+ * their pairs' predictions, exact.
+ *
+ * Contact: a collision that leaves an object barely bouncing on a support below it
+ * puts it at rest, or sliding (settle); slow collisions under gravity part at the
+ * collision envelope's speed, and a stack passes slow blows down to its support.
  */
 #include "sim.h"
 
@@ -63,6 +68,15 @@ static void rotate_free(body *b, double h)
     b->q = q_normalize(q_mul(qp, q_conj(b->q_principal)));
 }
 
+/* True when b slides on a support turning about the support's normal only (as
+ * settling leaves it): then its flight keeps it so. */
+static bool spins_on_support(const body *b)
+{
+    if (b->slide < 0 || v3_len2(b->L) == 0) return false;
+    vec3 off = v3_mad(b->w, b->slide_n, -v3_dot(b->w, b->slide_n));
+    return v3_len2(off) <= 1e-24 * v3_len2(b->w);
+}
+
 void sim_flight(body *b, double h, vec3 a, double max_linear, double max_angular)
 {
     vec3 c0 = body_com(b);
@@ -73,7 +87,16 @@ void sim_flight(body *b, double h, vec3 a, double max_linear, double max_angular
     if (vl > max_linear) v = v3_scale(v, max_linear / vl);
     b->v = v;
 
-    if (v3_len2(b->L) != 0) {
+    if (spins_on_support(b)) {
+        /* lying on a face on the support it slides on: the contact holds the face
+         * flat, and the body turns about the normal only */
+        double omega = v3_dot(b->w, b->slide_n);
+        if (fabs(omega) > max_angular) omega = copysign(max_angular, omega);
+        b->q = q_normalize(q_mul(q_axis_angle(b->slide_n, omega * h), b->q));
+        b->rot_given = false;
+        b->L = m3_mulv(body_inertia_world(b), v3_scale(b->slide_n, omega));
+        b->w = v3_scale(b->slide_n, omega);
+    } else if (v3_len2(b->L) != 0) {
         rotate_free(b, h);
         b->rot_given = false;
         body_update_w(b);
@@ -122,6 +145,15 @@ static bool pair_moves(const world *w, const pair *p)
 static closest_result query(world *w, pair *p, const body *a, const body *b)
 {
     closest_result r = closest_query(a, b, &p->cache);
+    w->st.pair_checks++;
+    if (r.restarted) w->st.restarts++;
+    return r;
+}
+
+/* query for a check that needs only whether the pair is apart, and how far */
+static closest_result query_apart(world *w, pair *p, const body *a, const body *b)
+{
+    closest_result r = closest_query_apart(a, b, &p->cache);
     w->st.pair_checks++;
     if (r.restarted) w->st.restarts++;
     return r;
@@ -233,57 +265,61 @@ static void rest_still_objects(world *w)
 
 /* ------------------------------------------------------------ collisions in time */
 
-static int save_states(world *w)
+/* Within an internal step each object flies from its own starting state: snap[i]
+ * at time snap_t[i], the start of the step, or the instant of the last collision
+ * that changed it.  An object's place at time t is always one flight from there,
+ * so a collision that sends the world back to an earlier instant leaves every
+ * other object's flight, and so its pairs' predictions, exactly as they were. */
+static int save_states(world *w, double t)
 {
     if (w->n > w->capsnap) {
         body *ns = realloc(w->snap, (size_t)w->n * sizeof *ns);
-        if (!ns) return -1;
-        w->snap = ns;
+        if (ns) w->snap = ns;
+        body *np = realloc(w->pre, (size_t)w->n * sizeof *np);
+        if (np) w->pre = np;
+        double *nt = realloc(w->snap_t, (size_t)w->n * sizeof *nt);
+        if (nt) w->snap_t = nt;
+        if (!ns || !np || !nt) return -1;
         w->capsnap = w->n;
     }
-    for (int i = 0; i < w->n; i++) w->snap[i] = *w->bodies[i];
+    for (int i = 0; i < w->n; i++) {
+        w->snap[i] = *w->bodies[i];
+        w->snap_t[i] = t;
+    }
     return 0;
 }
 
-static void restore_states(world *w)
-{
-    for (int i = 0; i < w->n; i++) *w->bodies[i] = w->snap[i];
-}
-
-static void fly_all(world *w, double h)
-{
-    const settings *s = &w->set;
-    for (int i = 0; i < w->n; i++) {
-        body *b = w->bodies[i];
-        if (b->state == STATE_DYNAMIC)
-            sim_flight(b, h, accel_of(w, b), s->max_linear, s->max_angular);
-    }
-}
-
-/* A body's saved state flown for t seconds (shallow copy: shares the shape). */
+/* Body i's state at time t (a shallow copy: shares the shape). */
 static body flown(const world *w, int i, double t)
 {
     body b = w->snap[i];
-    if (b.state == STATE_DYNAMIC && t > 0)
-        sim_flight(&b, t, accel_of(w, &b), w->set.max_linear, w->set.max_angular);
+    double dt = t - w->snap_t[i];
+    if (b.state == STATE_DYNAMIC && dt > 0)
+        sim_flight(&b, dt, accel_of(w, &b), w->set.max_linear, w->set.max_angular);
     return b;
 }
 
-/* First contact of pair p within [0, span] from the saved states, knowing that it
- * touches or penetrates at span: the latest time found at which it is apart. */
-static double time_of_impact(world *w, pair *p, double span)
+/* Every moving object to time t. */
+static void fly_all(world *w, double t)
 {
-    double lo = 0, hi = span;
+    for (int i = 0; i < w->n; i++)
+        if (w->snap[i].state == STATE_DYNAMIC) *w->bodies[i] = flown(w, i, t);
+}
+
+/* First contact of pair p within [lo, hi] (absolute times), knowing that it
+ * touches or penetrates at hi: the latest time found at which it is apart. */
+static double time_of_impact(world *w, pair *p, double lo, double hi)
+{
     closest_cache cache = p->cache;
-    body a = flown(w, p->a, 0), b = flown(w, p->b, 0);
-    closest_result r = closest_query(&a, &b, &cache);
+    body a = flown(w, p->a, lo), b = flown(w, p->b, lo);
+    closest_result r = closest_query_apart(&a, &b, &cache);
     w->st.pair_checks++;
-    if (r.status != CLOSEST_SEPARATED) return 0; /* touching already */
+    if (r.status != CLOSEST_SEPARATED) return lo; /* touching already */
     while (hi - lo > SIM_TOI_TIME) {
         double mid = 0.5 * (lo + hi);
         a = flown(w, p->a, mid);
         b = flown(w, p->b, mid);
-        r = closest_query(&a, &b, &cache);
+        r = closest_query_apart(&a, &b, &cache);
         w->st.pair_checks++;
         if (r.status == CLOSEST_SEPARATED) {
             lo = mid;
@@ -308,6 +344,107 @@ static void separate(body *a, body *b, vec3 n, double gap, double sep)
     b->x = v3_mad(b->x, n, -need * ib / (ia + ib));
 }
 
+/* The contact state of body m on support s (index si, normal n from s to m, pair
+ * p): it rests when still and its support is, else it slides. */
+static void stand(world *w, body *m, const body *s, int si, vec3 n, const pair *p)
+{
+    double speed = v3_len(m->v) + v3_len(m->w) * m->shape.r_out;
+    if (speed < SIM_REST_SPEED && s->state != STATE_DYNAMIC) {
+        come_to_rest(m, si);
+    } else {
+        m->slide = si;
+        m->slide_n = n;
+        m->slide_pair = p - w->pairs;
+        double vn = v3_dot(m->v, n);
+        if (vn > 0) m->v = v3_mad(m->v, n, -vn);
+    }
+}
+
+/* The contact state of body mi on support si after a collision that left it barely
+ * moving away from the support (normal n from the support to it, support_pt a point
+ * of the support's surface, pair p, g the global acceleration's size).
+ *
+ * A frictionless body that rocks on a face, an edge or a curved side with
+ * restitution below 1 ends, after ever shorter and ever smaller rocks, lying on a
+ * face it can stand on, with what the contact forces cannot change: its velocity
+ * along the support and its angular momentum about the normal.  When the energy of
+ * the rocking (the motion along n, the rotation beyond that spin, and the height
+ * above the settled pose) could not tip it by more than SIM_SETTLE_ANGLE, that end
+ * is taken at once, instead of thousands of micro-collisions.  A body standing on
+ * the face already but rocking harder stands as it is.
+ *
+ * Returns SETTLE_NONE (nothing changed), SETTLE_STANDS (standing where it is: it
+ * still needs setting apart) or SETTLE_LAID (turned onto its face and placed). */
+enum { SETTLE_NONE, SETTLE_STANDS, SETTLE_LAID };
+
+static int settle(world *w, int mi, int si, vec3 n, vec3 support_pt, pair *p, double g, double e)
+{
+    body *m = w->bodies[mi];
+    const body *s = w->bodies[si];
+    double scale = m->shape.r_out + s->shape.r_out;
+    bool stable = contact_stable(m, n, 1e-6 * scale);
+    quat q = m->q;
+    double height = 0;
+    if (!stable && !contact_settle_pose(m, n, SIM_SETTLE_ANGLE, &q, &height)) return SETTLE_NONE;
+    vec3 c = body_com(m);
+    double vn = v3_dot(m->v, n), ln = v3_dot(m->L, n);
+    double spin = ln * ln / v3_dot(n, m3_mulv(body_inertia_world(m), n));
+    double rock = 0.5 * (v3_dot(m->w, m->L) - spin) * m->inv_mass + 0.5 * vn * vn;
+    double above = stable ? 0 : v3_dot(v3_sub(c, support_pt), n) - height;
+    double up = -v3_dot(v3_norm(world_accel(w)), n);
+    bool calm = e < 1 && rock + g * up * above <= g * up * m->shape.r_out * (1 - cos(SIM_SETTLE_ANGLE));
+    if (!calm && !stable) return SETTLE_NONE;
+    if (!stable) {
+        body keep = *m;
+        c = v3_mad(c, n, height - v3_dot(v3_sub(c, support_pt), n) + 2 * SIM_SEPARATION);
+        m->q = q;
+        m->rot_given = false;
+        m->x = v3_sub(c, q_rotate(q, m->shape.mass.com));
+        closest_result r = query(w, p, w->bodies[p->a], w->bodies[p->b]);
+        vec3 rn = p->a == mi ? r.normal : v3_neg(r.normal);
+        bool ok = r.status == CLOSEST_SEPARATED && r.distance < 4 * SIM_SEPARATION &&
+                  v3_dot(rn, n) > 1 - 1e-6 && contact_stable(m, n, 1e-6 * scale);
+        for (long j = w->obj_first[mi]; ok && j < w->obj_first[mi + 1]; j++) {
+            pair *o = &w->pairs[w->obj_pairs[j]];
+            if (o == p) continue;
+            closest_result ro = query(w, o, w->bodies[o->a], w->bodies[o->b]);
+            if (ro.status != CLOSEST_SEPARATED || ro.distance < SIM_SEPARATION) ok = false;
+        }
+        if (!ok) {
+            *m = keep;
+            return SETTLE_NONE;
+        }
+    }
+    if (calm) {
+        m->v = v3_mad(m->v, n, -v3_dot(m->v, n));
+        /* spin about n only, with the angular momentum about n it had */
+        mat3 I = body_inertia_world(m);
+        double omega = ln / v3_dot(n, m3_mulv(I, n));
+        m->L = m3_mulv(I, v3_scale(n, omega));
+        m->rot_given = false;
+        body_update_w(m);
+    }
+    stand(w, m, s, si, n, p);
+    return stable ? SETTLE_STANDS : SETTLE_LAID;
+}
+
+/* The acceleration of body b, zero when it does not move. */
+
+
+
+static vec3 still_accel(const world *w, const body *b)
+{
+    return b->state == STATE_DYNAMIC ? accel_of(w, b) : v3(0, 0, 0);
+}
+
+/* True when body l, pressed from above along -n, is held by what it stands on: it
+ * rests, or slides on a support whose normal is n. */
+static bool held(const body *l, vec3 n)
+{
+    return l->state == STATE_RESTING ||
+           (l->state == STATE_DYNAMIC && l->slide >= 0 && v3_dot(l->slide_n, n) > 0.99);
+}
+
 /* Answers the collision of pair p now: the impulse, the separation, the log; and
  * the thesis's contact state for an object that barely bounces off a support below
  * it. */
@@ -319,13 +456,30 @@ static void collide(world *w, pair *p)
     double scale = a->shape.r_out + b->shape.r_out;
     vec3 pt = contact_point(a, b, &r, 1e-6 * scale + fmax(0, -r.distance));
     double e = fmin(a->elasticity, b->elasticity);
+    vec3 g = world_accel(w);
+    vec3 up = v3_len2(g) > 0 ? v3_neg(v3_norm(g)) : v3(0, 0, 0);
+    /* a slow collision under gravity (the collision envelope of Mirtich and
+     * Canny): the pair leaves at least fast enough to rise SIM_HOP against the
+     * force that presses them together, or against gravity, so that an object
+     * pivoting, rocking or turning against another collides every few
+     * milliseconds, not every few microseconds */
+    double press = v3_dot(v3_sub(still_accel(w, b), still_accel(w, a)), r.normal);
+    double cs = contact_closing_speed(a, b, pt, r.normal);
+    double leave = sqrt(2 * fmax(press, v3_len(g)) * SIM_HOP);
+    bool slow = cs > 0 && cs < SIM_REST_SPEED;
+    if (slow && e * cs < leave) e = leave / cs;
+    /* in a slow contact of a stack, the object underneath passes the impulse on to
+     * what holds it: it stays as it is (shock propagation) */
+    int fixed = 0;
+    if (slow && press > 0 && v3_dot(r.normal, up) > 0.7 && held(b, r.normal)) fixed = 2;
+    if (slow && press > 0 && v3_dot(r.normal, up) < -0.7 && held(a, v3_neg(r.normal))) fixed = 1;
     /* a resting object hit by a moving one takes part as a dynamic one */
-    if (a->state == STATE_RESTING && b->state == STATE_DYNAMIC) wake(w, p->a);
-    if (b->state == STATE_RESTING && a->state == STATE_DYNAMIC) wake(w, p->b);
+    if (a->state == STATE_RESTING && b->state == STATE_DYNAMIC && fixed != 1) wake(w, p->a);
+    if (b->state == STATE_RESTING && a->state == STATE_DYNAMIC && fixed != 2) wake(w, p->b);
     /* their motion changes: every pair of theirs is due again */
     sched_object_due(w, p->a, w->time);
     sched_object_due(w, p->b, w->time);
-    contact c = contact_respond(a, b, pt, r.normal, e);
+    contact c = contact_respond(a, b, pt, r.normal, e, fixed);
     if (c.impulse > 0) {
         w->st.collisions++;
         log_event(w, a, b, c.point, c.normal, c.impulse, c.speed);
@@ -334,13 +488,12 @@ static void collide(world *w, pair *p)
      * on it, or slides on it when it still moves along it */
     /* a pair that touches, or that touched without approaching (a glancing or
      * rotating contact), is set apart, so that the step goes on */
+    if (getenv("VROC_DEBUG")) fprintf(stderr, "COL t=%.6f %s %s cs=%.5f n=(%.3f %.3f %.3f) e=%.3f fixed=%d sta=%d stb=%d sla=%d slb=%d wa=(%.3f %.3f %.3f) wb=(%.3f %.3f %.3f)\n", w->time, a->name, b->name, c.speed, r.normal.x, r.normal.y, r.normal.z, e, fixed, a->state, b->state, a->slide, b->slide, a->w.x, a->w.y, a->w.z, b->w.x,b->w.y,b->w.z);
     bool apart = r.distance <= 0 || c.impulse == 0;
-    vec3 g = world_accel(w);
     if (v3_len2(g) == 0) {
         if (apart) separate(a, b, r.normal, r.distance, SIM_SEPARATION);
         return;
     }
-    vec3 up = v3_neg(v3_norm(g));
     bool settled = false;
     for (int k = 0; k < 2; k++) {
         body *m = k == 0 ? a : b, *s = k == 0 ? b : a;
@@ -350,29 +503,16 @@ static void collide(world *w, pair *p)
         if (m->state != STATE_DYNAMIC || (s->state == STATE_DYNAMIC && s->slide < 0)) continue;
         double vn = v3_dot(m->v, n);
         if (v3_dot(n, up) < 0.7 || vn > SIM_REST_SPEED) continue;
-        if (!contact_stable(m, n, 1e-6 * scale)) continue;
-        double speed = v3_len(m->v) + v3_len(m->w) * m->shape.r_out;
-        if (speed < SIM_REST_SPEED && s->state != STATE_DYNAMIC) {
-            come_to_rest(m, si);
-        } else {
-            m->slide = si;
-            m->slide_n = n;
-            m->slide_pair = p - w->pairs;
-            if (vn > 0) m->v = v3_mad(m->v, n, -vn);
-        }
-        settled = true;
+        int how = settle(w, k == 0 ? p->a : p->b, si, n, k == 0 ? r.pb : r.pa, p, v3_len(g),
+                         fmin(a->elasticity, b->elasticity));
+        if (how == SETTLE_LAID) return; /* placed apart already */
+        if (how == SETTLE_STANDS) settled = true;
     }
     /* an object that barely moves against a support below it without standing on
      * it (rocking on an edge or a corner), and keeps colliding in this step, is set
      * a hop apart, so that gravity takes milliseconds, not microseconds, to bring
      * it back: the micro-collisions that turn it over stay few */
-    double sep = SIM_SEPARATION;
-    a->step_hits++;
-    b->step_hits++;
-    if (!settled && c.speed < SIM_REST_SPEED && fabs(v3_dot(r.normal, up)) > 0.7 &&
-        (a->step_hits > SIM_HOP_AFTER || b->step_hits > SIM_HOP_AFTER))
-        sep = SIM_HOP;
-    if (apart || settled || sep > SIM_SEPARATION) separate(a, b, r.normal, r.distance, sep);
+    if (apart || settled) separate(a, b, r.normal, r.distance, SIM_SEPARATION);
 }
 
 /* Sliding objects leave their support when they lift off, pass its edge, stop
@@ -438,26 +578,24 @@ static void put_back(world *w, long n)
 /* One internal step of h seconds (thesis 3.4.2, steps 3 to 5). */
 static int internal_step(world *w, double h)
 {
-    double left = h, t0 = w->time, t_end = t0 + h;
-    if (due_room(w, w->npairs) != 0) return -1;
-    for (int i = 0; i < w->n; i++) w->bodies[i]->step_hits = 0;
-    for (int n = 0; left > 0; n++) {
-        if (save_states(w) != 0) return -1;
-        fly_all(w, left);
+    double now = w->time, t_end = now + h;
+    if (due_room(w, w->npairs) != 0 || save_states(w, now) != 0) return -1;
+    for (int n = 0;; n++) {
+        fly_all(w, t_end);
         long ndue = take_due(w, t_end);
         pair *first = NULL;
-        double when = left;
+        double when = t_end;
         for (long k = 0; k < ndue; k++) {
             pair *p = &w->pairs[w->due[k]];
             w->due_next[k] = HUGE_VAL;
             if (!pair_moves(w, p)) continue;
-            closest_result r = query(w, p, w->bodies[p->a], w->bodies[p->b]);
+            closest_result r = query_apart(w, p, w->bodies[p->a], w->bodies[p->b]);
             if (r.status != CLOSEST_PENETRATING) {
                 w->due_next[k] = t_end + sched_predict(w, p, r.distance);
                 continue;
             }
-            double t = time_of_impact(w, p, left);
-            w->due_next[k] = t0 + (h - left) + t; /* checked again once answered */
+            double t = time_of_impact(w, p, now, t_end);
+            w->due_next[k] = t; /* checked again once answered */
             /* the earliest; among equals the first pair, whatever order the
              * schedule gave them in, so that the heap changes nothing */
             if (!first || t < when || (t == when && p < first)) {
@@ -465,21 +603,19 @@ static int internal_step(world *w, double h)
                 first = p;
             }
         }
-        /* the world goes back to answer a collision: what was predicted from the
-         * states about to be dropped no longer holds (the speed limits make a
-         * flight depend on where it is cut), so those pairs are due again then */
-        if (first) {
-            double tc = t0 + (h - left) + when;
-            for (long k = 0; k < ndue; k++) w->due_next[k] = fmin(w->due_next[k], tc);
-        }
         put_back(w, ndue);
         if (!first || n >= SIM_MAX_COLLISIONS_PER_STEP) break;
-        restore_states(w);
+        /* back to the collision; what it changes flies on from there */
         fly_all(w, when);
-        left -= when;
-        w->time = t0 + (h - left);
+        for (int i = 0; i < w->n; i++) w->pre[i] = *w->bodies[i];
+        now = w->time = when;
         collide(w, first);
         wake_unsupported(w);
+        for (int i = 0; i < w->n; i++) {
+            if (memcmp(&w->pre[i], w->bodies[i], sizeof(body)) == 0) continue;
+            w->snap[i] = *w->bodies[i];
+            w->snap_t[i] = when;
+        }
     }
     w->time = t_end;
     check_slides(w);

@@ -25,11 +25,11 @@
 #define SIM_TOI_TIME 1e-10
 /* After a collision the pair is set apart to at least this distance (m). */
 #define SIM_SEPARATION 1e-7
-/* An object that collides slowly (below SIM_REST_SPEED) with a support under it but
- * cannot stand on it there, more than SIM_HOP_AFTER times in one internal step, is
- * set SIM_HOP apart (m) from it. */
+/* A pair that collides slowly while a force presses them together (gravity, for
+ * an object on a support) leaves at least as fast as it must to rise this far (m)
+ * against that force: the collision envelope, which keeps an object that pivots or
+ * rocks on a support from colliding every few microseconds. */
 #define SIM_HOP 1e-4
-#define SIM_HOP_AFTER 16
 /* Below this speed (m/s: |v| + |w| times the outer radius) an object on a support
  * underneath, against the global force, comes to rest (the thesis's contact state):
  * at once when it collides with the support, or at the end of a frame when it
@@ -37,6 +37,13 @@
  * slides on it: the part of the force that presses it onto the support is taken
  * away while it stays there. */
 #define SIM_REST_SPEED 0.05
+/* Settling (the limit of rocking): an object that hits a support under it slower
+ * than SIM_SETTLE_SPEED (m/s), its rocking (angular speed about horizontal axes
+ * times the outer radius) slower too, and cannot stand on it there, is laid on the
+ * face it can stand on nearest to the support, if that face is within
+ * SIM_SETTLE_ANGLE (radians) and nothing is in the way. */
+#define SIM_SETTLE_SPEED 0.1
+#define SIM_SETTLE_ANGLE 0.35
 /* Collisions one internal step may answer before the step gives up and lets the
  * objects through (a guard against endless micro-collisions; counted in stats). */
 #define SIM_MAX_COLLISIONS_PER_STEP 1000

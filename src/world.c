@@ -60,6 +60,8 @@ void world_free(world *w)
     if (w->events) fclose(w->events);
     free(w->pairs);
     free(w->snap);
+    free(w->snap_t);
+    free(w->pre);
     free(w->heap);
     free(w->obj_first);
     free(w->obj_pairs);
@@ -70,7 +72,8 @@ void world_free(world *w)
     w->due_next = NULL;
     w->capdue = 0;
     w->pairs = NULL;
-    w->snap = NULL;
+    w->snap = w->pre = NULL;
+    w->snap_t = NULL;
     w->npairs = w->cappairs = 0;
     w->capsnap = 0;
     w->bodies = NULL;

@@ -105,7 +105,9 @@ typedef struct world {
     long *due;            /* scratch: the pairs checked in a step, their new times */
     double *due_next;
     long capdue;
-    body *snap;           /* scratch: states saved during an internal step */
+    body *snap;           /* scratch: each object's state at snap_t, during an internal */
+    double *snap_t;       /*   step: where its flight starts (sim.c) */
+    body *pre;            /* scratch: the states just before a collision is answered */
     int capsnap;
 } world;
 
