@@ -77,8 +77,13 @@ static double eval(const reach_terms *r, int n, double t)
 
 double sched_predict(const world *w, const pair *p, double d)
 {
+    return sched_predict_bodies(w, w->bodies[p->a], w->bodies[p->b], d);
+}
+
+double sched_predict_bodies(const world *w, const body *a, const body *b, double d)
+{
     if (d <= 0) return 0;
-    const body *ob[2] = {w->bodies[p->a], w->bodies[p->b]};
+    const body *ob[2] = {a, b};
     double acc = v3_len(world_accel(w)), vmax = w->set.max_linear;
     reach_terms r[2];
     int n = 0;

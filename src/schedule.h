@@ -17,6 +17,9 @@
  * collide; 0 when d <= 0, HUGE_VAL when neither object moves. */
 double sched_predict(const world *w, const pair *p, double d);
 
+/* The same for objects a and b in the states given (not necessarily the world's). */
+double sched_predict_bodies(const world *w, const body *a, const body *b, double d);
+
 /* Builds the heap over every pair, all due at time t, and the lists of each
  * object's pairs.  Returns 0, or -1 when out of memory. */
 int sched_build(world *w, double t);

@@ -126,7 +126,7 @@ int sim_update_pairs(world *w)
     for (int i = 0; i < w->n; i++) {
         for (int j = i + 1; j < w->n; j++) {
             if (body_is_static(w->bodies[i]) && body_is_static(w->bodies[j])) continue;
-            w->pairs[k++] = (pair){i, j, {{CLOSEST_NONE, 0}, {CLOSEST_NONE, 0}, false}, 0, -1};
+            w->pairs[k++] = (pair){i, j, {{CLOSEST_NONE, 0}, {CLOSEST_NONE, 0}, false}, 0, -1, 0, -1, -1};
         }
     }
     w->npairs = k;
@@ -279,12 +279,20 @@ static int save_states(world *w, double t)
         if (np) w->pre = np;
         double *nt = realloc(w->snap_t, (size_t)w->n * sizeof *nt);
         if (nt) w->snap_t = nt;
-        if (!ns || !np || !nt) return -1;
+        long *ni = realloc(w->snap_id, (size_t)w->n * sizeof *ni);
+        if (ni) w->snap_id = ni;
+        body *ne = realloc(w->end, (size_t)w->n * sizeof *ne);
+        if (ne) w->end = ne;
+        long *nei = realloc(w->end_id, (size_t)w->n * sizeof *nei);
+        if (nei) w->end_id = nei;
+        if (!ns || !np || !nt || !ni || !ne || !nei) return -1;
         w->capsnap = w->n;
     }
     for (int i = 0; i < w->n; i++) {
         w->snap[i] = *w->bodies[i];
         w->snap_t[i] = t;
+        w->snap_id[i] = w->flight_count++;
+        w->end_id[i] = -1;
     }
     return 0;
 }
@@ -306,8 +314,26 @@ static void fly_all(world *w, double t)
         if (w->snap[i].state == STATE_DYNAMIC) *w->bodies[i] = flown(w, i, t);
 }
 
+/* Every moving object to the end of the step, t_end: an object whose flight did
+ * not change since it was last flown there is where it was then. */
+static void fly_to_end(world *w, double t_end)
+{
+    for (int i = 0; i < w->n; i++) {
+        if (w->snap[i].state != STATE_DYNAMIC) continue;
+        if (w->end_id[i] != w->snap_id[i]) {
+            w->end[i] = flown(w, i, t_end);
+            w->end_id[i] = w->snap_id[i];
+        }
+        *w->bodies[i] = w->end[i];
+    }
+}
+
 /* First contact of pair p within [lo, hi] (absolute times), knowing that it
- * touches or penetrates at hi: the latest time found at which it is apart. */
+ * touches or penetrates at hi: the latest time found at which it is apart, less
+ * than SIM_SEPARATION / 2 apart or within SIM_TOI_TIME of a time it is not.  Each
+ * step tries the time the closest points would meet at their present closing speed
+ * (a Newton step, just short), never earlier than the schedule's bound allows a
+ * contact; after a step that overshoots, it halves the bracket instead. */
 static double time_of_impact(world *w, pair *p, double lo, double hi)
 {
     closest_cache cache = p->cache;
@@ -315,17 +341,25 @@ static double time_of_impact(world *w, pair *p, double lo, double hi)
     closest_result r = closest_query_apart(&a, &b, &cache);
     w->st.pair_checks++;
     if (r.status != CLOSEST_SEPARATED) return lo; /* touching already */
-    while (hi - lo > SIM_TOI_TIME) {
-        double mid = 0.5 * (lo + hi);
-        a = flown(w, p->a, mid);
-        b = flown(w, p->b, mid);
-        r = closest_query_apart(&a, &b, &cache);
+    bool overshot = false;
+    while (hi - lo > SIM_TOI_TIME && r.distance >= 0.5 * SIM_SEPARATION) {
+        double safe = lo + sched_predict_bodies(w, &a, &b, r.distance);
+        double s = contact_closing_speed(&a, &b, v3_scale(v3_add(r.pa, r.pb), 0.5), r.normal);
+        double t = s > 0 && !overshot ? lo + 0.98 * r.distance / s : 0.5 * (lo + hi);
+        t = fmax(t, safe);
+        if (!(t < hi)) t = 0.5 * (fmax(lo, fmin(safe, hi)) + hi);
+        if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
+        body ta = flown(w, p->a, t), tb = flown(w, p->b, t);
+        closest_result rt = closest_query_apart(&ta, &tb, &cache);
         w->st.pair_checks++;
-        if (r.status == CLOSEST_SEPARATED) {
-            lo = mid;
-            if (r.distance < 0.5 * SIM_SEPARATION) break;
+        overshot = rt.status != CLOSEST_SEPARATED;
+        if (overshot) {
+            hi = t;
         } else {
-            hi = mid;
+            lo = t;
+            a = ta;
+            b = tb;
+            r = rt;
         }
     }
     return lo;
@@ -528,12 +562,14 @@ static void check_slides(world *w)
         }
         pair *p = &w->pairs[m->slide_pair];
         const body *s = w->bodies[m->slide];
-        closest_result r = query(w, p, w->bodies[p->a], w->bodies[p->b]);
+        closest_result r = query_apart(w, p, w->bodies[p->a], w->bodies[p->b]);
         vec3 n = p->a == i ? r.normal : v3_neg(r.normal);
         double scale = m->shape.r_out + s->shape.r_out;
+        /* turning about the normal only (or not at all), it stands as it stood */
+        bool turned = v3_len2(m->L) != 0 && !spins_on_support(m);
         if (r.status != CLOSEST_SEPARATED || r.distance > 100 * SIM_SEPARATION ||
             v3_dot(n, m->slide_n) < 1 - 1e-6 || v3_dot(m->v, n) > SIM_REST_SPEED ||
-            !contact_stable(m, n, 1e-6 * scale))
+            (turned && !contact_stable(m, n, 1e-6 * scale)))
             m->slide = -1;
     }
 }
@@ -575,13 +611,20 @@ static void put_back(world *w, long n)
     for (long k = 0; k < n; k++) sched_set(w, w->due[k], w->due_next[k]);
 }
 
+/* The gap between the spheres about a's and b's centres of mass that hold them: no
+ * more than their distance. */
+static double bound_gap(const body *a, const body *b)
+{
+    return v3_len(v3_sub(body_com(a), body_com(b))) - a->shape.r_out - b->shape.r_out;
+}
+
 /* One internal step of h seconds (thesis 3.4.2, steps 3 to 5). */
 static int internal_step(world *w, double h)
 {
     double now = w->time, t_end = now + h;
     if (due_room(w, w->npairs) != 0 || save_states(w, now) != 0) return -1;
     for (int n = 0;; n++) {
-        fly_all(w, t_end);
+        fly_to_end(w, t_end);
         long ndue = take_due(w, t_end);
         pair *first = NULL;
         double when = t_end;
@@ -589,12 +632,28 @@ static int internal_step(world *w, double h)
             pair *p = &w->pairs[w->due[k]];
             w->due_next[k] = HUGE_VAL;
             if (!pair_moves(w, p)) continue;
+            /* far apart: the bounding spheres' gap bounds the distance from below,
+             * and is enough for a prediction beyond the frame */
+            double gap = bound_gap(w->bodies[p->a], w->bodies[p->b]);
+            if (gap > 0) {
+                double ahead = sched_predict(w, p, gap);
+                if (ahead >= w->set.time_step) {
+                    w->due_next[k] = t_end + ahead;
+                    continue;
+                }
+            }
             closest_result r = query_apart(w, p, w->bodies[p->a], w->bodies[p->b]);
             if (r.status != CLOSEST_PENETRATING) {
                 w->due_next[k] = t_end + sched_predict(w, p, r.distance);
                 continue;
             }
-            double t = time_of_impact(w, p, now, t_end);
+            /* the same flights give the same first contact */
+            if (p->toi_a != w->snap_id[p->a] || p->toi_b != w->snap_id[p->b]) {
+                p->toi = time_of_impact(w, p, now, t_end);
+                p->toi_a = w->snap_id[p->a];
+                p->toi_b = w->snap_id[p->b];
+            }
+            double t = p->toi;
             w->due_next[k] = t; /* checked again once answered */
             /* the earliest; among equals the first pair, whatever order the
              * schedule gave them in, so that the heap changes nothing */
@@ -615,6 +674,7 @@ static int internal_step(world *w, double h)
             if (memcmp(&w->pre[i], w->bodies[i], sizeof(body)) == 0) continue;
             w->snap[i] = *w->bodies[i];
             w->snap_t[i] = when;
+            w->snap_id[i] = w->flight_count++;
         }
     }
     w->time = t_end;

@@ -61,7 +61,10 @@ void world_free(world *w)
     free(w->pairs);
     free(w->snap);
     free(w->snap_t);
+    free(w->snap_id);
     free(w->pre);
+    free(w->end);
+    free(w->end_id);
     free(w->heap);
     free(w->obj_first);
     free(w->obj_pairs);
@@ -72,8 +75,10 @@ void world_free(world *w)
     w->due_next = NULL;
     w->capdue = 0;
     w->pairs = NULL;
-    w->snap = w->pre = NULL;
+    w->snap = w->pre = w->end = NULL;
+    w->end_id = NULL;
     w->snap_t = NULL;
+    w->snap_id = NULL;
     w->npairs = w->cappairs = 0;
     w->capsnap = 0;
     w->bodies = NULL;

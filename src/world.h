@@ -78,6 +78,8 @@ typedef struct {
     closest_cache cache;  /* closest features of the last query */
     double next;          /* earliest time the pair could collide (the schedule) */
     long heap;            /* its place in the schedule's heap */
+    double toi;           /* its first contact found in this internal step, valid */
+    long toi_a, toi_b;    /*   while its objects fly from flights numbered so (sim.c) */
 } pair;
 
 typedef struct world {
@@ -106,8 +108,12 @@ typedef struct world {
     double *due_next;
     long capdue;
     body *snap;           /* scratch: each object's state at snap_t, during an internal */
-    double *snap_t;       /*   step: where its flight starts (sim.c) */
+    double *snap_t;       /*   step: where its flight starts (sim.c); snap_id numbers */
+    long *snap_id;        /*   each such start, from flight_count */
+    long flight_count;
     body *pre;            /* scratch: the states just before a collision is answered */
+    body *end;            /* scratch: the states at the end of the internal step, */
+    long *end_id;         /*   flown from the starts numbered so */
     int capsnap;
 } world;
 
