@@ -2,7 +2,8 @@
  *
  * Head-on collisions of unequal masses, bounce heights e^2 h, conservation of
  * momentum, angular momentum and energy in a closed system, an off-centre hit,
- * nothing through a plate, a box landing flat, Newton's cradle, rest. */
+ * nothing through a plate, a box landing flat, Newton's cradle, rest; settling, a
+ * rocking pillow and a stack, without storms of micro-collisions. */
 #include "check.h"
 
 #include <stdlib.h>
@@ -292,6 +293,125 @@ static void box_dropped_on_its_corner_settles(void **state)
     world_free(&w);
 }
 
+/* A frictionless contact pushes along the vertical only: it changes neither the
+ * horizontal momentum nor the angular momentum about the vertical.  A box that
+ * lands slightly tilted, sliding and spinning, rocks and settles on its face
+ * (thesis 3.3.3, sim.c "settle") keeping both, in a few collisions. */
+static void tilted_box_settles_keeping_what_contact_keeps(void **state)
+{
+    (void)state;
+    world w;
+    world_init(&w);
+    w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
+    body *table = add(&w, "table", SHAPE_CUBE);
+    table->sp.size = v3(3, 3, 0.1);
+    rebuild(table);
+    body_set_mass(table, -1);
+    body *box = add(&w, "box", SHAPE_CUBE);
+    box->sp.size = v3(0.15, 0.1, 0.1);
+    rebuild(box);
+    box->elasticity = 0.5;
+    body_set_rotation(box, v3(1, 0.3, 0), 0.12);
+    box->x = v3(0, 0, 0.1 + 0.125);
+    box->v = v3(0.3, -0.1, 0);
+    body_set_angular_vel(box, v3(0, 0, 1));
+    w.set.max_angular = 100; /* the clamp would scale L down as the box rocks */
+    double lz = box->L.z;
+    frames(&w, 15);
+    print_message("tilted box: %ld collisions, state %d, slide %d\n", w.st.collisions, box->state, box->slide);
+    assert_true(w.st.collisions > 0);
+    assert_true(w.st.collisions < 40);
+    assert_int_equal(box->state, STATE_DYNAMIC);
+    assert_int_equal(box->slide, 0); /* on the table */
+    vec3 up = q_rotate(box->q, v3(0, 0, 1));
+    assert_true(fabs(up.z) > 1 - 1e-9); /* flat on a face */
+    assert_near(box->x.z, 0.1 + 0.1, 1e-4);
+    assert_near(box->v.x, 0.3, 1e-9);
+    assert_near(box->v.y, -0.1, 1e-9);
+    assert_near(box->v.z, 0, 1e-9);
+    assert_near(box->L.z, lz, 1e-9 * fabs(lz));
+    /* sliding flat and turning about the vertical, it collides no more */
+    long hits = w.st.collisions;
+    frames(&w, 10);
+    assert_int_equal(w.st.collisions, hits);
+    assert_near(box->L.z, lz, 1e-9 * fabs(lz));
+    world_free(&w);
+}
+
+/* A pillow (a superquadric with a rounded underside) dropped tilted and spinning
+ * rocks to a stop instead of colliding thousands of times a second. */
+static void pillow_rocks_to_a_stop(void **state)
+{
+    (void)state;
+    world w;
+    world_init(&w);
+    w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
+    body *floor = add(&w, "floor", SHAPE_CUBE);
+    floor->sp.size = v3(5, 5, 0.1);
+    rebuild(floor);
+    body_set_mass(floor, -1);
+    body *pillow = add(&w, "pillow", SHAPE_SUPERQUADRIC);
+    pillow->sp.exp1 = 0.4;
+    pillow->sp.exp2 = 1;
+    pillow->sp.a1 = 0.3;
+    pillow->sp.a2 = 0.2;
+    pillow->sp.a3 = 0.08;
+    pillow->sp.ures = pillow->sp.vres = 16;
+    rebuild(pillow);
+    pillow->elasticity = 0.5;
+    body_set_rotation(pillow, v3(1, 1, 0), 0.4);
+    pillow->x = v3(0, 0, 0.6);
+    body_set_angular_vel(pillow, v3(1, -2, 0.5));
+    frames(&w, 30);
+    long hits = w.st.collisions;
+    print_message("pillow: %ld collisions in 3 s, state %d\n", hits, pillow->state);
+    assert_true(hits > 0);
+    assert_true(hits < 300);
+    frames(&w, 10);
+    assert_int_equal(w.st.collisions, hits);
+    /* lying on the floor: no lower than its half thickness, not much higher */
+    assert_true(pillow->x.z > 0.1 + 0.07 && pillow->x.z < 0.1 + 0.09);
+    world_free(&w);
+}
+
+/* A box dropped onto a box resting on the floor: both come to rest, the top one on
+ * the bottom one, without a storm of collisions within the stack. */
+static void stack_comes_to_rest(void **state)
+{
+    (void)state;
+    world w;
+    world_init(&w);
+    w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
+    body *floor = add(&w, "floor", SHAPE_CUBE);
+    floor->sp.size = v3(3, 3, 0.1);
+    rebuild(floor);
+    body_set_mass(floor, -1);
+    body *low = add(&w, "low", SHAPE_CUBE);
+    low->sp.size = v3(0.2, 0.2, 0.1);
+    rebuild(low);
+    low->elasticity = 0.3;
+    low->x = v3(0, 0, 0.2 + 1e-3);
+    body *top = add(&w, "top", SHAPE_CUBE);
+    top->sp.size = v3(0.1, 0.1, 0.1);
+    rebuild(top);
+    top->elasticity = 0.3;
+    top->mass = 2;
+    body_set_mass(top, 2);
+    top->x = v3(0.05, 0.02, 0.4 + 0.05);
+    frames(&w, 30);
+    print_message("stack: %ld collisions, states %d %d\n", w.st.collisions, low->state, top->state);
+    assert_int_equal(low->state, STATE_RESTING);
+    assert_int_equal(top->state, STATE_RESTING);
+    assert_true(w.st.collisions < 100);
+    assert_near(low->x.z, 0.2, 1e-4);
+    assert_near(top->x.z, 0.4, 1e-4);
+    assert_near(top->x.x, 0.05, 1e-9); /* pushed along the vertical only */
+    long checks = w.st.pair_checks;
+    frames(&w, 20);
+    assert_int_equal(w.st.pair_checks, checks);
+    world_free(&w);
+}
+
 static void ball_comes_to_rest_in_finite_time(void **state)
 {
     (void)state;
@@ -380,6 +500,9 @@ int main(void)
         cmocka_unit_test(nothing_passes_through_a_plate),
         cmocka_unit_test(box_dropped_flat_rests_flat),
         cmocka_unit_test(box_dropped_on_its_corner_settles),
+        cmocka_unit_test(tilted_box_settles_keeping_what_contact_keeps),
+        cmocka_unit_test(pillow_rocks_to_a_stop),
+        cmocka_unit_test(stack_comes_to_rest),
         cmocka_unit_test(ball_comes_to_rest_in_finite_time),
         cmocka_unit_test(newtons_cradle),
         cmocka_unit_test(penetration_is_reported),
