@@ -264,8 +264,8 @@ printf '%s\n' "$THESIS" | while IFS='|' read -r id name rest; do
         "$(num "$(get "$id.on" heap_pops_per_frame)")" "$(num "$(get "$id.on" restarts_per_frame)")" \
         "$(num "$(get "$id.on" first_frame_ms)")"
 done
-echo "pair checks: closest-feature queries, the time-of-impact bisection's (about 30 per"
-echo "collision) included; checks/pair: those per object pair; heap pops: pairs taken from the"
+echo "pair checks: closest-feature queries, the time-of-impact search's (a few per collision)"
+echo "included; checks/pair: those per object pair; heap pops: pairs taken from the"
 echo "schedule; restarts: walks redone from scratch; 1st frame: the one that builds pairs and heap."
 
 echo
