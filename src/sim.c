@@ -265,6 +265,15 @@ static void rest_still_objects(world *w)
 
 /* ------------------------------------------------------------ collisions in time */
 
+/* The array p resized to n elements of size elem; p itself, and ok set false, when
+ * that fails. */
+static void *resized(void *p, size_t elem, int n, bool *ok)
+{
+    void *q = realloc(p, (size_t)n * elem);
+    if (!q) *ok = false;
+    return q ? q : p;
+}
+
 /* Within an internal step each object flies from its own starting state: snap[i]
  * at time snap_t[i], the start of the step, or the instant of the last collision
  * that changed it.  An object's place at time t is always one flight from there,
@@ -273,19 +282,14 @@ static void rest_still_objects(world *w)
 static int save_states(world *w, double t)
 {
     if (w->n > w->capsnap) {
-        body *ns = realloc(w->snap, (size_t)w->n * sizeof *ns);
-        if (ns) w->snap = ns;
-        body *np = realloc(w->pre, (size_t)w->n * sizeof *np);
-        if (np) w->pre = np;
-        double *nt = realloc(w->snap_t, (size_t)w->n * sizeof *nt);
-        if (nt) w->snap_t = nt;
-        long *ni = realloc(w->snap_id, (size_t)w->n * sizeof *ni);
-        if (ni) w->snap_id = ni;
-        body *ne = realloc(w->end, (size_t)w->n * sizeof *ne);
-        if (ne) w->end = ne;
-        long *nei = realloc(w->end_id, (size_t)w->n * sizeof *nei);
-        if (nei) w->end_id = nei;
-        if (!ns || !np || !nt || !ni || !ne || !nei) return -1;
+        bool ok = true;
+        w->snap = resized(w->snap, sizeof *w->snap, w->n, &ok);
+        w->pre = resized(w->pre, sizeof *w->pre, w->n, &ok);
+        w->end = resized(w->end, sizeof *w->end, w->n, &ok);
+        w->snap_t = resized(w->snap_t, sizeof *w->snap_t, w->n, &ok);
+        w->snap_id = resized(w->snap_id, sizeof *w->snap_id, w->n, &ok);
+        w->end_id = resized(w->end_id, sizeof *w->end_id, w->n, &ok);
+        if (!ok) return -1;
         w->capsnap = w->n;
     }
     for (int i = 0; i < w->n; i++) {

@@ -18,6 +18,18 @@ static inline body *add(world *w, const char *name, shape_kind kind)
     return b;
 }
 
+/* A static cube named name with half-extents size, built and added to w (at the
+ * origin: place it with x). */
+static inline body *add_static_box(world *w, const char *name, vec3 size)
+{
+    body *b = add(w, name, SHAPE_CUBE);
+    b->sp.size = size;
+    char err[256];
+    assert_int_equal(body_build(b, err, sizeof err), 0);
+    body_set_mass(b, -1);
+    return b;
+}
+
 /* Builds b again after its shape parameters changed. */
 static inline void rebuild(body *b)
 {
