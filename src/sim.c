@@ -11,7 +11,7 @@
  *
  * An internal step (thesis 3.4.2, steps 3 to 5): save every state, fly the whole
  * step, check the due pairs.  If some pair touches or penetrates, each such pair is
- * bisected in time to its first contact; the world goes back to the earliest
+ * traced back in time to its first contact; the world goes back to the earliest
  * contact, answers it, and the rest of the step starts over from there.  So
  * collisions are answered in the order they happen, simultaneous ones one after
  * another.  Each object flies from its own saved state, which only a collision
@@ -467,9 +467,6 @@ static int settle(world *w, int mi, int si, vec3 n, vec3 support_pt, pair *p, do
 }
 
 /* The acceleration of body b, zero when it does not move. */
-
-
-
 static vec3 still_accel(const world *w, const body *b)
 {
     return b->state == STATE_DYNAMIC ? accel_of(w, b) : v3(0, 0, 0);
@@ -526,7 +523,6 @@ static void collide(world *w, pair *p)
      * on it, or slides on it when it still moves along it */
     /* a pair that touches, or that touched without approaching (a glancing or
      * rotating contact), is set apart, so that the step goes on */
-    if (getenv("VROC_DEBUG")) fprintf(stderr, "COL t=%.6f %s %s cs=%.5f n=(%.3f %.3f %.3f) e=%.3f fixed=%d sta=%d stb=%d sla=%d slb=%d wa=(%.3f %.3f %.3f) wb=(%.3f %.3f %.3f)\n", w->time, a->name, b->name, c.speed, r.normal.x, r.normal.y, r.normal.z, e, fixed, a->state, b->state, a->slide, b->slide, a->w.x, a->w.y, a->w.z, b->w.x,b->w.y,b->w.z);
     bool apart = r.distance <= 0 || c.impulse == 0;
     if (v3_len2(g) == 0) {
         if (apart) separate(a, b, r.normal, r.distance, SIM_SEPARATION);
@@ -546,10 +542,6 @@ static void collide(world *w, pair *p)
         if (how == SETTLE_LAID) return; /* placed apart already */
         if (how == SETTLE_STANDS) settled = true;
     }
-    /* an object that barely moves against a support below it without standing on
-     * it (rocking on an edge or a corner), and keeps colliding in this step, is set
-     * a hop apart, so that gravity takes milliseconds, not microseconds, to bring
-     * it back: the micro-collisions that turn it over stay few */
     if (apart || settled) separate(a, b, r.normal, r.distance, SIM_SEPARATION);
 }
 

@@ -6,10 +6,11 @@
  * splitting about the principal axes that keeps the angular momentum L exactly and
  * the energy to O(h^2) (Dullweber, Leimkuhler and McLachlan 1997), then the speed
  * limits max_linear and max_angular.  At the end of the step the pairs are checked;
- * a pair found touching or penetrating is traced back in time by bisection to its
- * first contact, the earliest such collision is answered (contact.h) with every
- * object at that instant, and the rest of the step goes on from there.  Objects
- * whose motion dies down on a support come to rest (thesis 3.3.3).
+ * a pair found touching or penetrating is traced back in time to its first contact
+ * (Newton steps on its closing speed, bisection after an overshoot), the earliest
+ * such collision is answered (contact.h) with every object at that instant, and the
+ * rest of the step goes on from there.  Objects whose motion dies down on a support
+ * come to rest or settle (thesis 3.3.3).
  */
 #ifndef VROC_SIM_H
 #define VROC_SIM_H
@@ -21,7 +22,7 @@
 /* Most internal steps one frame may take; more is an error asking for fewer. */
 #define SIM_MAX_SUBFRAMES 1000000L
 
-/* Time of impact: bisection stops when the bracket is this short (s). */
+/* Time of impact: the search stops when its bracket is this short (s). */
 #define SIM_TOI_TIME 1e-10
 /* After a collision the pair is set apart to at least this distance (m). */
 #define SIM_SEPARATION 1e-7
@@ -37,12 +38,10 @@
  * slides on it: the part of the force that presses it onto the support is taken
  * away while it stays there. */
 #define SIM_REST_SPEED 0.05
-/* Settling (the limit of rocking): an object that hits a support under it slower
- * than SIM_SETTLE_SPEED (m/s), its rocking (angular speed about horizontal axes
- * times the outer radius) slower too, and cannot stand on it there, is laid on the
- * face it can stand on nearest to the support, if that face is within
- * SIM_SETTLE_ANGLE (radians) and nothing is in the way. */
-#define SIM_SETTLE_SPEED 0.1
+/* Settling (the limit of rocking, sim.c settle): an object with restitution below 1
+ * barely bouncing on a support under it, whose rocking could not tip it more than
+ * SIM_SETTLE_ANGLE (radians), is laid on the face it can stand on nearest to the
+ * support, if that face is within the angle and nothing is in the way. */
 #define SIM_SETTLE_ANGLE 0.35
 /* Collisions one internal step may answer before the step gives up and lets the
  * objects through (a guard against endless micro-collisions; counted in stats). */
