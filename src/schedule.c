@@ -84,11 +84,12 @@ double sched_predict_bodies(const world *w, const body *a, const body *b, double
 {
     if (d <= 0) return 0;
     const body *ob[2] = {a, b};
-    double acc = v3_len(world_accel(w)), vmax = w->set.max_linear;
+    double vmax = w->set.max_linear;
     reach_terms r[2];
     int n = 0;
     for (int k = 0; k < 2; k++)
-        if (ob[k]->state == STATE_DYNAMIC) r[n++] = terms_of(ob[k], acc, vmax);
+        if (ob[k]->state == STATE_DYNAMIC)
+            r[n++] = terms_of(ob[k], v3_len(world_body_accel(w, ob[k])), vmax);
     if (n == 0) return HUGE_VAL;
     /* a margin for the rounding of the flight and of the distance */
     double target = d - 1e-9 * (1 + ob[0]->shape.r_out + ob[1]->shape.r_out);

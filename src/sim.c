@@ -188,16 +188,6 @@ static void wake(world *w, int i)
     }
 }
 
-/* The global acceleration as body b feels it: less the part that presses it onto
- * the support it slides on. */
-static vec3 accel_of(const world *w, const body *b)
-{
-    vec3 a = world_accel(w);
-    if (b->slide < 0) return a;
-    double an = v3_dot(a, b->slide_n);
-    return an < 0 ? v3_mad(a, b->slide_n, -an) : a;
-}
-
 void sim_wake_all(world *w)
 {
     for (int i = 0; i < w->n; i++) wake(w, i);
@@ -223,8 +213,9 @@ static void come_to_rest(body *b, int support)
 }
 
 /* Resting objects whose support left (deleted, or moving) wake up; chains of
- * resting objects wake in turn. */
-static void wake_unsupported(world *w)
+ * resting objects wake in turn.  Sliding objects whose support moves on its own
+ * slide no more.  Marks in touched (when not NULL) each object it changes. */
+static void wake_unsupported(world *w, bool *touched)
 {
     bool changed = true;
     while (changed) {
@@ -232,11 +223,16 @@ static void wake_unsupported(world *w)
         for (int i = 0; i < w->n; i++) {
             body *b = w->bodies[i];
             const body *s = b->slide >= 0 ? w->bodies[b->slide] : NULL;
-            if (s && s->state == STATE_DYNAMIC && s->slide < 0) b->slide = -1;
+            if (s && s->state == STATE_DYNAMIC && s->slide < 0) {
+                b->slide = -1; /* the full force: its pairs' predictions change */
+                sched_object_due(w, i, w->time);
+                if (touched) touched[i] = true;
+            }
             if (b->state != STATE_RESTING) continue;
             if (b->support < 0 || w->bodies[b->support]->state == STATE_DYNAMIC) {
                 wake(w, i);
                 sched_object_due(w, i, w->time);
+                if (touched) touched[i] = true;
                 changed = true;
             }
         }
@@ -289,6 +285,7 @@ static int save_states(world *w, double t)
         w->snap_t = resized(w->snap_t, sizeof *w->snap_t, w->n, &ok);
         w->snap_id = resized(w->snap_id, sizeof *w->snap_id, w->n, &ok);
         w->end_id = resized(w->end_id, sizeof *w->end_id, w->n, &ok);
+        w->touched = resized(w->touched, sizeof *w->touched, w->n, &ok);
         if (!ok) return -1;
         w->capsnap = w->n;
     }
@@ -307,15 +304,8 @@ static body flown(const world *w, int i, double t)
     body b = w->snap[i];
     double dt = t - w->snap_t[i];
     if (b.state == STATE_DYNAMIC && dt > 0)
-        sim_flight(&b, dt, accel_of(w, &b), w->set.max_linear, w->set.max_angular);
+        sim_flight(&b, dt, world_body_accel(w, &b), w->set.max_linear, w->set.max_angular);
     return b;
-}
-
-/* Every moving object to time t. */
-static void fly_all(world *w, double t)
-{
-    for (int i = 0; i < w->n; i++)
-        if (w->snap[i].state == STATE_DYNAMIC) *w->bodies[i] = flown(w, i, t);
 }
 
 /* Every moving object to the end of the step, t_end: an object whose flight did
@@ -332,12 +322,19 @@ static void fly_to_end(world *w, double t_end)
     }
 }
 
+/* The acceleration of body b, zero when it does not move. */
+static vec3 still_accel(const world *w, const body *b)
+{
+    return b->state == STATE_DYNAMIC ? world_body_accel(w, b) : v3(0, 0, 0);
+}
+
 /* First contact of pair p within [lo, hi] (absolute times), knowing that it
  * touches or penetrates at hi: the latest time found at which it is apart, less
  * than SIM_SEPARATION / 2 apart or within SIM_TOI_TIME of a time it is not.  Each
- * step tries the time the closest points would meet at their present closing speed
- * (a Newton step, just short), never earlier than the schedule's bound allows a
- * contact; after a step that overshoots, it halves the bracket instead. */
+ * step tries the time the closest points would meet at their present closing
+ * speed and acceleration (a Newton step, just short), never earlier than the
+ * schedule's bound allows a contact; after a step that overshoots, it halves the
+ * bracket instead. */
 static double time_of_impact(world *w, pair *p, double lo, double hi)
 {
     closest_cache cache = p->cache;
@@ -349,7 +346,10 @@ static double time_of_impact(world *w, pair *p, double lo, double hi)
     while (hi - lo > SIM_TOI_TIME && r.distance >= 0.5 * SIM_SEPARATION) {
         double safe = lo + sched_predict_bodies(w, &a, &b, r.distance);
         double s = contact_closing_speed(&a, &b, v3_scale(v3_add(r.pa, r.pb), 0.5), r.normal);
-        double t = s > 0 && !overshot ? lo + 0.98 * r.distance / s : 0.5 * (lo + hi);
+        double c = v3_dot(v3_sub(still_accel(w, &b), still_accel(w, &a)), r.normal);
+        /* s t + c t^2 / 2 = D, its least positive root, stably */
+        double D = 0.98 * r.distance, disc = s * s + 2 * c * D, t = 0.5 * (lo + hi);
+        if (!overshot && disc >= 0 && s + sqrt(disc) > 0) t = lo + 2 * D / (s + sqrt(disc));
         t = fmax(t, safe);
         if (!(t < hi)) t = 0.5 * (fmax(lo, fmin(safe, hi)) + hi);
         if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
@@ -445,7 +445,10 @@ static int settle(world *w, int mi, int si, vec3 n, vec3 support_pt, pair *p, do
         for (long j = w->obj_first[mi]; ok && j < w->obj_first[mi + 1]; j++) {
             pair *o = &w->pairs[w->obj_pairs[j]];
             if (o == p) continue;
-            closest_result ro = query(w, o, w->bodies[o->a], w->bodies[o->b]);
+            /* the other object where it is now (only the pair is flown to the
+             * collision: see internal_step) */
+            body other = flown(w, o->a == mi ? o->b : o->a, w->time);
+            closest_result ro = o->a == mi ? query(w, o, m, &other) : query(w, o, &other, m);
             if (ro.status != CLOSEST_SEPARATED || ro.distance < SIM_SEPARATION) ok = false;
         }
         if (!ok) {
@@ -464,12 +467,6 @@ static int settle(world *w, int mi, int si, vec3 n, vec3 support_pt, pair *p, do
     }
     stand(w, m, s, si, n, p);
     return stable ? SETTLE_STANDS : SETTLE_LAID;
-}
-
-/* The acceleration of body b, zero when it does not move. */
-static vec3 still_accel(const world *w, const body *b)
-{
-    return b->state == STATE_DYNAMIC ? accel_of(w, b) : v3(0, 0, 0);
 }
 
 /* True when body l, pressed from above along -n, is held by what it stands on: it
@@ -565,8 +562,10 @@ static void check_slides(world *w)
         bool turned = v3_len2(m->L) != 0 && !spins_on_support(m);
         if (r.status != CLOSEST_SEPARATED || r.distance > 100 * SIM_SEPARATION ||
             v3_dot(n, m->slide_n) < 1 - 1e-6 || v3_dot(m->v, n) > SIM_REST_SPEED ||
-            (turned && !contact_stable(m, n, 1e-6 * scale)))
-            m->slide = -1;
+            (turned && !contact_stable(m, n, 1e-6 * scale))) {
+            m->slide = -1; /* the full force: its pairs' predictions change */
+            sched_object_due(w, i, w->time);
+        }
     }
 }
 
@@ -582,36 +581,128 @@ static int due_room(world *w, long n)
     return 0;
 }
 
-/* The pairs to check at time t_end: with the heap, those due by then (taken out of
- * the way at +inf until their new time is known); without it, every pair. */
-static long take_due(world *w, double t_end)
-{
-    long n = 0;
-    if (!w->set.collision_heap) {
-        for (long i = 0; i < w->npairs; i++) w->due[n++] = i;
-        return n;
-    }
-    double next;
-    long i;
-    while ((i = sched_top(w, &next)) >= 0 && next <= t_end) {
-        w->due[n++] = i;
-        sched_set(w, i, HUGE_VAL);
-        w->st.heap_pops++;
-    }
-    return n;
-}
-
-static void put_back(world *w, long n)
-{
-    if (!w->set.collision_heap) return;
-    for (long k = 0; k < n; k++) sched_set(w, w->due[k], w->due_next[k]);
-}
-
 /* The gap between the spheres about a's and b's centres of mass that hold them: no
  * more than their distance. */
 static double bound_gap(const body *a, const body *b)
 {
     return v3_len(v3_sub(body_com(a), body_com(b))) - a->shape.r_out - b->shape.r_out;
+}
+
+/* True when object mi slides on a still support si, not towards it, turning
+ * about its normal only (or not at all).  The plane between them at their
+ * closest points separates them; mi moves along it and its points keep their
+ * heights above it, so the pair cannot collide until mi's motion changes, which
+ * makes the pair due again. */
+static bool slides_clear(const world *w, int mi, int si)
+{
+    const body *m = w->bodies[mi];
+    return m->state == STATE_DYNAMIC && m->slide == si && w->bodies[si]->state != STATE_DYNAMIC &&
+           v3_dot(m->v, m->slide_n) >= 0 && (v3_len2(m->L) == 0 || spins_on_support(m));
+}
+
+/* Checks pair i at the end of the step, t_end, for the step that began at now:
+ * returns when it is next due, a time after t_end when it is apart, or the time
+ * of its first contact when it penetrates.  Keeps in *first and *when the
+ * earliest contact so far. */
+static double check_pair(world *w, long i, double now, double t_end, pair **first, double *when)
+{
+    pair *p = &w->pairs[i];
+    if (!pair_moves(w, p)) return HUGE_VAL;
+    if (w->set.collision_heap && (slides_clear(w, p->a, p->b) || slides_clear(w, p->b, p->a)))
+        return HUGE_VAL;
+    /* far apart: the bounding spheres' gap bounds the distance from below, and is
+     * enough for a prediction beyond the frame (part of the schedule: without it
+     * every pair gets its closest-feature check, as in the thesis's Table 5.3) */
+    double gap = w->set.collision_heap ? bound_gap(w->bodies[p->a], w->bodies[p->b]) : 0;
+    if (gap > 0) {
+        double ahead = sched_predict(w, p, gap);
+        if (ahead >= w->set.time_step) return t_end + ahead;
+    }
+    closest_result r = query_apart(w, p, w->bodies[p->a], w->bodies[p->b]);
+    if (r.status != CLOSEST_PENETRATING) return t_end + sched_predict(w, p, r.distance);
+    /* the same flights give the same first contact */
+    if (p->toi_a != w->snap_id[p->a] || p->toi_b != w->snap_id[p->b]) {
+        p->toi = time_of_impact(w, p, now, t_end);
+        p->toi_a = w->snap_id[p->a];
+        p->toi_b = w->snap_id[p->b];
+    }
+    /* the earliest; among equals the first pair, whatever order the schedule gave
+     * them in, so that the heap changes nothing */
+    if (!*first || p->toi < *when || (p->toi == *when && p < *first)) {
+        *when = p->toi;
+        *first = p;
+    }
+    return p->toi; /* checked again once the earliest is answered */
+}
+
+/* Checks the pairs due by t_end (every pair without the heap); returns the pair
+ * that collides first within the step, its time in *when, or NULL.  A due pair
+ * is popped and pushed back at once with its new time, unless that is within the
+ * step (it touches): such pairs wait aside until the others are done. */
+static pair *check_due(world *w, double now, double t_end, double *when)
+{
+    pair *first = NULL;
+    *when = t_end;
+    if (!w->set.collision_heap) {
+        for (long i = 0; i < w->npairs; i++) check_pair(w, i, now, t_end, &first, when);
+        return first;
+    }
+    long aside = 0, i;
+    double next;
+    while ((i = sched_top(w, &next)) >= 0 && next <= t_end) {
+        w->st.heap_pops++;
+        next = check_pair(w, i, now, t_end, &first, when);
+        if (next <= t_end) {
+            w->due[aside] = i;
+            w->due_next[aside++] = next;
+            next = HUGE_VAL;
+        }
+        sched_set(w, i, next);
+    }
+    for (long k = 0; k < aside; k++) sched_set(w, w->due[k], w->due_next[k]);
+    return first;
+}
+
+/* Object i flies on from time t as it is now. */
+static void renew_flight(world *w, int i, double t)
+{
+    w->snap[i] = *w->bodies[i];
+    w->snap_t[i] = t;
+    w->snap_id[i] = w->flight_count++;
+}
+
+/* Answers the collision of pair p at time t.  Only its two objects are flown
+ * there; the others stay at the end of the step, where the next check wants
+ * them (settle flies the neighbours it looks at).  What the answer changes flies
+ * on from t. */
+static void answer(world *w, pair *p, double t)
+{
+    int ends[2] = {p->a, p->b};
+    for (int k = 0; k < 2; k++) {
+        int i = ends[k];
+        if (w->snap[i].state == STATE_DYNAMIC) *w->bodies[i] = flown(w, i, t);
+        w->pre[i] = *w->bodies[i];
+    }
+    for (int i = 0; i < w->n; i++) w->touched[i] = false;
+    w->time = t;
+    collide(w, p);
+    wake_unsupported(w, w->touched);
+    for (int k = 0; k < 2; k++) {
+        int i = ends[k];
+        w->touched[i] = false;
+        if (memcmp(&w->pre[i], w->bodies[i], sizeof(body)) != 0) renew_flight(w, i, t);
+    }
+    for (int i = 0; i < w->n; i++) {
+        if (!w->touched[i]) continue;
+        body *b = w->bodies[i];
+        if (w->snap[i].state == STATE_DYNAMIC) {
+            /* a moving object that slides no more: where it is at t, with that */
+            body at = flown(w, i, t);
+            at.slide = b->slide;
+            *b = at;
+        }
+        renew_flight(w, i, t);
+    }
 }
 
 /* One internal step of h seconds (thesis 3.4.2, steps 3 to 5). */
@@ -621,59 +712,11 @@ static int internal_step(world *w, double h)
     if (due_room(w, w->npairs) != 0 || save_states(w, now) != 0) return -1;
     for (int n = 0;; n++) {
         fly_to_end(w, t_end);
-        long ndue = take_due(w, t_end);
-        pair *first = NULL;
-        double when = t_end;
-        for (long k = 0; k < ndue; k++) {
-            pair *p = &w->pairs[w->due[k]];
-            w->due_next[k] = HUGE_VAL;
-            if (!pair_moves(w, p)) continue;
-            /* far apart: the bounding spheres' gap bounds the distance from below,
-             * and is enough for a prediction beyond the frame (part of the
-             * schedule: without it every pair gets its closest-feature check, as
-             * in the thesis's Table 5.3) */
-            double gap = w->set.collision_heap ? bound_gap(w->bodies[p->a], w->bodies[p->b]) : 0;
-            if (gap > 0) {
-                double ahead = sched_predict(w, p, gap);
-                if (ahead >= w->set.time_step) {
-                    w->due_next[k] = t_end + ahead;
-                    continue;
-                }
-            }
-            closest_result r = query_apart(w, p, w->bodies[p->a], w->bodies[p->b]);
-            if (r.status != CLOSEST_PENETRATING) {
-                w->due_next[k] = t_end + sched_predict(w, p, r.distance);
-                continue;
-            }
-            /* the same flights give the same first contact */
-            if (p->toi_a != w->snap_id[p->a] || p->toi_b != w->snap_id[p->b]) {
-                p->toi = time_of_impact(w, p, now, t_end);
-                p->toi_a = w->snap_id[p->a];
-                p->toi_b = w->snap_id[p->b];
-            }
-            double t = p->toi;
-            w->due_next[k] = t; /* checked again once answered */
-            /* the earliest; among equals the first pair, whatever order the
-             * schedule gave them in, so that the heap changes nothing */
-            if (!first || t < when || (t == when && p < first)) {
-                when = t;
-                first = p;
-            }
-        }
-        put_back(w, ndue);
+        double when;
+        pair *first = check_due(w, now, t_end, &when);
         if (!first || n >= SIM_MAX_COLLISIONS_PER_STEP) break;
-        /* back to the collision; what it changes flies on from there */
-        fly_all(w, when);
-        for (int i = 0; i < w->n; i++) w->pre[i] = *w->bodies[i];
-        now = w->time = when;
-        collide(w, first);
-        wake_unsupported(w);
-        for (int i = 0; i < w->n; i++) {
-            if (memcmp(&w->pre[i], w->bodies[i], sizeof(body)) == 0) continue;
-            w->snap[i] = *w->bodies[i];
-            w->snap_t[i] = when;
-            w->snap_id[i] = w->flight_count++;
-        }
+        answer(w, first, when);
+        now = when;
     }
     w->time = t_end;
     check_slides(w);
@@ -696,7 +739,7 @@ int sim_frame(world *w, char *err, size_t errlen)
     }
     w->sched_dirty = false;
     double t0 = w->time, h = n > 0 ? w->set.time_step / (double)n : 0;
-    wake_unsupported(w);
+    wake_unsupported(w, NULL);
     for (long k = 0; k < n; k++) {
         if (internal_step(w, h) != 0) {
             snprintf(err, errlen, "out of memory");

@@ -7,8 +7,9 @@
  * the energy to O(h^2) (Dullweber, Leimkuhler and McLachlan 1997), then the speed
  * limits max_linear and max_angular.  At the end of the step the pairs are checked;
  * a pair found touching or penetrating is traced back in time to its first contact
- * (Newton steps on its closing speed, bisection after an overshoot), the earliest
- * such collision is answered (contact.h) with every object at that instant, and the
+ * (Newton steps on its closing speed and acceleration, bisection after an
+ * overshoot), the earliest such collision is answered (contact.h) with the objects
+ * it concerns at that instant (the others fly on unchanged), and the
  * rest of the step goes on from there.  Objects whose motion dies down on a support
  * come to rest or settle (thesis 3.3.3).
  */

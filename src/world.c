@@ -65,6 +65,7 @@ void world_free(world *w)
     free(w->pre);
     free(w->end);
     free(w->end_id);
+    free(w->touched);
     free(w->heap);
     free(w->obj_first);
     free(w->obj_pairs);
@@ -77,6 +78,7 @@ void world_free(world *w)
     w->pairs = NULL;
     w->snap = w->pre = w->end = NULL;
     w->end_id = NULL;
+    w->touched = NULL;
     w->snap_t = NULL;
     w->snap_id = NULL;
     w->npairs = w->cappairs = 0;
@@ -147,6 +149,14 @@ long world_pairs(const world *w)
 vec3 world_accel(const world *w)
 {
     return v3_scale(v3_norm(w->set.force.dir), w->set.force.amount);
+}
+
+vec3 world_body_accel(const world *w, const body *b)
+{
+    vec3 a = world_accel(w);
+    if (b->slide < 0) return a;
+    double an = v3_dot(a, b->slide_n);
+    return an < 0 ? v3_mad(a, b->slide_n, -an) : a;
 }
 
 long world_subframes(const world *w)

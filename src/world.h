@@ -111,7 +111,8 @@ typedef struct world {
     double *snap_t;       /*   step: where its flight starts (sim.c); snap_id numbers */
     long *snap_id;        /*   each such start, from flight_count */
     long flight_count;
-    body *pre;            /* scratch: the states just before a collision is answered */
+    body *pre;            /* scratch: the colliding pair's states before the answer */
+    bool *touched;        /* scratch: the other objects a collision's answer changed */
     body *end;            /* scratch: the states at the end of the internal step, */
     long *end_id;         /*   flown from the starts numbered so */
     int capsnap;
@@ -143,6 +144,10 @@ long world_pairs(const world *w);
 /* The global acceleration: force.dir / |force.dir| * force.amount (zero when
  * none). */
 vec3 world_accel(const world *w);
+
+/* The global acceleration as body b feels it: less the part that presses it onto
+ * the support it slides on (sim.c). */
+vec3 world_body_accel(const world *w, const body *b);
 
 /* Internal steps per frame: ceil(time_step / hmax) with hmax = internal_step when
  * set, else collision_dist / (2 max_linear); 1 when that bound is infinite; 0 when
