@@ -20,7 +20,8 @@
  *
  * Contact: a collision that leaves an object barely bouncing on a support below it
  * puts it at rest, or sliding (settle); slow collisions under gravity part at the
- * collision envelope's speed, and a stack passes slow blows down to its support.
+ * collision envelope's speed, and a stack passes blows from above down to its
+ * support.
  */
 #include "sim.h"
 
@@ -500,11 +501,11 @@ static void collide(world *w, pair *p)
     double leave = sqrt(2 * fmax(press, v3_len(g)) * SIM_HOP);
     bool slow = cs > 0 && cs < SIM_REST_SPEED;
     if (slow && e * cs < leave) e = leave / cs;
-    /* in a slow contact of a stack, the object underneath passes the impulse on to
-     * what holds it: it stays as it is (shock propagation) */
+    /* in a stack, the object underneath passes a blow from above on to what holds
+     * it: it stays as it is (shock propagation) */
     int fixed = 0;
-    if (slow && press > 0 && v3_dot(r.normal, up) > 0.7 && held(b, r.normal)) fixed = 2;
-    if (slow && press > 0 && v3_dot(r.normal, up) < -0.7 && held(a, v3_neg(r.normal))) fixed = 1;
+    if (press > 0 && v3_dot(r.normal, up) > 0.7 && held(b, r.normal)) fixed = 2;
+    if (press > 0 && v3_dot(r.normal, up) < -0.7 && held(a, v3_neg(r.normal))) fixed = 1;
     /* a resting object hit by a moving one takes part as a dynamic one */
     if (a->state == STATE_RESTING && b->state == STATE_DYNAMIC && fixed != 1) wake(w, p->a);
     if (b->state == STATE_RESTING && a->state == STATE_DYNAMIC && fixed != 2) wake(w, p->b);

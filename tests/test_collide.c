@@ -394,6 +394,50 @@ static void stack_comes_to_rest(void **state)
     world_free(&w);
 }
 
+/* A box thrown down onto a box resting on the floor: the floor takes the blow
+ * through the lower box (shock propagation), so there is one collision, the lower
+ * box stays at rest where it was, and the upper one leaves as from a fixed
+ * support, by Newton's law of restitution: at e times its speed of impact. */
+static void blow_on_a_stack_passes_to_the_floor(void **state)
+{
+    (void)state;
+    world w;
+    world_init(&w);
+    const double g = 9.8, e = 0.3, v0 = 3, gap = 0.01, step = 0.05;
+    w.set.force = (dir_amount){v3(0, 0, -1), g};
+    w.set.time_step = step;
+    add_static_box(&w, "floor", v3(3, 3, 0.1));
+    body *low = add(&w, "low", SHAPE_CUBE);
+    low->sp.size = v3(0.2, 0.2, 0.1);
+    rebuild(low);
+    low->elasticity = e; /* the pair's restitution: the lesser of the two */
+    low->x = v3(0, 0, 0.2 + 1e-3);
+    frames(&w, 10);
+    assert_int_equal(low->state, STATE_RESTING);
+    vec3 rest = low->x;
+    body *top = add(&w, "top", SHAPE_CUBE);
+    top->sp.size = v3(0.1, 0.1, 0.1);
+    rebuild(top);
+    top->elasticity = 0.5;
+    body_set_mass(top, 2);
+    top->x = v3(0.05, 0.02, rest.z + 0.2 + gap);
+    top->v = v3(0, 0, -v0);
+    long before = w.st.collisions;
+    double t0 = w.time;
+    frames(&w, 1);
+    /* v0 t + g t^2 / 2 = gap, then up at e times the speed of impact (it rises for
+     * 0.3 s, longer than the frame) */
+    double ti = 2 * gap / (v0 + sqrt(v0 * v0 + 2 * g * gap)), vi = v0 + g * ti;
+    double want = e * vi - g * (w.time - t0 - ti);
+    print_message("blow: %ld collisions, v %.9f (want %.9f)\n", w.st.collisions - before, top->v.z,
+                  want);
+    assert_int_equal(w.st.collisions - before, 1);
+    assert_int_equal(low->state, STATE_RESTING);
+    assert_true(v3_len(v3_sub(low->x, rest)) == 0);
+    assert_near(top->v.z, want, 1e-6);
+    world_free(&w);
+}
+
 static void ball_comes_to_rest_in_finite_time(void **state)
 {
     (void)state;
@@ -482,6 +526,7 @@ int main(void)
         cmocka_unit_test(tilted_box_settles_keeping_what_contact_keeps),
         cmocka_unit_test(pillow_rocks_to_a_stop),
         cmocka_unit_test(stack_comes_to_rest),
+        cmocka_unit_test(blow_on_a_stack_passes_to_the_floor),
         cmocka_unit_test(ball_comes_to_rest_in_finite_time),
         cmocka_unit_test(newtons_cradle),
         cmocka_unit_test(penetration_is_reported),
