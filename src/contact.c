@@ -221,14 +221,18 @@ static double angular_term(const body *b, vec3 r, vec3 n)
     return v3_dot(n, v3_cross(t, r));
 }
 
-contact contact_respond(body *a, body *b, vec3 p, vec3 n, double e, int fixed)
+contact contact_respond(body *a, body *b, vec3 p, vec3 n, double e, int held, vec3 s)
 {
     contact c = {p, n, contact_closing_speed(a, b, p, n), 0};
     if (c.speed <= 0) return c;
     vec3 ra = v3_sub(p, body_com(a)), rb = v3_sub(p, body_com(b));
-    bool move_a = !body_is_static(a) && !(fixed & 1), move_b = !body_is_static(b) && !(fixed & 2);
+    bool move_a = !body_is_static(a) && held != 1, move_b = !body_is_static(b) && held != 2;
+    /* the held one moves across s only: n's part across s, times its inverse mass */
+    vec3 across = v3_len2(s) > 0 ? v3_mad(n, s, -v3_dot(n, s)) : v3(0, 0, 0);
+    const body *h = held == 1 ? a : held == 2 ? b : NULL;
     double k = (move_a ? a->inv_mass + angular_term(a, ra, n) : 0) +
-               (move_b ? b->inv_mass + angular_term(b, rb, n) : 0);
+               (move_b ? b->inv_mass + angular_term(b, rb, n) : 0) +
+               (h && !body_is_static(h) ? h->inv_mass * v3_dot(across, n) : 0);
     if (!(k > 0)) return c;
     double j = (1 + e) * c.speed / k;
     vec3 J = v3_scale(n, j);
@@ -242,6 +246,8 @@ contact contact_respond(body *a, body *b, vec3 p, vec3 n, double e, int fixed)
         b->L = v3_sub(b->L, v3_cross(rb, J));
         body_update_w(b);
     }
+    if (held == 1 && !body_is_static(a)) a->v = v3_mad(a->v, across, j * a->inv_mass);
+    if (held == 2 && !body_is_static(b)) b->v = v3_mad(b->v, across, -j * b->inv_mass);
     c.impulse = j;
     return c;
 }

@@ -44,9 +44,11 @@ vec3 contact_point_velocity(const body *b, vec3 p);
 double contact_closing_speed(const body *a, const body *b, vec3 p, vec3 n);
 
 /* Applies the impulse that answers the collision of a and b at p with normal n
- * (from b to a) and restitution e, when they approach; fixed has bit 1 set to treat
- * a as immovable (infinite mass), bit 2 for b.  Returns what was done (impulse 0
- * when they do not approach). */
-contact contact_respond(body *a, body *b, vec3 p, vec3 n, double e, int fixed);
+ * (from b to a) and restitution e, when they approach.  held = 1 holds a, 2 holds
+ * b (0 neither): the held object does not turn and has infinite mass along the unit
+ * vector s, the normal of what holds it, so that it moves across s only; with s
+ * zero it does not move at all.  Returns what was done (impulse 0 when they do not
+ * approach). */
+contact contact_respond(body *a, body *b, vec3 p, vec3 n, double e, int held, vec3 s);
 
 #endif

@@ -47,8 +47,8 @@ static reach_terms terms_of(const body *b, double acc, double vmax)
     r.vmax = vmax;
     if (r.s >= vmax) r.t_lin = 0;
     else r.t_lin = acc > 0 ? 2 * (vmax - r.s) / acc : HUGE_VAL;
-    r.cap = b->shape.r_out - b->shape.r_in;
     r.rate = spin_bound(b) * b->shape.r_out;
+    r.cap = r.rate > 0 ? b->shape.r_out - b->shape.r_in : 0; /* no spin, no turn */
     r.t_rot = r.rate > 0 ? r.cap / r.rate : 0;
     return r;
 }
@@ -78,6 +78,19 @@ static double eval(const reach_terms *r, int n, double t)
 double sched_predict(const world *w, const pair *p, double d)
 {
     return sched_predict_bodies(w, w->bodies[p->a], w->bodies[p->b], d);
+}
+
+/* The root above lo of the quadratic a + b t + c t^2 = target (b, c >= 0), or
+ * HUGE_VAL when it never gets there. */
+static double piece_root(double a, double b, double c, double target)
+{
+    double cc = a - target;
+    if (c > 0) { /* c t^2 + b t + cc = 0, stably */
+        double disc = fmax(0, b * b - 4 * c * cc);
+        double q = -0.5 * (b + sqrt(disc));
+        return fabs(q) > 0 ? cc / q : 0;
+    }
+    return b > 0 ? -cc / b : HUGE_VAL;
 }
 
 double sched_predict_bodies(const world *w, const body *a, const body *b, double d)
@@ -112,20 +125,12 @@ double sched_predict_bodies(const world *w, const body *a, const body *b, double
     for (int i = 0; i < nb; lo = bp[i++]) {
         double hi = bp[i];
         if (hi <= lo) continue;
-        if (hi < HUGE_VAL && eval(r, n, hi) < target) continue;
-        double a = 0, b = 0, c = 0; /* the bound on [lo, hi): a + b t + c t^2 */
-        for (int k = 0; k < n; k++) add_piece(&r[k], lo, &a, &b, &c);
-        double cc = a - target, t;
-        if (c > 0) { /* c t^2 + b t + cc = 0, its root above lo, stably */
-            double disc = fmax(0, b * b - 4 * c * cc);
-            double q = -0.5 * (b + sqrt(disc));
-            t = fabs(q) > 0 ? cc / q : 0;
-        } else if (b > 0) {
-            t = -cc / b;
-        } else {
-            return HUGE_VAL; /* nothing moves closer */
-        }
-        t = fmax(lo, fmin(t, hi)) * (1 - 1e-12);
+        double pa = 0, pb = 0, pc = 0; /* the bound on [lo, hi): pa + pb t + pc t^2 */
+        for (int k = 0; k < n; k++) add_piece(&r[k], lo, &pa, &pb, &pc);
+        double t = piece_root(pa, pb, pc, target);
+        if (t == HUGE_VAL && hi == HUGE_VAL) return HUGE_VAL; /* nothing moves closer */
+        if (!(t < hi)) continue; /* the bound stays short of d on this piece */
+        t = fmax(lo, t) * (1 - 1e-12);
         while (t > 0 && eval(r, n, t) >= target) t *= 1 - 1e-9; /* never late */
         return t;
     }

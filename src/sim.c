@@ -78,6 +78,17 @@ static bool spins_on_support(const body *b)
     return v3_len2(off) <= 1e-24 * v3_len2(b->w);
 }
 
+/* The speed limits: |v| <= max_linear, |w| <= max_angular (L scaled down). */
+static void limit_speeds(body *b, double max_linear, double max_angular)
+{
+    double vl = v3_len(b->v), wl = v3_len(b->w);
+    if (vl > max_linear) b->v = v3_scale(b->v, max_linear / vl);
+    if (wl > max_angular) {
+        b->L = v3_scale(b->L, max_angular / wl);
+        body_update_w(b);
+    }
+}
+
 void sim_flight(body *b, double h, vec3 a, double max_linear, double max_angular)
 {
     vec3 c0 = body_com(b);
@@ -101,11 +112,7 @@ void sim_flight(body *b, double h, vec3 a, double max_linear, double max_angular
         rotate_free(b, h);
         b->rot_given = false;
         body_update_w(b);
-        double wl = v3_len(b->w);
-        if (wl > max_angular) {
-            b->L = v3_scale(b->L, max_angular / wl);
-            body_update_w(b);
-        }
+        limit_speeds(b, max_linear, max_angular);
     }
     /* the centre of mass moved by d; the origin follows the new orientation */
     b->x = v3_sub(v3_add(c0, d), q_rotate(b->q, b->shape.mass.com));
@@ -127,7 +134,7 @@ int sim_update_pairs(world *w)
     for (int i = 0; i < w->n; i++) {
         for (int j = i + 1; j < w->n; j++) {
             if (body_is_static(w->bodies[i]) && body_is_static(w->bodies[j])) continue;
-            w->pairs[k++] = (pair){i, j, {{CLOSEST_NONE, 0}, {CLOSEST_NONE, 0}, false}, 0, -1, 0, -1, -1};
+            w->pairs[k++] = (pair){.a = i, .b = j, .heap = -1, .toi_a = -1, .toi_b = -1};
         }
     }
     w->npairs = k;
@@ -146,6 +153,15 @@ static bool pair_moves(const world *w, const pair *p)
 static closest_result query(world *w, pair *p, const body *a, const body *b)
 {
     closest_result r = closest_query(a, b, &p->cache);
+    w->st.pair_checks++;
+    if (r.restarted) w->st.restarts++;
+    return r;
+}
+
+/* query for the answer to a collision, from the features of the pair's last one */
+static closest_result query_hit(world *w, pair *p, const body *a, const body *b)
+{
+    closest_result r = closest_query(a, b, &p->hit);
     w->st.pair_checks++;
     if (r.restarted) w->st.restarts++;
     return r;
@@ -329,6 +345,32 @@ static vec3 still_accel(const world *w, const body *b)
     return b->state == STATE_DYNAMIC ? world_body_accel(w, b) : v3(0, 0, 0);
 }
 
+/* The acceleration of body b's point p in free flight: its centre's, plus the
+ * centripetal part w x (w x r) and the torque-free turn dw/dt x r, dw/dt =
+ * -I^-1 (w x L) (Euler's equations). */
+static vec3 point_accel(const world *w, const body *b, vec3 p)
+{
+    if (b->state != STATE_DYNAMIC) return v3(0, 0, 0);
+    vec3 a = world_body_accel(w, b);
+    if (v3_len2(b->w) == 0) return a;
+    vec3 r = v3_sub(p, body_com(b));
+    vec3 dw = v3_neg(m3_mulv(body_inertia_world_inv(b), v3_cross(b->w, b->L)));
+    return v3_add(a, v3_add(v3_cross(b->w, v3_cross(b->w, r)), v3_cross(dw, r)));
+}
+
+/* Body b (object i, flown) as it moves at that instant: a flight turns an object
+ * at the angular momentum it starts with, and only its end is held to
+ * max_angular, so the spin that moves it is the start's. */
+static body moving(const world *w, int i, const body *b)
+{
+    body m = *b;
+    if (m.state == STATE_DYNAMIC && !spins_on_support(&m)) {
+        m.L = w->snap[i].L;
+        body_update_w(&m);
+    }
+    return m;
+}
+
 /* First contact of pair p within [lo, hi] (absolute times), knowing that it
  * touches or penetrates at hi: the latest time found at which it is apart, less
  * than SIM_SEPARATION / 2 apart or within SIM_TOI_TIME of a time it is not.  Each
@@ -338,16 +380,17 @@ static vec3 still_accel(const world *w, const body *b)
  * bracket instead. */
 static double time_of_impact(world *w, pair *p, double lo, double hi)
 {
-    closest_cache cache = p->cache;
+    closest_cache cache = p->hit;
     body a = flown(w, p->a, lo), b = flown(w, p->b, lo);
     closest_result r = closest_query_apart(&a, &b, &cache);
     w->st.pair_checks++;
     if (r.status != CLOSEST_SEPARATED) return lo; /* touching already */
     bool overshot = false;
     while (hi - lo > SIM_TOI_TIME && r.distance >= 0.5 * SIM_SEPARATION) {
-        double safe = lo + sched_predict_bodies(w, &a, &b, r.distance);
-        double s = contact_closing_speed(&a, &b, v3_scale(v3_add(r.pa, r.pb), 0.5), r.normal);
-        double c = v3_dot(v3_sub(still_accel(w, &b), still_accel(w, &a)), r.normal);
+        body ma = moving(w, p->a, &a), mb = moving(w, p->b, &b);
+        double safe = lo + sched_predict_bodies(w, &ma, &mb, r.distance);
+        double s = contact_closing_speed(&ma, &mb, v3_scale(v3_add(r.pa, r.pb), 0.5), r.normal);
+        double c = v3_dot(v3_sub(point_accel(w, &mb, r.pb), point_accel(w, &ma, r.pa)), r.normal);
         /* s t + c t^2 / 2 = D, its least positive root, stably */
         double D = 0.98 * r.distance, disc = s * s + 2 * c * D, t = 0.5 * (lo + hi);
         if (!overshot && disc >= 0 && s + sqrt(disc) > 0) t = lo + 2 * D / (s + sqrt(disc));
@@ -439,7 +482,7 @@ static int settle(world *w, int mi, int si, vec3 n, vec3 support_pt, pair *p, do
         m->q = q;
         m->rot_given = false;
         m->x = v3_sub(c, q_rotate(q, m->shape.mass.com));
-        closest_result r = query(w, p, w->bodies[p->a], w->bodies[p->b]);
+        closest_result r = query_hit(w, p, w->bodies[p->a], w->bodies[p->b]);
         vec3 rn = p->a == mi ? r.normal : v3_neg(r.normal);
         bool ok = r.status == CLOSEST_SEPARATED && r.distance < 4 * SIM_SEPARATION &&
                   v3_dot(rn, n) > 1 - 1e-6 && contact_stable(m, n, 1e-6 * scale);
@@ -471,11 +514,15 @@ static int settle(world *w, int mi, int si, vec3 n, vec3 support_pt, pair *p, do
 }
 
 /* True when body l, pressed from above along -n, is held by what it stands on: it
- * rests, or slides on a support whose normal is n. */
-static bool held(const body *l, vec3 n)
+ * rests (it stays put: *s zero), or slides on a support whose normal *s is within
+ * 45 degrees of n (it moves across *s only). */
+static bool holds(const body *l, vec3 n, vec3 *s)
 {
-    return l->state == STATE_RESTING ||
-           (l->state == STATE_DYNAMIC && l->slide >= 0 && v3_dot(l->slide_n, n) > 0.99);
+    *s = v3(0, 0, 0);
+    if (l->state == STATE_RESTING) return true;
+    if (l->state != STATE_DYNAMIC || l->slide < 0 || v3_dot(l->slide_n, n) < 0.7) return false;
+    *s = l->slide_n;
+    return true;
 }
 
 /* Answers the collision of pair p now: the impulse, the separation, the log; and
@@ -484,7 +531,7 @@ static bool held(const body *l, vec3 n)
 static void collide(world *w, pair *p)
 {
     body *a = w->bodies[p->a], *b = w->bodies[p->b];
-    closest_result r = query(w, p, a, b);
+    closest_result r = query_hit(w, p, a, b);
     if (r.status == CLOSEST_INVALID) return;
     double scale = a->shape.r_out + b->shape.r_out;
     vec3 pt = contact_point(a, b, &r, 1e-6 * scale + fmax(0, -r.distance));
@@ -502,17 +549,15 @@ static void collide(world *w, pair *p)
     bool slow = cs > 0 && cs < SIM_REST_SPEED;
     if (slow && e * cs < leave) e = leave / cs;
     /* in a stack, the object underneath passes a blow from above on to what holds
-     * it: it stays as it is (shock propagation) */
-    int fixed = 0;
-    if (press > 0 && v3_dot(r.normal, up) > 0.7 && held(b, r.normal)) fixed = 2;
-    if (press > 0 && v3_dot(r.normal, up) < -0.7 && held(a, v3_neg(r.normal))) fixed = 1;
+     * it (shock propagation): it moves only along its support, if at all */
+    int held = 0;
+    vec3 s = v3(0, 0, 0);
+    if (press > 0 && v3_dot(r.normal, up) > 0.7 && holds(b, r.normal, &s)) held = 2;
+    if (press > 0 && v3_dot(r.normal, up) < -0.7 && holds(a, v3_neg(r.normal), &s)) held = 1;
     /* a resting object hit by a moving one takes part as a dynamic one */
-    if (a->state == STATE_RESTING && b->state == STATE_DYNAMIC && fixed != 1) wake(w, p->a);
-    if (b->state == STATE_RESTING && a->state == STATE_DYNAMIC && fixed != 2) wake(w, p->b);
-    /* their motion changes: every pair of theirs is due again */
-    sched_object_due(w, p->a, w->time);
-    sched_object_due(w, p->b, w->time);
-    contact c = contact_respond(a, b, pt, r.normal, e, fixed);
+    if (a->state == STATE_RESTING && b->state == STATE_DYNAMIC && held != 1) wake(w, p->a);
+    if (b->state == STATE_RESTING && a->state == STATE_DYNAMIC && held != 2) wake(w, p->b);
+    contact c = contact_respond(a, b, pt, r.normal, e, held, s);
     if (c.impulse > 0) {
         w->st.collisions++;
         log_event(w, a, b, c.point, c.normal, c.impulse, c.speed);
@@ -621,9 +666,12 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
     }
     closest_result r = query_apart(w, p, w->bodies[p->a], w->bodies[p->b]);
     if (r.status != CLOSEST_PENETRATING) return t_end + sched_predict(w, p, r.distance);
-    /* the same flights give the same first contact */
+    /* the first contact is a function of the two flights alone, searched from
+     * where the later of them starts, so that whenever the pair is found the
+     * answer is the same (and is kept while both flights are) */
     if (p->toi_a != w->snap_id[p->a] || p->toi_b != w->snap_id[p->b]) {
-        p->toi = time_of_impact(w, p, now, t_end);
+        double from = fmax(w->snap_t[p->a], w->snap_t[p->b]);
+        p->toi = fmax(time_of_impact(w, p, from, t_end), now);
         p->toi_a = w->snap_id[p->a];
         p->toi_b = w->snap_id[p->b];
     }
@@ -691,7 +739,10 @@ static void answer(world *w, pair *p, double t)
     for (int k = 0; k < 2; k++) {
         int i = ends[k];
         w->touched[i] = false;
-        if (memcmp(&w->pre[i], w->bodies[i], sizeof(body)) != 0) renew_flight(w, i, t);
+        if (memcmp(&w->pre[i], w->bodies[i], sizeof(body)) == 0) continue;
+        /* its motion changed: every pair of its is due again */
+        renew_flight(w, i, t);
+        sched_object_due(w, i, t);
     }
     for (int i = 0; i < w->n; i++) {
         if (!w->touched[i]) continue;

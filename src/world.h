@@ -75,7 +75,10 @@ typedef struct {
  * objects count as dynamic), never static-static (thesis 3.3.2). */
 typedef struct {
     int a, b;             /* body indices, a < b */
-    closest_cache cache;  /* closest features of the last query */
+    closest_cache cache;  /* closest features of the last check */
+    closest_cache hit;    /* those of its last collision: where the time of impact
+                           * and the answer start, so that they do not depend on
+                           * which checks the schedule made (sim.c) */
     double next;          /* earliest time the pair could collide (the schedule) */
     long heap;            /* its place in the schedule's heap */
     double toi;           /* its first contact found in this internal step, valid */

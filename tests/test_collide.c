@@ -438,6 +438,71 @@ static void blow_on_a_stack_passes_to_the_floor(void **state)
     world_free(&w);
 }
 
+/* A ball falls on a ball that slides on the floor, off centre: the sliding ball is
+ * held by the floor along the vertical and moves across it only.  Textbook
+ * answer: the contact impulse j along the normal n and the floor's k along z with
+ * the lower ball's vertical speed staying 0 (k = j n_z) and the normal relative
+ * speed reversed times e; the floor does not act horizontally, so horizontal
+ * momentum is kept. */
+static void blow_on_a_slider_moves_it_along_the_floor(void **state)
+{
+    (void)state;
+    world w;
+    world_init(&w);
+    const double g = 9.8, e = 0.5, m1 = 2, m2 = 1, r = 0.1, step = 0.05;
+    w.set.force = (dir_amount){v3(0, 0, -1), g};
+    w.set.time_step = step;
+    add_static_box(&w, "floor", v3(3, 3, 0.1)); /* its top at z = 0.1 */
+    body *low = add(&w, "low", SHAPE_SPHERE);
+    low->sp.radius = r;
+    rebuild(low);
+    low->elasticity = e;
+    body_set_mass(low, m2);
+    low->x = v3(0, 0, 0.2 + 1e-6);
+    low->v = v3(0.5, 0, 0);
+    body *top = add(&w, "top", SHAPE_SPHERE); /* out of the way until it is thrown */
+    top->sp.radius = r;
+    rebuild(top);
+    top->elasticity = 0.8;
+    body_set_mass(top, m1);
+    top->x = v3(2, 2, 5);
+    frames(&w, 2);
+    assert_int_equal(low->slide, 0);
+    assert_true(low->v.z == 0);
+    vec3 c2 = low->x, v2 = low->v, v1 = v3(0, 0, -2);
+    vec3 c1 = v3_add(c2, v3(0.1, 0, sqrt(3) * 0.1 + 0.01));
+    top->x = c1;
+    top->v = v1;
+    w.sched_dirty = true; /* as after a command */
+    long before = w.st.collisions;
+    double t0 = w.time;
+    frames(&w, 1);
+    assert_int_equal(w.st.collisions - before, 1);
+    /* the instant of contact: |c1(t) - c2(t)| = 2 r, by bisection */
+    double lo = 0, hi = step;
+    for (int k = 0; k < 200; k++) {
+        double t = 0.5 * (lo + hi);
+        vec3 d = v3_sub(v3_add(c1, v3(0, 0, v1.z * t - 0.5 * g * t * t)), v3_mad(c2, v2, t));
+        if (v3_len(d) > 2 * r) lo = t;
+        else hi = t;
+    }
+    double ti = lo;
+    vec3 d = v3_sub(v3_add(c1, v3(0, 0, v1.z * ti - 0.5 * g * ti * ti)), v3_mad(c2, v2, ti));
+    vec3 n = v3_scale(d, 1 / v3_len(d)), u1 = v3(0, 0, v1.z - g * ti);
+    double closing = -v3_dot(v3_sub(u1, v2), n), nz = n.z;
+    /* (u1 + j n / m1 - v2 - (-j n + k z) / m2) . n = e closing, with k = j nz */
+    double j = (1 + e) * closing / (1 / m1 + (1 - nz * nz) / m2);
+    vec3 want1 = v3_add(v3_mad(u1, n, j / m1), v3(0, 0, -g * (w.time - t0 - ti)));
+    vec3 want2 = v3_add(v2, v3_scale(v3_mad(v3_neg(n), v3(0, 0, 1), nz), j / m2));
+    print_message("slider: top v (%.6f %.6f %.6f) want (%.6f %.6f %.6f); low v (%.6f %.6f %.6f)\n",
+                  top->v.x, top->v.y, top->v.z, want1.x, want1.y, want1.z, low->v.x, low->v.y, low->v.z);
+    assert_true(v3_len(v3_sub(top->v, want1)) < 1e-6);
+    assert_true(v3_len(v3_sub(low->v, want2)) < 1e-6);
+    assert_true(low->v.z == 0);
+    assert_near(m1 * top->v.x + m2 * low->v.x, m2 * v2.x, 1e-9);
+    world_free(&w);
+}
+
 static void ball_comes_to_rest_in_finite_time(void **state)
 {
     (void)state;
@@ -527,6 +592,7 @@ int main(void)
         cmocka_unit_test(pillow_rocks_to_a_stop),
         cmocka_unit_test(stack_comes_to_rest),
         cmocka_unit_test(blow_on_a_stack_passes_to_the_floor),
+        cmocka_unit_test(blow_on_a_slider_moves_it_along_the_floor),
         cmocka_unit_test(ball_comes_to_rest_in_finite_time),
         cmocka_unit_test(newtons_cradle),
         cmocka_unit_test(penetration_is_reported),
