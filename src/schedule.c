@@ -139,44 +139,43 @@ double sched_predict_bodies(const world *w, const body *a, const body *b, double
 
 /* ---- the indexed binary heap ---- */
 
-static bool before(const world *w, long i, long j) { return w->pairs[i].next < w->pairs[j].next; }
-
-static void place(world *w, long pos, long i)
+static void place(world *w, long pos, sched_entry e)
 {
-    w->heap[pos] = i;
-    w->pairs[i].heap = pos;
+    w->heap[pos] = e;
+    w->pairs[e.pair].heap = pos;
 }
 
 static void sift_up(world *w, long pos)
 {
-    long i = w->heap[pos];
+    sched_entry e = w->heap[pos];
     while (pos > 0) {
         long parent = (pos - 1) / 2;
-        if (!before(w, i, w->heap[parent])) break;
+        if (!(e.next < w->heap[parent].next)) break;
         place(w, pos, w->heap[parent]);
         pos = parent;
     }
-    place(w, pos, i);
+    place(w, pos, e);
 }
 
 static void sift_down(world *w, long pos)
 {
-    long n = w->npairs, i = w->heap[pos];
+    long n = w->npairs;
+    sched_entry e = w->heap[pos];
     for (;;) {
         long c = 2 * pos + 1;
         if (c >= n) break;
-        if (c + 1 < n && before(w, w->heap[c + 1], w->heap[c])) c++;
-        if (!before(w, w->heap[c], i)) break;
+        if (c + 1 < n && w->heap[c + 1].next < w->heap[c].next) c++;
+        if (!(w->heap[c].next < e.next)) break;
         place(w, pos, w->heap[c]);
         pos = c;
     }
-    place(w, pos, i);
+    place(w, pos, e);
 }
 
 int sched_build(world *w, double t)
 {
     long np = w->npairs;
-    long *heap = malloc((size_t)(np ? np : 1) * sizeof *heap);
+    sched_entry *heap = malloc((size_t)(np ? np : 1) * sizeof *heap);
     long *first = malloc((size_t)(w->n + 1) * sizeof *first);
     long *list = malloc((size_t)(2 * np + 1) * sizeof *list);
     if (!heap || !first || !list) {
@@ -207,7 +206,7 @@ int sched_build(world *w, double t)
     free(fill);
     for (long i = 0; i < np; i++) {
         w->pairs[i].next = t;
-        place(w, i, i); /* all equal: already a heap */
+        place(w, i, (sched_entry){t, i}); /* all equal: already a heap */
     }
     return 0;
 }
@@ -215,16 +214,18 @@ int sched_build(world *w, double t)
 void sched_set(world *w, long i, double next)
 {
     double old = w->pairs[i].next;
+    long pos = w->pairs[i].heap;
     w->pairs[i].next = next;
-    if (next < old) sift_up(w, w->pairs[i].heap);
-    else if (next > old) sift_down(w, w->pairs[i].heap);
+    w->heap[pos].next = next;
+    if (next < old) sift_up(w, pos);
+    else if (next > old) sift_down(w, pos);
 }
 
 long sched_top(const world *w, double *next)
 {
     if (w->npairs == 0) return -1;
-    *next = w->pairs[w->heap[0]].next;
-    return w->heap[0];
+    *next = w->heap[0].next;
+    return w->heap[0].pair;
 }
 
 void sched_object_due(world *w, int k, double t)
@@ -239,9 +240,9 @@ void sched_object_due(world *w, int k, double t)
 int sched_check(const world *w)
 {
     for (long pos = 0; pos < w->npairs; pos++) {
-        long i = w->heap[pos];
-        if (w->pairs[i].heap != pos) return -1;
-        if (pos > 0 && before(w, i, w->heap[(pos - 1) / 2])) return -1;
+        long i = w->heap[pos].pair;
+        if (w->pairs[i].heap != pos || w->pairs[i].next != w->heap[pos].next) return -1;
+        if (pos > 0 && w->heap[pos].next < w->heap[(pos - 1) / 2].next) return -1;
     }
     return 0;
 }

@@ -307,7 +307,9 @@ static int save_states(world *w, double t)
         w->capsnap = w->n;
     }
     for (int i = 0; i < w->n; i++) {
-        w->snap[i] = *w->bodies[i];
+        /* what does not move is where it is: only its state is kept (flown) */
+        if (w->bodies[i]->state == STATE_DYNAMIC) w->snap[i] = *w->bodies[i];
+        else w->snap[i].state = w->bodies[i]->state;
         w->snap_t[i] = t;
         w->snap_id[i] = w->flight_count++;
         w->end_id[i] = -1;
@@ -318,23 +320,22 @@ static int save_states(world *w, double t)
 /* Body i's state at time t (a shallow copy: shares the shape). */
 static body flown(const world *w, int i, double t)
 {
+    if (w->snap[i].state != STATE_DYNAMIC) return *w->bodies[i];
     body b = w->snap[i];
     double dt = t - w->snap_t[i];
-    if (b.state == STATE_DYNAMIC && dt > 0)
-        sim_flight(&b, dt, world_body_accel(w, &b), w->set.max_linear, w->set.max_angular);
+    if (dt > 0) sim_flight(&b, dt, world_body_accel(w, &b), w->set.max_linear, w->set.max_angular);
     return b;
 }
 
 /* Every moving object to the end of the step, t_end: an object whose flight did
- * not change since it was last flown there is where it was then. */
+ * not change since it was last flown there is there already (answer puts back
+ * what it flew to a collision and left unchanged). */
 static void fly_to_end(world *w, double t_end)
 {
     for (int i = 0; i < w->n; i++) {
-        if (w->snap[i].state != STATE_DYNAMIC) continue;
-        if (w->end_id[i] != w->snap_id[i]) {
-            w->end[i] = flown(w, i, t_end);
-            w->end_id[i] = w->snap_id[i];
-        }
+        if (w->snap[i].state != STATE_DYNAMIC || w->end_id[i] == w->snap_id[i]) continue;
+        w->end[i] = flown(w, i, t_end);
+        w->end_id[i] = w->snap_id[i];
         *w->bodies[i] = w->end[i];
     }
 }
@@ -739,7 +740,10 @@ static void answer(world *w, pair *p, double t)
     for (int k = 0; k < 2; k++) {
         int i = ends[k];
         w->touched[i] = false;
-        if (memcmp(&w->pre[i], w->bodies[i], sizeof(body)) == 0) continue;
+        if (memcmp(&w->pre[i], w->bodies[i], sizeof(body)) == 0) {
+            if (w->snap[i].state == STATE_DYNAMIC) *w->bodies[i] = w->end[i]; /* as it was */
+            continue;
+        }
         /* its motion changed: every pair of its is due again */
         renew_flight(w, i, t);
         sched_object_due(w, i, t);

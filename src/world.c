@@ -69,7 +69,8 @@ void world_free(world *w)
     free(w->heap);
     free(w->obj_first);
     free(w->obj_pairs);
-    w->heap = w->obj_first = w->obj_pairs = NULL;
+    w->heap = NULL;
+    w->obj_first = w->obj_pairs = NULL;
     free(w->due);
     free(w->due_next);
     w->due = NULL;

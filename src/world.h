@@ -85,6 +85,13 @@ typedef struct {
     long toi_a, toi_b;    /*   while its objects fly from flights numbered so (sim.c) */
 } pair;
 
+/* An entry of the schedule's heap: a pair's time, kept next to its index so that
+ * sifting reads no pair. */
+typedef struct {
+    double next;
+    long pair;
+} sched_entry;
+
 typedef struct world {
     body **bodies;        /* n bodies, creation order */
     int n, cap;
@@ -103,7 +110,7 @@ typedef struct world {
     pair *pairs;          /* the pairs, rebuilt by the simulation when pairs_dirty */
     long npairs, cappairs;
     bool pairs_dirty;     /* objects were added, deleted or changed mass */
-    long *heap;           /* the schedule: pair indices, a binary min-heap on next */
+    sched_entry *heap;    /* the schedule: a binary min-heap of (next, pair) */
     long *obj_first;      /* the pairs of object k: obj_pairs[obj_first[k] .. */
     long *obj_pairs;      /*   obj_first[k + 1] - 1] */
     bool sched_dirty;     /* a command changed something: every pair is due */
