@@ -42,7 +42,8 @@ static void rotate_about_principal(quat *qp, vec3 *pi, int k, double tau, vec3 i
     double pk = v3_comp(*pi, k), ik = v3_comp(inertia, k);
     double angle = tau * pk / ik;
     if (angle == 0) return;
-    double c = cos(angle), s = sin(angle);
+    double hs = sin(0.5 * angle), hc = cos(0.5 * angle);
+    double c = hc * hc - hs * hs, s = 2 * hs * hc; /* the whole angle's */
     vec3 p = *pi;
     /* pi' = Rot_k(-angle) pi */
     switch (k) {
@@ -50,11 +51,12 @@ static void rotate_about_principal(quat *qp, vec3 *pi, int k, double tau, vec3 i
     case 1: *pi = v3(c * p.x - s * p.z, p.y, s * p.x + c * p.z); break;
     default: *pi = v3(c * p.x + s * p.y, -s * p.x + c * p.y, p.z); break;
     }
-    double hs = sin(0.5 * angle), hc = cos(0.5 * angle);
     quat r = {hc, k == 0 ? hs : 0, k == 1 ? hs : 0, k == 2 ? hs : 0};
     *qp = q_mul(*qp, r);
 }
 
+/* Turns b freely for h seconds, and sets its angular velocity there: w = L / I in
+ * principal axes, turned to world axes. */
 static void rotate_free(body *b, double h)
 {
     if (v3_len2(b->L) == 0) return;
@@ -66,7 +68,9 @@ static void rotate_free(body *b, double h)
     rotate_about_principal(&qp, &pi, 2, h, in);
     rotate_about_principal(&qp, &pi, 1, 0.5 * h, in);
     rotate_about_principal(&qp, &pi, 0, 0.5 * h, in);
-    b->q = q_normalize(q_mul(qp, q_conj(b->q_principal)));
+    qp = q_normalize(qp);
+    b->q = q_mul(qp, q_conj(b->q_principal));
+    b->w = q_rotate(qp, v3(pi.x / in.x, pi.y / in.y, pi.z / in.z));
 }
 
 /* True when b slides on a support turning about the support's normal only (as
@@ -106,12 +110,13 @@ void sim_flight(body *b, double h, vec3 a, double max_linear, double max_angular
         if (fabs(omega) > max_angular) omega = copysign(max_angular, omega);
         b->q = q_normalize(q_mul(q_axis_angle(b->slide_n, omega * h), b->q));
         b->rot_given = false;
-        b->L = m3_mulv(body_inertia_world(b), v3_scale(b->slide_n, omega));
         b->w = v3_scale(b->slide_n, omega);
+        quat qp = q_mul(b->q, b->q_principal); /* L = I w, in principal axes */
+        vec3 wp = q_unrotate(qp, b->w), in = b->I_princ;
+        b->L = q_rotate(qp, v3(wp.x * in.x, wp.y * in.y, wp.z * in.z));
     } else if (v3_len2(b->L) != 0) {
         rotate_free(b, h);
         b->rot_given = false;
-        body_update_w(b);
         limit_speeds(b, max_linear, max_angular);
     }
     /* the centre of mass moved by d; the origin follows the new orientation */
@@ -635,16 +640,24 @@ static double bound_gap(const body *a, const body *b)
     return v3_len(v3_sub(body_com(a), body_com(b))) - a->shape.r_out - b->shape.r_out;
 }
 
+/* True when b's surface stays where it is however b turns: a sphere about its
+ * centre. */
+static bool turns_in_place(const body *b)
+{
+    return b->sp.kind == SHAPE_SPHERE && v3_len2(b->shape.mass.com) == 0;
+}
+
 /* True when object mi slides on a still support si, not towards it, turning
- * about its normal only (or not at all).  The plane between them at their
- * closest points separates them; mi moves along it and its points keep their
- * heights above it, so the pair cannot collide until mi's motion changes, which
+ * about its normal only (or not at all, or a sphere about its centre).  The plane between them at their
+ * closest points separates them; mi moves along it and its surface keeps its
+ * height above it, so the pair cannot collide until mi's motion changes, which
  * makes the pair due again. */
 static bool slides_clear(const world *w, int mi, int si)
 {
     const body *m = w->bodies[mi];
     return m->state == STATE_DYNAMIC && m->slide == si && w->bodies[si]->state != STATE_DYNAMIC &&
-           v3_dot(m->v, m->slide_n) >= 0 && (v3_len2(m->L) == 0 || spins_on_support(m));
+           v3_dot(m->v, m->slide_n) >= 0 &&
+           (v3_len2(m->L) == 0 || spins_on_support(m) || turns_in_place(m));
 }
 
 /* Checks pair i at the end of the step, t_end, for the step that began at now:
