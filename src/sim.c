@@ -366,15 +366,18 @@ static vec3 point_accel(const world *w, const body *b, vec3 p)
 
 /* Body b (object i, flown) as it moves at that instant: a flight turns an object
  * at the angular momentum it starts with, and only its end is held to
- * max_angular, so the spin that moves it is the start's. */
-static body moving(const world *w, int i, const body *b)
+ * max_angular, so the spin that moves it is the start's.  b itself, or scratch
+ * filled in when that spin differs. */
+static const body *moving(const world *w, int i, const body *b, body *scratch)
 {
-    body m = *b;
-    if (m.state == STATE_DYNAMIC && !spins_on_support(&m)) {
-        m.L = w->snap[i].L;
-        body_update_w(&m);
-    }
-    return m;
+    vec3 L = w->snap[i].L;
+    if (b->state != STATE_DYNAMIC || spins_on_support(b) ||
+        (L.x == b->L.x && L.y == b->L.y && L.z == b->L.z))
+        return b;
+    *scratch = *b;
+    scratch->L = L;
+    body_update_w(scratch);
+    return scratch;
 }
 
 /* First contact of pair p within [lo, hi] (absolute times), knowing that it
@@ -391,25 +394,37 @@ static double time_of_impact(world *w, pair *p, double lo, double hi)
     closest_result r = closest_query_apart(&a, &b, &cache);
     w->st.pair_checks++;
     if (r.status != CLOSEST_SEPARATED) return lo; /* touching already */
-    bool overshot = false;
+    double f = 0.98; /* how far along the model's step to go */
+    int overshot = 0;  /* steps in a row that found the pair touching */
     while (hi - lo > SIM_TOI_TIME && r.distance >= 0.5 * SIM_SEPARATION) {
-        body ma = moving(w, p->a, &a), mb = moving(w, p->b, &b);
-        double safe = lo + sched_predict_bodies(w, &ma, &mb, r.distance);
-        double s = contact_closing_speed(&ma, &mb, v3_scale(v3_add(r.pa, r.pb), 0.5), r.normal);
-        double c = v3_dot(v3_sub(point_accel(w, &mb, r.pb), point_accel(w, &ma, r.pa)), r.normal);
+        body sa, sb;
+        const body *ma = moving(w, p->a, &a, &sa), *mb = moving(w, p->b, &b, &sb);
+        double safe = lo + sched_predict_bodies(w, ma, mb, r.distance);
+        double s = contact_closing_speed(ma, mb, v3_scale(v3_add(r.pa, r.pb), 0.5), r.normal);
+        double c = v3_dot(v3_sub(point_accel(w, mb, r.pb), point_accel(w, ma, r.pa)), r.normal);
         /* s t + c t^2 / 2 = D, its least positive root, stably */
-        double D = 0.98 * r.distance, disc = s * s + 2 * c * D, t = 0.5 * (lo + hi);
-        if (!overshot && disc >= 0 && s + sqrt(disc) > 0) t = lo + 2 * D / (s + sqrt(disc));
+        double D = f * r.distance, disc = s * s + 2 * c * D, t = 0.5 * (lo + hi);
+        bool newton = !overshot && disc >= 0 && s + sqrt(disc) > 0;
+        if (newton) t = lo + 2 * D / (s + sqrt(disc));
         t = fmax(t, safe);
-        if (!(t < hi)) t = 0.5 * (fmax(lo, fmin(safe, hi)) + hi);
+        if (!(t < hi)) {
+            newton = false;
+            t = 0.5 * (fmax(lo, fmin(safe, hi)) + hi);
+        }
+        /* touching at every try: the contact is early in the bracket */
+        if (overshot >= 2) t = fmin(t, lo + 0.25 * (hi - lo));
         if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
         body ta = flown(w, p->a, t), tb = flown(w, p->b, t);
         closest_result rt = closest_query_apart(&ta, &tb, &cache);
         w->st.pair_checks++;
-        overshot = rt.status != CLOSEST_SEPARATED;
-        if (overshot) {
+        if (rt.status != CLOSEST_SEPARATED) {
             hi = t;
+            overshot++;
+            f = 0.98;
         } else {
+            /* where the model held (the rest is about what it left), trust it more */
+            if (newton) f = rt.distance <= 2 * (1 - f) * r.distance ? 0.998 : 0.98;
+            overshot = 0;
             lo = t;
             a = ta;
             b = tb;
@@ -667,9 +682,11 @@ static bool slides_clear(const world *w, int mi, int si)
 static double check_pair(world *w, long i, double now, double t_end, pair **first, double *when)
 {
     pair *p = &w->pairs[i];
+    p->checked = HUGE_VAL;
     if (!pair_moves(w, p)) return HUGE_VAL;
     if (w->set.collision_heap && (slides_clear(w, p->a, p->b) || slides_clear(w, p->b, p->a)))
         return HUGE_VAL;
+    p->checked = t_end;
     /* far apart: the bounding spheres' gap bounds the distance from below, and is
      * enough for a prediction beyond the frame (part of the schedule: without it
      * every pair gets its closest-feature check, as in the thesis's Table 5.3) */
@@ -734,6 +751,20 @@ static void renew_flight(world *w, int i, double t)
     w->snap_id[i] = w->flight_count++;
 }
 
+/* True when body b, which was a at the same instant, moves no faster than a in
+ * every term of the schedule's bound: where it is, its speed, its acceleration
+ * and its angular momentum.  A pair predicted at an earlier instant from a's
+ * speeds then stays predicted: the bound took a's speed then plus the
+ * acceleration since as its speed from then on, and b does not exceed that. */
+static bool no_faster(const world *w, const body *a, const body *b)
+{
+    return a->state == STATE_DYNAMIC && v3_len2(v3_sub(a->x, b->x)) == 0 &&
+           a->q.w == b->q.w && a->q.x == b->q.x && a->q.y == b->q.y && a->q.z == b->q.z &&
+           v3_len(b->v) <= v3_len(a->v) && v3_len(b->L) <= v3_len(a->L) &&
+           (b->state != STATE_DYNAMIC ||
+            v3_len(world_body_accel(w, b)) <= v3_len(world_body_accel(w, a)));
+}
+
 /* Answers the collision of pair p at time t.  Only its two objects are flown
  * there; the others stay at the end of the step, where the next check wants
  * them (settle flies the neighbours it looks at).  What the answer changes flies
@@ -757,9 +788,17 @@ static void answer(world *w, pair *p, double t)
             if (w->snap[i].state == STATE_DYNAMIC) *w->bodies[i] = w->end[i]; /* as it was */
             continue;
         }
-        /* its motion changed: every pair of its is due again */
         renew_flight(w, i, t);
-        sched_object_due(w, i, t);
+        /* its motion changed: its pairs are due again, unless they were found from
+         * its speeds at an earlier instant and it is no faster now */
+        if (!no_faster(w, &w->pre[i], w->bodies[i])) {
+            sched_object_due(w, i, t);
+            continue;
+        }
+        for (long j = w->obj_first[i]; j < w->obj_first[i + 1]; j++) {
+            long k = w->obj_pairs[j];
+            if (w->pairs[k].checked > t && w->pairs[k].next > t) sched_set(w, k, t);
+        }
     }
     for (int i = 0; i < w->n; i++) {
         if (!w->touched[i]) continue;

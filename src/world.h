@@ -80,6 +80,8 @@ typedef struct {
                            * and the answer start, so that they do not depend on
                            * which checks the schedule made (sim.c) */
     double next;          /* earliest time the pair could collide (the schedule) */
+    double checked;       /* when next was found from its objects' speeds, or +inf
+                           * when it holds only while their motions do (sim.c) */
     long heap;            /* its place in the schedule's heap */
     double toi;           /* its first contact found in this internal step, valid */
     long toi_a, toi_b;    /*   while its objects fly from flights numbered so (sim.c) */
