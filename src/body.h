@@ -59,6 +59,7 @@ typedef struct body {
     int slide;         /* the support it slides on (see sim.c), or -1 */
     long slide_pair;   /* the pair of that contact in world.pairs */
     vec3 slide_n;      /* that support's normal, towards this body */
+    long shifts;       /* how many times collisions set it apart (sim.c) */
 } body;
 
 /* A fresh body of the given kind named name, with the thesis's defaults:

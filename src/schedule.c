@@ -93,7 +93,7 @@ static double piece_root(double a, double b, double c, double target)
     return b > 0 ? -cc / b : HUGE_VAL;
 }
 
-double sched_predict_bodies(const world *w, const body *a, const body *b, double d)
+static double predict(const world *w, const body *a, const body *b, double d, bool any_spin)
 {
     if (d <= 0) return 0;
     const body *ob[2] = {a, b};
@@ -104,6 +104,12 @@ double sched_predict_bodies(const world *w, const body *a, const body *b, double
         if (ob[k]->state == STATE_DYNAMIC)
             r[n++] = terms_of(ob[k], v3_len(world_body_accel(w, ob[k])), vmax);
     if (n == 0) return HUGE_VAL;
+    if (any_spin)
+        for (int k = 0; k < n; k++) { /* the whole turn at once */
+            r[k].cap = ob[k]->shape.r_out - ob[k]->shape.r_in;
+            r[k].rate = 0;
+            r[k].t_rot = 0;
+        }
     /* a margin for the rounding of the flight and of the distance */
     double target = d - 1e-9 * (1 + ob[0]->shape.r_out + ob[1]->shape.r_out);
     if (target <= 0) return 0;
@@ -135,6 +141,16 @@ double sched_predict_bodies(const world *w, const body *a, const body *b, double
         return t;
     }
     return HUGE_VAL;
+}
+
+double sched_predict_bodies(const world *w, const body *a, const body *b, double d)
+{
+    return predict(w, a, b, d, false);
+}
+
+double sched_predict_far(const world *w, const pair *p, double d, double sep)
+{
+    return predict(w, w->bodies[p->a], w->bodies[p->b], d - SCHED_SHIFTS * sep, true);
 }
 
 /* ---- the indexed binary heap ---- */

@@ -20,6 +20,17 @@ double sched_predict(const world *w, const pair *p, double d);
 /* The same for objects a and b in the states given (not necessarily the world's). */
 double sched_predict_bodies(const world *w, const body *a, const body *b, double d);
 
+/* Shifts a pair's prediction from sched_predict_far allows: collisions may set its
+ * objects apart by up to sep this many times in all before it must be made again. */
+#define SCHED_SHIFTS 16
+
+/* A bound for pair p, d apart now, that holds whatever its objects' spins become
+ * (each turns its surface by all of R - r at once) and through SCHED_SHIFTS
+ * shifts of up to sep each: so that a collision that spins an object faster, or
+ * sets it a hair apart, leaves the pair's time as it was.  It is earlier than
+ * sched_predict's by little when d is large. */
+double sched_predict_far(const world *w, const pair *p, double d, double sep);
+
 /* Builds the heap over every pair, all due at time t, and the lists of each
  * object's pairs.  Returns 0, or -1 when out of memory. */
 int sched_build(world *w, double t);

@@ -435,7 +435,9 @@ static double time_of_impact(world *w, pair *p, double lo, double hi)
 }
 
 /* Moves the dynamic objects of the pair apart along n until they are sep apart
- * (they are gap apart now), the lighter one more. */
+ * (they are gap apart now), the lighter one more, so that their centre of mass
+ * stays; when both move, their spins take back the angular momentum the shift
+ * adds (s n x (va - vb)), so that it stays too. */
 static void separate(body *a, body *b, vec3 n, double gap, double sep)
 {
     double need = sep - gap;
@@ -443,8 +445,18 @@ static void separate(body *a, body *b, vec3 n, double gap, double sep)
     double ia = a->state == STATE_DYNAMIC ? a->inv_mass : 0;
     double ib = b->state == STATE_DYNAMIC ? b->inv_mass : 0;
     if (ia + ib == 0) return;
-    a->x = v3_mad(a->x, n, need * ia / (ia + ib));
-    b->x = v3_mad(b->x, n, -need * ib / (ia + ib));
+    double s = need / (ia + ib);
+    a->x = v3_mad(a->x, n, s * ia);
+    b->x = v3_mad(b->x, n, -s * ib);
+    a->shifts += ia > 0;
+    b->shifts += ib > 0;
+    if (ia > 0 && ib > 0) {
+        vec3 half = v3_scale(v3_cross(n, v3_sub(a->v, b->v)), 0.5 * s);
+        a->L = v3_sub(a->L, half);
+        b->L = v3_sub(b->L, half);
+        body_update_w(a);
+        body_update_w(b);
+    }
 }
 
 /* The contact state of body m on support s (index si, normal n from s to m, pair
@@ -585,9 +597,10 @@ static void collide(world *w, pair *p)
     }
     /* the contact state: an object that barely bounces off a support under it rests
      * on it, or slides on it when it still moves along it */
-    /* a pair that touches, or that touched without approaching (a glancing or
-     * rotating contact), is set apart, so that the step goes on */
-    bool apart = r.distance <= 0 || c.impulse == 0;
+    /* the pair is set apart, so that the step goes on and a later contact of
+     * theirs (a rocking object's other corner) is found from a gap, not from
+     * touching */
+    bool apart = r.distance < SIM_SEPARATION;
     if (v3_len2(g) == 0) {
         if (apart) separate(a, b, r.normal, r.distance, SIM_SEPARATION);
         return;
@@ -691,9 +704,15 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
      * enough for a prediction beyond the frame (part of the schedule: without it
      * every pair gets its closest-feature check, as in the thesis's Table 5.3) */
     double gap = w->set.collision_heap ? bound_gap(w->bodies[p->a], w->bodies[p->b]) : 0;
+    p->far = false;
     if (gap > 0) {
-        double ahead = sched_predict(w, p, gap);
-        if (ahead >= w->set.time_step) return t_end + ahead;
+        double ahead = sched_predict_far(w, p, gap, SIM_SEPARATION);
+        if (ahead >= w->set.time_step) {
+            p->far = true;
+            p->shifts_a = w->bodies[p->a]->shifts;
+            p->shifts_b = w->bodies[p->b]->shifts;
+            return t_end + ahead;
+        }
     }
     closest_result r = query_apart(w, p, w->bodies[p->a], w->bodies[p->b]);
     if (r.status != CLOSEST_PENETRATING) return t_end + sched_predict(w, p, r.distance);
@@ -751,18 +770,43 @@ static void renew_flight(world *w, int i, double t)
     w->snap_id[i] = w->flight_count++;
 }
 
-/* True when body b, which was a at the same instant, moves no faster than a in
- * every term of the schedule's bound: where it is, its speed, its acceleration
- * and its angular momentum.  A pair predicted at an earlier instant from a's
- * speeds then stays predicted: the bound took a's speed then plus the
- * acceleration since as its speed from then on, and b does not exceed that. */
-static bool no_faster(const world *w, const body *a, const body *b)
+/* How body b, which was a at the same instant, moves compared with a, for the
+ * schedule's bounds: KEEPS when it moves no faster in any term of sched_predict's
+ * bound (the same place, no more speed, acceleration or angular momentum), NEAR
+ * when it is also at most a separation away but may spin faster (what
+ * sched_predict_far's bound allows), FASTER otherwise.  A pair predicted at an
+ * earlier instant from a's speeds stays predicted when b is no faster: the bound
+ * took a's speed then plus the acceleration since as its speed from then on. */
+enum { KEEPS, NEAR, FASTER };
+
+static int compared(const world *w, const body *a, const body *b)
 {
-    return a->state == STATE_DYNAMIC && v3_len2(v3_sub(a->x, b->x)) == 0 &&
-           a->q.w == b->q.w && a->q.x == b->q.x && a->q.y == b->q.y && a->q.z == b->q.z &&
-           v3_len(b->v) <= v3_len(a->v) && v3_len(b->L) <= v3_len(a->L) &&
-           (b->state != STATE_DYNAMIC ||
-            v3_len(world_body_accel(w, b)) <= v3_len(world_body_accel(w, a)));
+    if (a->state != STATE_DYNAMIC || v3_len(b->v) > v3_len(a->v) ||
+        (b->state == STATE_DYNAMIC && v3_len(world_body_accel(w, b)) > v3_len(world_body_accel(w, a))))
+        return FASTER;
+    bool turned = a->q.w != b->q.w || a->q.x != b->q.x || a->q.y != b->q.y || a->q.z != b->q.z;
+    double moved = v3_len(v3_sub(a->x, b->x));
+    if (turned || moved > SIM_SEPARATION) return FASTER;
+    return moved == 0 && v3_len(b->L) <= v3_len(a->L) ? KEEPS : NEAR;
+}
+
+/* Makes due at time t the pairs of object i that its new motion (how, from
+ * compared) may bring together before their time. */
+static void reschedule(world *w, int i, int how, double t)
+{
+    if (how == FASTER) {
+        sched_object_due(w, i, t);
+        return;
+    }
+    for (long j = w->obj_first[i]; j < w->obj_first[i + 1]; j++) {
+        long k = w->obj_pairs[j];
+        const pair *q = &w->pairs[k];
+        bool keep = q->checked <= t; /* found from speeds at an earlier instant */
+        if (keep && how == NEAR)
+            keep = q->far && w->bodies[q->a]->shifts - q->shifts_a + w->bodies[q->b]->shifts -
+                                     q->shifts_b <= SCHED_SHIFTS;
+        if (!keep && q->next > t) sched_set(w, k, t);
+    }
 }
 
 /* Answers the collision of pair p at time t.  Only its two objects are flown
@@ -789,16 +833,8 @@ static void answer(world *w, pair *p, double t)
             continue;
         }
         renew_flight(w, i, t);
-        /* its motion changed: its pairs are due again, unless they were found from
-         * its speeds at an earlier instant and it is no faster now */
-        if (!no_faster(w, &w->pre[i], w->bodies[i])) {
-            sched_object_due(w, i, t);
-            continue;
-        }
-        for (long j = w->obj_first[i]; j < w->obj_first[i + 1]; j++) {
-            long k = w->obj_pairs[j];
-            if (w->pairs[k].checked > t && w->pairs[k].next > t) sched_set(w, k, t);
-        }
+        /* its motion changed: its pairs are due again, unless their times hold */
+        reschedule(w, i, compared(w, &w->pre[i], w->bodies[i]), t);
     }
     for (int i = 0; i < w->n; i++) {
         if (!w->touched[i]) continue;

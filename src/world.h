@@ -85,6 +85,8 @@ typedef struct {
     long heap;            /* its place in the schedule's heap */
     double toi;           /* its first contact found in this internal step, valid */
     long toi_a, toi_b;    /*   while its objects fly from flights numbered so (sim.c) */
+    bool far;             /* next came from sched_predict_far, when its objects had */
+    long shifts_a, shifts_b; /*  been set apart so many times */
 } pair;
 
 /* An entry of the schedule's heap: a pair's time, kept next to its index so that
