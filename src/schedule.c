@@ -100,16 +100,17 @@ static double predict(const world *w, const body *a, const body *b, double d, bo
     double vmax = w->set.max_linear;
     reach_terms r[2];
     int n = 0;
-    for (int k = 0; k < 2; k++)
-        if (ob[k]->state == STATE_DYNAMIC)
-            r[n++] = terms_of(ob[k], v3_len(world_body_accel(w, ob[k])), vmax);
-    if (n == 0) return HUGE_VAL;
-    if (any_spin)
-        for (int k = 0; k < n; k++) { /* the whole turn at once */
-            r[k].cap = ob[k]->shape.r_out - ob[k]->shape.r_in;
-            r[k].rate = 0;
-            r[k].t_rot = 0;
+    for (int k = 0; k < 2; k++) {
+        if (ob[k]->state != STATE_DYNAMIC) continue;
+        r[n] = terms_of(ob[k], v3_len(world_body_accel(w, ob[k])), vmax);
+        if (any_spin) { /* the whole turn at once */
+            r[n].cap = ob[k]->shape.r_out - ob[k]->shape.r_in;
+            r[n].rate = 0;
+            r[n].t_rot = 0;
         }
+        n++;
+    }
+    if (n == 0) return HUGE_VAL;
     /* a margin for the rounding of the flight and of the distance */
     double target = d - 1e-9 * (1 + ob[0]->shape.r_out + ob[1]->shape.r_out);
     if (target <= 0) return 0;

@@ -333,6 +333,17 @@ int shape_build(shape *s, const shape_params *p, char *err, size_t errlen)
         set_err(err, errlen, "unknown shape kind %d", (int)params.kind);
         rc = -1;
     }
+    if (rc == 0) { /* the bounding box, in body axes */
+        vec3 r = v3(s->p.radius, s->p.radius, s->p.radius);
+        s->box_lo = v3_neg(r);
+        s->box_hi = r;
+        for (int k = 0; s->hull && k < s->hull->nv; k++) {
+            vec3 v = s->hull->v[k];
+            if (k == 0) s->box_lo = s->box_hi = v;
+            s->box_lo = v3(fmin(s->box_lo.x, v.x), fmin(s->box_lo.y, v.y), fmin(s->box_lo.z, v.z));
+            s->box_hi = v3(fmax(s->box_hi.x, v.x), fmax(s->box_hi.y, v.y), fmax(s->box_hi.z, v.z));
+        }
+    }
     /* the Voronoi regions of the hull's features, for closest-feature tracking */
     if (rc == 0 && s->hull && !(s->feat = closest_hull_new(s->hull))) {
         set_err(err, errlen, "out of memory for the closest-feature data");

@@ -46,6 +46,7 @@ typedef struct {
     mesh draw;           /* what the renderer draws */
     mass_props mass;     /* unit density, body frame */
     double r_in, r_out;  /* inscribed and circumscribed radius about mass.com */
+    vec3 box_lo, box_hi; /* the box, in body axes, that holds the shape */
     struct closest_hull *feat; /* closest_hull_new(hull), NULL for a sphere */
 } shape;
 

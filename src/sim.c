@@ -661,11 +661,26 @@ static int due_room(world *w, long n)
     return 0;
 }
 
-/* The gap between the spheres about a's and b's centres of mass that hold them: no
- * more than their distance. */
+/* How far the sphere about a's centre of mass that holds a is outside b's
+ * bounding box (negative inside it). */
+static double box_gap(const body *a, const body *b)
+{
+    vec3 p = q_unrotate(b->q, v3_sub(body_com(a), b->x));
+    vec3 lo = b->shape.box_lo, hi = b->shape.box_hi;
+    vec3 out = v3(fmax(0, fmax(lo.x - p.x, p.x - hi.x)), fmax(0, fmax(lo.y - p.y, p.y - hi.y)),
+                  fmax(0, fmax(lo.z - p.z, p.z - hi.z)));
+    return v3_len(out) - a->shape.r_out;
+}
+
+/* A gap no more than the distance of a and b: between the spheres about their
+ * centres of mass that hold them, or, when one is much the larger (a floor, a
+ * wall, a table), between the other's sphere and its bounding box. */
 static double bound_gap(const body *a, const body *b)
 {
-    return v3_len(v3_sub(body_com(a), body_com(b))) - a->shape.r_out - b->shape.r_out;
+    double gap = v3_len(v3_sub(body_com(a), body_com(b))) - a->shape.r_out - b->shape.r_out;
+    if (a->shape.r_out > 2 * b->shape.r_out) gap = fmax(gap, box_gap(b, a));
+    else if (b->shape.r_out > 2 * a->shape.r_out) gap = fmax(gap, box_gap(a, b));
+    return gap;
 }
 
 /* True when b's surface stays where it is however b turns: a sphere about its
