@@ -418,9 +418,25 @@ static double time_of_impact(world *w, pair *p, double lo, double hi)
         closest_result rt = closest_query_apart(&ta, &tb, &cache);
         w->st.pair_checks++;
         if (rt.status != CLOSEST_SEPARATED) {
+            /* a trusted step that just overshot: the contact is just short of it */
+            double back = newton && f > 0.99 ? lo + 0.9 * (t - lo) : -1;
             hi = t;
             overshot++;
             f = 0.98;
+            if (back > lo) {
+                body ba = flown(w, p->a, back), bb = flown(w, p->b, back);
+                closest_result rb = closest_query_apart(&ba, &bb, &cache);
+                w->st.pair_checks++;
+                if (rb.status != CLOSEST_SEPARATED) {
+                    hi = back;
+                } else {
+                    overshot = 0;
+                    lo = back;
+                    a = ba;
+                    b = bb;
+                    r = rb;
+                }
+            }
         } else {
             /* where the model held (the rest is about what it left), trust it more */
             if (newton) f = rt.distance <= 2 * (1 - f) * r.distance ? 0.998 : 0.98;
@@ -432,6 +448,28 @@ static double time_of_impact(world *w, pair *p, double lo, double hi)
         }
     }
     return lo;
+}
+
+/* How far the sphere about a's centre of mass that holds a is outside b's
+ * bounding box (negative inside it). */
+static double box_gap(const body *a, const body *b)
+{
+    vec3 p = q_unrotate(b->q, v3_sub(body_com(a), b->x));
+    vec3 lo = b->shape.box_lo, hi = b->shape.box_hi;
+    vec3 out = v3(fmax(0, fmax(lo.x - p.x, p.x - hi.x)), fmax(0, fmax(lo.y - p.y, p.y - hi.y)),
+                  fmax(0, fmax(lo.z - p.z, p.z - hi.z)));
+    return v3_len(out) - a->shape.r_out;
+}
+
+/* A gap no more than the distance of a and b: between the spheres about their
+ * centres of mass that hold them, or, when one is much the larger (a floor, a
+ * wall, a table), between the other's sphere and its bounding box. */
+static double bound_gap(const body *a, const body *b)
+{
+    double gap = v3_len(v3_sub(body_com(a), body_com(b))) - a->shape.r_out - b->shape.r_out;
+    if (a->shape.r_out > 2 * b->shape.r_out) gap = fmax(gap, box_gap(b, a));
+    else if (b->shape.r_out > 2 * a->shape.r_out) gap = fmax(gap, box_gap(a, b));
+    return gap;
 }
 
 /* Moves the dynamic objects of the pair apart along n until they are sep apart
@@ -523,8 +561,9 @@ static int settle(world *w, int mi, int si, vec3 n, vec3 support_pt, pair *p, do
             pair *o = &w->pairs[w->obj_pairs[j]];
             if (o == p) continue;
             /* the other object where it is now (only the pair is flown to the
-             * collision: see internal_step) */
+             * collision: see internal_step), unless it is clearly out of reach */
             body other = flown(w, o->a == mi ? o->b : o->a, w->time);
+            if (bound_gap(m, &other) > SIM_SEPARATION) continue;
             closest_result ro = o->a == mi ? query(w, o, m, &other) : query(w, o, &other, m);
             if (ro.status != CLOSEST_SEPARATED || ro.distance < SIM_SEPARATION) ok = false;
         }
@@ -659,28 +698,6 @@ static int due_room(world *w, long n)
     if (!d || !dn) return -1;
     w->capdue = n;
     return 0;
-}
-
-/* How far the sphere about a's centre of mass that holds a is outside b's
- * bounding box (negative inside it). */
-static double box_gap(const body *a, const body *b)
-{
-    vec3 p = q_unrotate(b->q, v3_sub(body_com(a), b->x));
-    vec3 lo = b->shape.box_lo, hi = b->shape.box_hi;
-    vec3 out = v3(fmax(0, fmax(lo.x - p.x, p.x - hi.x)), fmax(0, fmax(lo.y - p.y, p.y - hi.y)),
-                  fmax(0, fmax(lo.z - p.z, p.z - hi.z)));
-    return v3_len(out) - a->shape.r_out;
-}
-
-/* A gap no more than the distance of a and b: between the spheres about their
- * centres of mass that hold them, or, when one is much the larger (a floor, a
- * wall, a table), between the other's sphere and its bounding box. */
-static double bound_gap(const body *a, const body *b)
-{
-    double gap = v3_len(v3_sub(body_com(a), body_com(b))) - a->shape.r_out - b->shape.r_out;
-    if (a->shape.r_out > 2 * b->shape.r_out) gap = fmax(gap, box_gap(b, a));
-    else if (b->shape.r_out > 2 * a->shape.r_out) gap = fmax(gap, box_gap(a, b));
-    return gap;
 }
 
 /* True when b's surface stays where it is however b turns: a sphere about its
