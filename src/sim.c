@@ -661,6 +661,48 @@ static void collide(world *w, pair *p)
     if (apart || settled) separate(a, b, r.normal, r.distance, SIM_SEPARATION);
 }
 
+/* True when b's surface stays where it is however b turns: a sphere about its
+ * centre. */
+static bool turns_in_place(const body *b)
+{
+    return b->sp.kind == SHAPE_SPHERE && v3_len2(b->shape.mass.com) == 0;
+}
+
+/* True when object mi slides on a still support si, not towards it, turning
+ * about its normal only (or not at all, or a sphere about its centre).  The plane between them at their
+ * closest points separates them; mi moves along it and its surface keeps its
+ * height above it, so the pair cannot collide until mi's motion changes, which
+ * makes the pair due again. */
+static bool slides_clear(const world *w, int mi, int si)
+{
+    const body *m = w->bodies[mi];
+    return m->state == STATE_DYNAMIC && m->slide == si && w->bodies[si]->state != STATE_DYNAMIC &&
+           v3_dot(m->v, m->slide_n) >= 0 &&
+           (v3_len2(m->L) == 0 || spins_on_support(m) || turns_in_place(m));
+}
+
+/* True when object i slides on a face of a still box in a way that keeps it
+ * there: as slides_clear allows, along the face, the normal one of the box's
+ * axes, and its bounding sphere within the face's sides.  Then the contact is
+ * as it was, and needs no query. */
+static bool on_the_face(const world *w, int i)
+{
+    const body *m = w->bodies[i], *s = w->bodies[m->slide];
+    if (s->sp.kind != SHAPE_CUBE || !slides_clear(w, i, m->slide) ||
+        v3_dot(m->v, m->slide_n) > 1e-9) /* rising off it: 0.1 mm in a day */
+        return false;
+    vec3 n = q_unrotate(s->q, m->slide_n), p = q_unrotate(s->q, v3_sub(body_com(m), s->x));
+    double r = m->shape.r_out;
+    vec3 lo = s->shape.box_lo, hi = s->shape.box_hi;
+    if (fabs(n.x) > 1 - 1e-9)
+        return p.y - r >= lo.y && p.y + r <= hi.y && p.z - r >= lo.z && p.z + r <= hi.z;
+    if (fabs(n.y) > 1 - 1e-9)
+        return p.x - r >= lo.x && p.x + r <= hi.x && p.z - r >= lo.z && p.z + r <= hi.z;
+    if (fabs(n.z) > 1 - 1e-9)
+        return p.x - r >= lo.x && p.x + r <= hi.x && p.y - r >= lo.y && p.y + r <= hi.y;
+    return false;
+}
+
 /* Sliding objects leave their support when they lift off, pass its edge, stop
  * standing stably on it or are thrown off it. */
 static void check_slides(world *w)
@@ -672,6 +714,7 @@ static void check_slides(world *w)
             m->slide = -1;
             continue;
         }
+        if (on_the_face(w, i)) continue;
         pair *p = &w->pairs[m->slide_pair];
         const body *s = w->bodies[m->slide];
         closest_result r = query_apart(w, p, w->bodies[p->a], w->bodies[p->b]);
@@ -698,26 +741,6 @@ static int due_room(world *w, long n)
     if (!d || !dn) return -1;
     w->capdue = n;
     return 0;
-}
-
-/* True when b's surface stays where it is however b turns: a sphere about its
- * centre. */
-static bool turns_in_place(const body *b)
-{
-    return b->sp.kind == SHAPE_SPHERE && v3_len2(b->shape.mass.com) == 0;
-}
-
-/* True when object mi slides on a still support si, not towards it, turning
- * about its normal only (or not at all, or a sphere about its centre).  The plane between them at their
- * closest points separates them; mi moves along it and its surface keeps its
- * height above it, so the pair cannot collide until mi's motion changes, which
- * makes the pair due again. */
-static bool slides_clear(const world *w, int mi, int si)
-{
-    const body *m = w->bodies[mi];
-    return m->state == STATE_DYNAMIC && m->slide == si && w->bodies[si]->state != STATE_DYNAMIC &&
-           v3_dot(m->v, m->slide_n) >= 0 &&
-           (v3_len2(m->L) == 0 || spins_on_support(m) || turns_in_place(m));
 }
 
 /* Checks pair i at the end of the step, t_end, for the step that began at now:

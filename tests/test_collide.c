@@ -503,6 +503,39 @@ static void blow_on_a_slider_moves_it_along_the_floor(void **state)
     world_free(&w);
 }
 
+/* A ball slides along a table at 1 m/s: flat while it is over the table (its
+ * contact needs no check there), and off the edge it falls. */
+static void slider_leaves_the_table_at_its_edge(void **state)
+{
+    (void)state;
+    world w;
+    world_init(&w);
+    w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
+    w.set.time_step = 0.05;
+    add_static_box(&w, "table", v3(0.5, 0.5, 0.05)); /* top at z = 0.05, edge at x = 0.5 */
+    body *ball = add(&w, "ball", SHAPE_SPHERE);
+    ball->sp.radius = 0.1;
+    rebuild(ball);
+    ball->elasticity = 0;
+    ball->x = v3(-0.45, 0, 0.15 + 1e-6);
+    ball->v = v3(1, 0, 0);
+    frames(&w, 2);
+    assert_int_equal(ball->slide, 0);
+    double z = ball->x.z;
+    assert_near(z, 0.15, 1e-6);
+    while (ball->x.x < 0.45) { /* its centre over the table */
+        frames(&w, 1);
+        assert_int_equal(ball->slide, 0);
+        assert_true(ball->x.z == z);
+    }
+    frames(&w, 10); /* half a second later it has left the table */
+    print_message("slider: at x %.3f z %.3f after the edge, slide %d\n", ball->x.x, ball->x.z, ball->slide);
+    assert_int_equal(ball->slide, -1);
+    assert_true(ball->x.z < 0);
+    assert_true(ball->x.x > 0.5);
+    world_free(&w);
+}
+
 static void ball_comes_to_rest_in_finite_time(void **state)
 {
     (void)state;
@@ -593,6 +626,7 @@ int main(void)
         cmocka_unit_test(stack_comes_to_rest),
         cmocka_unit_test(blow_on_a_stack_passes_to_the_floor),
         cmocka_unit_test(blow_on_a_slider_moves_it_along_the_floor),
+        cmocka_unit_test(slider_leaves_the_table_at_its_edge),
         cmocka_unit_test(ball_comes_to_rest_in_finite_time),
         cmocka_unit_test(newtons_cradle),
         cmocka_unit_test(penetration_is_reported),
