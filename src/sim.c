@@ -677,7 +677,7 @@ static bool slides_clear(const world *w, int mi, int si)
 {
     const body *m = w->bodies[mi];
     return m->state == STATE_DYNAMIC && m->slide == si && w->bodies[si]->state != STATE_DYNAMIC &&
-           v3_dot(m->v, m->slide_n) >= 0 &&
+           v3_dot(m->v, m->slide_n) >= -1e-12 && /* (rounding: 1e-7 m in a day) */
            (v3_len2(m->L) == 0 || spins_on_support(m) || turns_in_place(m));
 }
 
@@ -689,7 +689,7 @@ static bool on_the_face(const world *w, int i)
 {
     const body *m = w->bodies[i], *s = w->bodies[m->slide];
     if (s->sp.kind != SHAPE_CUBE || !slides_clear(w, i, m->slide) ||
-        v3_dot(m->v, m->slide_n) > 1e-9) /* rising off it: 0.1 mm in a day */
+        v3_dot(m->v, m->slide_n) > 1e-12) /* rising off it */
         return false;
     vec3 n = q_unrotate(s->q, m->slide_n), p = q_unrotate(s->q, v3_sub(body_com(m), s->x));
     double r = m->shape.r_out;
