@@ -456,8 +456,10 @@ static double box_gap(const body *a, const body *b)
 {
     vec3 p = q_unrotate(b->q, v3_sub(body_com(a), b->x));
     vec3 lo = b->shape.box_lo, hi = b->shape.box_hi;
-    vec3 out = v3(fmax(0, fmax(lo.x - p.x, p.x - hi.x)), fmax(0, fmax(lo.y - p.y, p.y - hi.y)),
-                  fmax(0, fmax(lo.z - p.z, p.z - hi.z)));
+    /* how far p is outside the box along each axis (0 within it) */
+    vec3 out = v3(p.x < lo.x ? lo.x - p.x : p.x > hi.x ? p.x - hi.x : 0,
+                  p.y < lo.y ? lo.y - p.y : p.y > hi.y ? p.y - hi.y : 0,
+                  p.z < lo.z ? lo.z - p.z : p.z > hi.z ? p.z - hi.z : 0);
     return v3_len(out) - a->shape.r_out;
 }
 
@@ -467,9 +469,10 @@ static double box_gap(const body *a, const body *b)
 static double bound_gap(const body *a, const body *b)
 {
     double gap = v3_len(v3_sub(body_com(a), body_com(b))) - a->shape.r_out - b->shape.r_out;
-    if (a->shape.r_out > 2 * b->shape.r_out) gap = fmax(gap, box_gap(b, a));
-    else if (b->shape.r_out > 2 * a->shape.r_out) gap = fmax(gap, box_gap(a, b));
-    return gap;
+    double box = a->shape.r_out > 2 * b->shape.r_out   ? box_gap(b, a)
+                 : b->shape.r_out > 2 * a->shape.r_out ? box_gap(a, b)
+                                                       : gap;
+    return box > gap ? box : gap;
 }
 
 /* Moves the dynamic objects of the pair apart along n until they are sep apart
