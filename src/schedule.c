@@ -114,6 +114,22 @@ static double predict(const world *w, const body *a, const body *b, double d, bo
     /* a margin for the rounding of the flight and of the distance */
     double target = d - 1e-9 * (1 + ob[0]->shape.r_out + ob[1]->shape.r_out);
     if (target <= 0) return 0;
+    if (n == 1 && r[0].t_rot == 0) { /* one object, its turn all at once: in closed form */
+        const reach_terms *o = &r[0];
+        double left = target - o->cap, t;
+        if (left <= 0) return 0;
+        if (o->s >= o->vmax) {
+            t = left / o->vmax;
+        } else {
+            t = o->acc > 0 ? 2 * left / (o->s + sqrt(o->s * o->s + 2 * o->acc * left))
+                           : (o->s > 0 ? left / o->s : HUGE_VAL);
+            if (t > o->t_lin) t = left / o->vmax; /* at the speed limit by then */
+        }
+        if (t == HUGE_VAL) return HUGE_VAL;
+        t *= 1 - 1e-12;
+        while (t > 0 && eval(r, 1, t) >= target) t *= 1 - 1e-9; /* never late */
+        return t;
+    }
     /* the breakpoints, in order; between two of them the bound is quadratic */
     double bp[5];
     int nb = 0;

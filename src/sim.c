@@ -450,17 +450,17 @@ static double time_of_impact(world *w, pair *p, double lo, double hi)
     return lo;
 }
 
-/* How far the sphere about a's centre of mass that holds a is outside b's
- * bounding box (negative inside it). */
-static double box_gap(const body *a, const body *b)
+/* How far the sphere of radius r about c is outside b's bounding box (negative
+ * inside it). */
+static double box_gap(vec3 c, double r, const body *b)
 {
-    vec3 p = q_unrotate(b->q, v3_sub(body_com(a), b->x));
+    vec3 p = q_unrotate(b->q, v3_sub(c, b->x));
     vec3 lo = b->shape.box_lo, hi = b->shape.box_hi;
     /* how far p is outside the box along each axis (0 within it) */
     vec3 out = v3(p.x < lo.x ? lo.x - p.x : p.x > hi.x ? p.x - hi.x : 0,
                   p.y < lo.y ? lo.y - p.y : p.y > hi.y ? p.y - hi.y : 0,
                   p.z < lo.z ? lo.z - p.z : p.z > hi.z ? p.z - hi.z : 0);
-    return v3_len(out) - a->shape.r_out;
+    return v3_len(out) - r;
 }
 
 /* A gap no more than the distance of a and b: between the spheres about their
@@ -468,10 +468,10 @@ static double box_gap(const body *a, const body *b)
  * wall, a table), between the other's sphere and its bounding box. */
 static double bound_gap(const body *a, const body *b)
 {
-    double gap = v3_len(v3_sub(body_com(a), body_com(b))) - a->shape.r_out - b->shape.r_out;
-    double box = a->shape.r_out > 2 * b->shape.r_out   ? box_gap(b, a)
-                 : b->shape.r_out > 2 * a->shape.r_out ? box_gap(a, b)
-                                                       : gap;
+    vec3 ca = body_com(a), cb = body_com(b);
+    double ra = a->shape.r_out, rb = b->shape.r_out;
+    double gap = v3_len(v3_sub(ca, cb)) - ra - rb;
+    double box = ra > 2 * rb ? box_gap(cb, rb, a) : rb > 2 * ra ? box_gap(ca, ra, b) : gap;
     return box > gap ? box : gap;
 }
 
