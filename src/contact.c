@@ -147,6 +147,8 @@ vec3 contact_point(const body *a, const body *b, const closest_result *r, double
 {
     vec3 n = r->normal;
     vec3 mid = v3_scale(v3_add(r->pa, r->pb), 0.5);
+    /* a sphere touches a convex object at one point */
+    if (a->sp.kind == SHAPE_SPHERE || b->sp.kind == SHAPE_SPHERE) return mid;
     vec3 u = v3_norm(fabs(n.x) < 0.6 ? v3_cross(n, v3(1, 0, 0)) : v3_cross(n, v3(0, 1, 0)));
     vec3 v = v3_cross(n, u);
     p2 *sa = malloc(4 * CONTACT_MAX_SUPPORT * sizeof *sa);
