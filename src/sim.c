@@ -9,14 +9,16 @@
  * method that leaves the world angular momentum untouched, whatever the inertia
  * tensor (Dullweber, Leimkuhler, McLachlan, J. Chem. Phys. 107, 1997).
  *
- * An internal step (thesis 3.4.2, steps 3 to 5): save every state, fly the whole
- * step, check the due pairs.  If some pair touches or penetrates, each such pair is
- * traced back in time to its first contact; the world goes back to the earliest
- * contact, answers it, and the rest of the step starts over from there.  So
- * collisions are answered in the order they happen, simultaneous ones one after
- * another.  Each object flies from its own saved state, which only a collision
- * that changes it renews: going back in time leaves the others' flights, and
- * their pairs' predictions, exact.
+ * An internal step (thesis 3.4.2, steps 3 to 5): save every moving object's
+ * state, fly the whole step, check the due pairs.  If some pair touches or
+ * penetrates, each such pair is traced back in time to its first contact; the
+ * earliest is answered at its instant (its two objects flown back there), and the
+ * rest of the step starts over from there.  So collisions are answered in the
+ * order they happen, simultaneous ones one after another.  Each object flies from
+ * its own saved state, which only a collision that changes it renews: going back
+ * in time leaves the others' flights, and their pairs' predictions, exact; and a
+ * pair's first contact depends on the two flights alone, so the schedule cannot
+ * change it.
  *
  * Contact: a collision that leaves an object barely bouncing on a support below it
  * puts it at rest, or sliding (settle); slow collisions under gravity part at the
@@ -384,9 +386,10 @@ static const body *moving(const world *w, int i, const body *b, body *scratch)
  * touches or penetrates at hi: the latest time found at which it is apart, less
  * than SIM_SEPARATION / 2 apart or within SIM_TOI_TIME of a time it is not.  Each
  * step tries the time the closest points would meet at their present closing
- * speed and acceleration (a Newton step, just short), never earlier than the
- * schedule's bound allows a contact; after a step that overshoots, it halves the
- * bracket instead. */
+ * speed and acceleration (a Newton step, 98% of the way, or 99.8% once the model
+ * has held), never earlier than the schedule's bound allows a contact.  After a
+ * step that overshoots it halves the bracket instead (a quarter after repeated
+ * overshoots), or, after a 99.8% step, first tries 90% of it. */
 static double time_of_impact(world *w, pair *p, double lo, double hi)
 {
     closest_cache cache = p->hit;
