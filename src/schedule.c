@@ -39,10 +39,10 @@ typedef struct {
     double rate, cap, t_rot;    /* surface: rate t until t_rot, then cap */
 } reach_terms;
 
-static reach_terms terms_of(const body *b, double acc, double vmax)
+static reach_terms terms_of(const body *b, double acc, double vmax, double slack)
 {
     reach_terms r;
-    r.s = v3_len(b->v);
+    r.s = v3_len(b->v) + slack;
     r.acc = acc;
     r.vmax = vmax;
     if (r.s >= vmax) r.t_lin = 0;
@@ -93,7 +93,8 @@ static double piece_root(double a, double b, double c, double target)
     return b > 0 ? -cc / b : HUGE_VAL;
 }
 
-static double predict(const world *w, const body *a, const body *b, double d, bool any_spin)
+static double predict(const world *w, const body *a, const body *b, double d, bool any_spin,
+                      double slack)
 {
     if (d <= 0) return 0;
     const body *ob[2] = {a, b};
@@ -102,7 +103,7 @@ static double predict(const world *w, const body *a, const body *b, double d, bo
     int n = 0;
     for (int k = 0; k < 2; k++) {
         if (ob[k]->state != STATE_DYNAMIC) continue;
-        r[n] = terms_of(ob[k], v3_len(world_body_accel(w, ob[k])), vmax);
+        r[n] = terms_of(ob[k], v3_len(world_body_accel(w, ob[k])), vmax, slack);
         if (any_spin) { /* the whole turn at once */
             r[n].cap = ob[k]->shape.r_out - ob[k]->shape.r_in;
             r[n].rate = 0;
@@ -162,12 +163,13 @@ static double predict(const world *w, const body *a, const body *b, double d, bo
 
 double sched_predict_bodies(const world *w, const body *a, const body *b, double d)
 {
-    return predict(w, a, b, d, false);
+    return predict(w, a, b, d, false, 0);
 }
 
 double sched_predict_far(const world *w, const pair *p, double d, double sep)
 {
-    return predict(w, w->bodies[p->a], w->bodies[p->b], d - SCHED_SHIFTS * sep, true);
+    return predict(w, w->bodies[p->a], w->bodies[p->b], d - SCHED_SHIFTS * sep, true,
+                   SCHED_SLACK);
 }
 
 /* ---- the indexed binary heap ---- */

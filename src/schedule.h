@@ -24,11 +24,15 @@ double sched_predict_bodies(const world *w, const body *a, const body *b, double
  * objects apart by up to sep this many times in all before it must be made again. */
 #define SCHED_SHIFTS 16
 
+/* Speed (m/s) a far pair's bound gives each moving object beyond its own. */
+#define SCHED_SLACK 0.1
+
 /* A bound for pair p, d apart now, that holds whatever its objects' spins become
- * (each turns its surface by all of R - r at once) and through SCHED_SHIFTS
- * shifts of up to sep each: so that a collision that spins an object faster, or
- * sets it a hair apart, leaves the pair's time as it was.  It is earlier than
- * sched_predict's by little when d is large. */
+ * (each turns its surface by all of R - r at once), while their speeds stay
+ * within SCHED_SLACK of what they are now plus what the force adds, and through
+ * SCHED_SHIFTS shifts of up to sep each: so that a collision that spins an object
+ * faster, speeds it up a little or sets it a hair apart leaves the pair's time as
+ * it was.  It is earlier than sched_predict's by little when d is large. */
 double sched_predict_far(const world *w, const pair *p, double d, double sep);
 
 /* Builds the heap over every pair, all due at time t, and the lists of each

@@ -772,9 +772,13 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
             p->far = true;
             p->shifts_a = w->bodies[p->a]->shifts;
             p->shifts_b = w->bodies[p->b]->shifts;
+            p->speed_a = v3_len(w->bodies[p->a]->v) + SCHED_SLACK;
+            p->speed_b = v3_len(w->bodies[p->b]->v) + SCHED_SLACK;
             return t_end + ahead;
         }
     }
+    p->speed_a = v3_len(w->bodies[p->a]->v);
+    p->speed_b = v3_len(w->bodies[p->b]->v);
     closest_result r = query_apart(w, p, w->bodies[p->a], w->bodies[p->b]);
     if (r.status != CLOSEST_PENETRATING) return t_end + sched_predict(w, p, r.distance);
     /* the first contact is a function of the two flights alone, searched from
@@ -831,41 +835,34 @@ static void renew_flight(world *w, int i, double t)
     w->snap_id[i] = w->flight_count++;
 }
 
-/* How body b, which was a at the same instant, moves compared with a, for the
- * schedule's bounds: KEEPS when it moves no faster in any term of sched_predict's
- * bound (the same place, no more speed, acceleration or angular momentum), NEAR
- * when it is also at most a separation away but may spin faster (what
- * sched_predict_far's bound allows), FASTER otherwise.  A pair predicted at an
- * earlier instant from a's speeds stays predicted when b is no faster: the bound
- * took a's speed then plus the acceleration since as its speed from then on. */
-enum { KEEPS, NEAR, FASTER };
-
-static int compared(const world *w, const body *a, const body *b)
+/* Makes due at time t the pairs of object i, which a collision changed from a to
+ * b, that its new motion may bring together before their time.  A pair's time
+ * came from a bound on its objects' motion from its check on: each no faster than
+ * its speed then (speed_a, speed_b) plus what the force adds since, turning no
+ * faster than then (or by all of R - r at once, for a far pair), and, for a far
+ * pair, set apart at most SCHED_SHIFTS times by a separation.  Where b keeps
+ * within that, the pair keeps its time. */
+static void reschedule(world *w, int i, const body *a, const body *b, double t)
 {
-    if (a->state != STATE_DYNAMIC || v3_len(b->v) > v3_len(a->v) ||
-        (b->state == STATE_DYNAMIC && v3_len(world_body_accel(w, b)) > v3_len(world_body_accel(w, a))))
-        return FASTER;
+    double acc = v3_len(world_body_accel(w, a)), moved = v3_len(v3_sub(a->x, b->x));
     bool turned = a->q.w != b->q.w || a->q.x != b->q.x || a->q.y != b->q.y || a->q.z != b->q.z;
-    double moved = v3_len(v3_sub(a->x, b->x));
-    if (turned || moved > SIM_SEPARATION) return FASTER;
-    return moved == 0 && v3_len(b->L) <= v3_len(a->L) ? KEEPS : NEAR;
-}
-
-/* Makes due at time t the pairs of object i that its new motion (how, from
- * compared) may bring together before their time. */
-static void reschedule(world *w, int i, int how, double t)
-{
-    if (how == FASTER) {
+    if (a->state != STATE_DYNAMIC || turned || moved > SIM_SEPARATION ||
+        (b->state == STATE_DYNAMIC && v3_len(world_body_accel(w, b)) > acc)) {
         sched_object_due(w, i, t);
         return;
     }
+    double v = v3_len(b->v);
+    bool spun = v3_len(b->L) > v3_len(a->L);
     for (long j = w->obj_first[i]; j < w->obj_first[i + 1]; j++) {
         long k = w->obj_pairs[j];
         const pair *q = &w->pairs[k];
         bool keep = q->checked <= t; /* found from speeds at an earlier instant */
-        if (keep && how == NEAR)
-            keep = q->far && w->bodies[q->a]->shifts - q->shifts_a + w->bodies[q->b]->shifts -
-                                     q->shifts_b <= SCHED_SHIFTS;
+        if (keep) keep = v <= (q->a == i ? q->speed_a : q->speed_b) + acc * (t - q->checked);
+        if (keep && q->far)
+            keep = w->bodies[q->a]->shifts - q->shifts_a + w->bodies[q->b]->shifts - q->shifts_b <=
+                   SCHED_SHIFTS;
+        else if (keep)
+            keep = moved == 0 && !spun;
         if (!keep && q->next > t) sched_set(w, k, t);
     }
 }
@@ -895,7 +892,7 @@ static void answer(world *w, pair *p, double t)
         }
         renew_flight(w, i, t);
         /* its motion changed: its pairs are due again, unless their times hold */
-        reschedule(w, i, compared(w, &w->pre[i], w->bodies[i]), t);
+        reschedule(w, i, &w->pre[i], w->bodies[i], t);
     }
     for (int i = 0; i < w->n; i++) {
         if (!w->touched[i]) continue;

@@ -87,6 +87,7 @@ typedef struct {
     long toi_a, toi_b;    /*   while its objects fly from flights numbered so (sim.c) */
     bool far;             /* next came from sched_predict_far, when its objects had */
     long shifts_a, shifts_b; /*  been set apart so many times */
+    double speed_a, speed_b; /* the speeds next was found from (slack included) */
 } pair;
 
 /* An entry of the schedule's heap: a pair's time, kept next to its index so that
