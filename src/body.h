@@ -60,6 +60,9 @@ typedef struct body {
     long slide_pair;   /* the pair of that contact in world.pairs */
     vec3 slide_n;      /* that support's normal, towards this body */
     long shifts;       /* how many times collisions set it apart (sim.c) */
+    int pinned_by;     /* the still object it last struck (sim.c), or -1; */
+    vec3 pinned_n;     /*   that contact's normal, towards this body, */
+    double pinned_t;   /*   and when */
 } body;
 
 /* A fresh body of the given kind named name, with the thesis's defaults:

@@ -603,6 +603,38 @@ static bool holds(const body *l, vec3 n, vec3 *s)
     return true;
 }
 
+/* The normal n (from support s to the other object, as measured at their closest
+ * points, f the feature of s) made exact when the contact is on a face of s: that
+ * face's normal, so that an object sliding on the face keeps its height above it
+ * (a measured normal a hair off would carry it slowly into the face or off it). */
+static vec3 support_normal(const body *s, closest_feature f, vec3 n)
+{
+    if (f.kind != CLOSEST_FACE || !s->shape.hull) return n;
+    vec3 fn = v3_norm(q_rotate(s->q, s->shape.hull->f[f.index].n));
+    return v3_dot(fn, n) > 1 - 1e-6 ? fn : n;
+}
+
+/* True when object i, pushed along toward, is pinned against the still object it
+ * struck a moment ago (see SIM_PINNED_TIME): then *s is that contact's normal,
+ * and the blow passes on to the still object. */
+static bool pinned(world *w, int i, vec3 toward, vec3 *s)
+{
+    const body *x = w->bodies[i];
+    int k = x->pinned_by;
+    if (x->state != STATE_DYNAMIC || k < 0 || k >= w->n || w->bodies[k]->state == STATE_DYNAMIC ||
+        w->time - x->pinned_t > SIM_PINNED_TIME || v3_dot(x->pinned_n, toward) > -0.99)
+        return false;
+    for (long j = w->obj_first[i]; j < w->obj_first[i + 1]; j++) {
+        pair *o = &w->pairs[w->obj_pairs[j]];
+        if (o->a != k && o->b != k) continue;
+        closest_result r = query_apart(w, o, w->bodies[o->a], w->bodies[o->b]);
+        if (r.status == CLOSEST_PENETRATING || r.distance > SIM_PINNED_GAP) return false;
+        *s = x->pinned_n;
+        return true;
+    }
+    return false;
+}
+
 /* Answers the collision of pair p now: the impulse, the separation, the log; and
  * the thesis's contact state for an object that barely bounces off a support below
  * it. */
@@ -632,6 +664,9 @@ static void collide(world *w, pair *p)
     vec3 s = v3(0, 0, 0);
     if (press > 0 && v3_dot(r.normal, up) > 0.7 && holds(b, r.normal, &s)) held = 2;
     if (press > 0 && v3_dot(r.normal, up) < -0.7 && holds(a, v3_neg(r.normal), &s)) held = 1;
+    /* a sandwich: one of them pressed back against a still object it just struck */
+    if (!held && pinned(w, p->a, r.normal, &s)) held = 1;
+    if (!held && pinned(w, p->b, v3_neg(r.normal), &s)) held = 2;
     /* a resting object hit by a moving one takes part as a dynamic one */
     if (a->state == STATE_RESTING && b->state == STATE_DYNAMIC && held != 1) wake(w, p->a);
     if (b->state == STATE_RESTING && a->state == STATE_DYNAMIC && held != 2) wake(w, p->b);
@@ -639,6 +674,17 @@ static void collide(world *w, pair *p)
     if (c.impulse > 0) {
         w->st.collisions++;
         log_event(w, a, b, c.point, c.normal, c.impulse, c.speed);
+        /* what struck a still object, for a sandwich */
+        if (a->state == STATE_DYNAMIC && b->state != STATE_DYNAMIC) {
+            a->pinned_by = p->b;
+            a->pinned_n = r.normal;
+            a->pinned_t = w->time;
+        }
+        if (b->state == STATE_DYNAMIC && a->state != STATE_DYNAMIC) {
+            b->pinned_by = p->a;
+            b->pinned_n = v3_neg(r.normal);
+            b->pinned_t = w->time;
+        }
     }
     /* the contact state: an object that barely bounces off a support under it rests
      * on it, or slides on it when it still moves along it */
@@ -654,7 +700,8 @@ static void collide(world *w, pair *p)
     for (int k = 0; k < 2; k++) {
         body *m = k == 0 ? a : b, *s = k == 0 ? b : a;
         int si = k == 0 ? p->b : p->a;
-        vec3 n = k == 0 ? r.normal : v3_neg(r.normal); /* from the support to m */
+        /* from the support to m */
+        vec3 n = support_normal(s, k == 0 ? r.fb : r.fa, k == 0 ? r.normal : v3_neg(r.normal));
         /* a support: a static or resting object, or one that slides itself */
         if (m->state != STATE_DYNAMIC || (s->state == STATE_DYNAMIC && s->slide < 0)) continue;
         double vn = v3_dot(m->v, n);

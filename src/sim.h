@@ -44,6 +44,11 @@
  * SIM_SETTLE_ANGLE (radians), is laid on the face it can stand on nearest to the
  * support, if that face is within the angle and nothing is in the way. */
 #define SIM_SETTLE_ANGLE 0.35
+/* A sandwich: an object that struck a still object less than SIM_PINNED_TIME (s)
+ * ago, and is still within SIM_PINNED_GAP (m) of it, passes a blow that presses
+ * it back against it on to it, as a stack passes blows to its support. */
+#define SIM_PINNED_TIME 0.01
+#define SIM_PINNED_GAP 1e-5
 /* Collisions one internal step may answer before the step gives up and lets the
  * objects through (a guard against endless micro-collisions; counted in stats). */
 #define SIM_MAX_COLLISIONS_PER_STEP 1000

@@ -126,6 +126,8 @@ void world_delete(world *w, int i)
         if (b->support == i) b->support = -1;
         else if (b->support > i) b->support--;
         if (b->slide >= i) b->slide = -1; /* the pairs are rebuilt anyway */
+        if (b->pinned_by == i) b->pinned_by = -1;
+        else if (b->pinned_by > i) b->pinned_by--;
     }
 }
 

@@ -536,6 +536,43 @@ static void slider_leaves_the_table_at_its_edge(void **state)
     world_free(&w);
 }
 
+/* No force: a box strikes a wall and stops there (restitution 0 between them);
+ * 5 ms later a heavy ball strikes the box, pressing it back against the wall.
+ * The wall takes the blow through the box, as a support takes a blow through a
+ * stack: two collisions in all, the box stays, and the ball leaves as from the
+ * wall, at e times its speed. */
+static void sandwich_against_a_wall_passes_the_blow_on(void **state)
+{
+    (void)state;
+    world w;
+    world_init(&w);
+    w.set.force = (dir_amount){v3(0, 0, -1), 0};
+    w.set.time_step = 0.05;
+    body *wall = add_static_box(&w, "wall", v3(0.1, 1, 1)); /* its face at x = 0.1 */
+    wall->elasticity = 0;
+    body *box = add(&w, "box", SHAPE_CUBE);
+    box->sp.size = v3(0.1, 0.1, 0.1);
+    rebuild(box);
+    box->elasticity = 0.5;
+    box->x = v3(0.2 + 0.01, 0, 0); /* 1 cm from the wall, at 1 m/s: there at 10 ms */
+    box->v = v3(-1, 0, 0);
+    body *ball = add(&w, "ball", SHAPE_SPHERE);
+    ball->sp.radius = 0.1;
+    rebuild(ball);
+    ball->elasticity = 0.5;
+    body_set_mass(ball, 5);
+    ball->x = v3(0.4 + 0.03, 0, 0); /* 3 cm from the box's far side, at 2 m/s: 15 ms */
+    ball->v = v3(-2, 0, 0);
+    frames(&w, 1);
+    print_message("sandwich: %ld collisions, box v %.9f, ball v %.9f\n", w.st.collisions, box->v.x,
+                  ball->v.x);
+    assert_int_equal(w.st.collisions, 2);
+    assert_true(fabs(box->v.x) < 1e-12);
+    assert_near(ball->v.x, 0.5 * 2, 1e-9);
+    assert_near(box->x.x, 0.2, 1e-6);
+    world_free(&w);
+}
+
 static void ball_comes_to_rest_in_finite_time(void **state)
 {
     (void)state;
@@ -627,6 +664,7 @@ int main(void)
         cmocka_unit_test(blow_on_a_stack_passes_to_the_floor),
         cmocka_unit_test(blow_on_a_slider_moves_it_along_the_floor),
         cmocka_unit_test(slider_leaves_the_table_at_its_edge),
+        cmocka_unit_test(sandwich_against_a_wall_passes_the_blow_on),
         cmocka_unit_test(ball_comes_to_rest_in_finite_time),
         cmocka_unit_test(newtons_cradle),
         cmocka_unit_test(penetration_is_reported),
