@@ -64,9 +64,7 @@ static void bounce_height(double e, double h, double time_step, double internal_
     w.set.internal_step = internal_step;
     w.set.max_linear = 50;
     add_static_box(&w, "floor", v3(5, 5, 0.5));
-    body *ball = add(&w, "ball", SHAPE_SPHERE);
-    ball->sp.radius = 0.2;
-    rebuild(ball);
+    body *ball = add_ball(&w, "ball", 0.2);
     ball->elasticity = e;
     ball->x = v3(0.3, -0.2, 0.5 + 0.2 + h);
     char err[256];
@@ -166,14 +164,10 @@ static void off_centre_hit_conserves_momentum_about_a_point(void **state)
     (void)state;
     world w;
     world_init(&w);
-    body *box = add(&w, "box", SHAPE_CUBE);
-    box->sp.size = v3(0.5, 0.2, 0.3);
-    rebuild(box);
+    body *box = add_box(&w, "box", v3(0.5, 0.2, 0.3));
     body_set_mass(box, 4);
     box->elasticity = 0.6;
-    body *ball = add(&w, "ball", SHAPE_SPHERE);
-    ball->sp.radius = 0.1;
-    rebuild(ball);
+    body *ball = add_ball(&w, "ball", 0.1);
     body_set_mass(ball, 1);
     ball->x = v3(0.35, -1, 0.1); /* off centre in x and z */
     ball->v = v3(0, 3, 0);
@@ -240,9 +234,7 @@ static void box_dropped_flat_rests_flat(void **state)
     world_init(&w);
     w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
     add_static_box(&w, "table", v3(2, 2, 0.1));
-    body *box = add(&w, "box", SHAPE_CUBE);
-    box->sp.size = v3(0.3, 0.2, 0.1);
-    rebuild(box);
+    body *box = add_box(&w, "box", v3(0.3, 0.2, 0.1));
     box->elasticity = 0.5;
     body_set_rotation(box, v3(0, 0, 1), 0.4); /* turned about the vertical: still flat */
     box->x = v3(0.2, -0.3, 1.5);
@@ -271,9 +263,7 @@ static void box_dropped_on_its_corner_settles(void **state)
     world_init(&w);
     w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
     add_static_box(&w, "table", v3(3, 3, 0.1));
-    body *box = add(&w, "box", SHAPE_CUBE);
-    box->sp.size = v3(0.2, 0.2, 0.2);
-    rebuild(box);
+    body *box = add_box(&w, "box", v3(0.2, 0.2, 0.2));
     box->elasticity = 0.4;
     body_set_rotation(box, v3(1, 0.4, 0.1), 0.8); /* a corner down, off balance */
     box->x = v3(0, 0, 1.5);
@@ -295,9 +285,7 @@ static void tilted_box_settles_keeping_what_contact_keeps(void **state)
     world_init(&w);
     w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
     add_static_box(&w, "table", v3(3, 3, 0.1));
-    body *box = add(&w, "box", SHAPE_CUBE);
-    box->sp.size = v3(0.15, 0.1, 0.1);
-    rebuild(box);
+    body *box = add_box(&w, "box", v3(0.15, 0.1, 0.1));
     box->elasticity = 0.5;
     body_set_rotation(box, v3(1, 0.3, 0), 0.12);
     box->x = v3(0, 0, 0.1 + 0.125);
@@ -368,14 +356,10 @@ static void stack_comes_to_rest(void **state)
     world_init(&w);
     w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
     add_static_box(&w, "floor", v3(3, 3, 0.1));
-    body *low = add(&w, "low", SHAPE_CUBE);
-    low->sp.size = v3(0.2, 0.2, 0.1);
-    rebuild(low);
+    body *low = add_box(&w, "low", v3(0.2, 0.2, 0.1));
     low->elasticity = 0.3;
     low->x = v3(0, 0, 0.2 + 1e-3);
-    body *top = add(&w, "top", SHAPE_CUBE);
-    top->sp.size = v3(0.1, 0.1, 0.1);
-    rebuild(top);
+    body *top = add_box(&w, "top", v3(0.1, 0.1, 0.1));
     top->elasticity = 0.3;
     top->mass = 2;
     body_set_mass(top, 2);
@@ -407,17 +391,13 @@ static void blow_on_a_stack_passes_to_the_floor(void **state)
     w.set.force = (dir_amount){v3(0, 0, -1), g};
     w.set.time_step = step;
     add_static_box(&w, "floor", v3(3, 3, 0.1));
-    body *low = add(&w, "low", SHAPE_CUBE);
-    low->sp.size = v3(0.2, 0.2, 0.1);
-    rebuild(low);
+    body *low = add_box(&w, "low", v3(0.2, 0.2, 0.1));
     low->elasticity = e; /* the pair's restitution: the lesser of the two */
     low->x = v3(0, 0, 0.2 + 1e-3);
     frames(&w, 10);
     assert_int_equal(low->state, STATE_RESTING);
     vec3 rest = low->x;
-    body *top = add(&w, "top", SHAPE_CUBE);
-    top->sp.size = v3(0.1, 0.1, 0.1);
-    rebuild(top);
+    body *top = add_box(&w, "top", v3(0.1, 0.1, 0.1));
     top->elasticity = 0.5;
     body_set_mass(top, 2);
     top->x = v3(0.05, 0.02, rest.z + 0.2 + gap);
@@ -453,16 +433,12 @@ static void blow_on_a_slider_moves_it_along_the_floor(void **state)
     w.set.force = (dir_amount){v3(0, 0, -1), g};
     w.set.time_step = step;
     add_static_box(&w, "floor", v3(3, 3, 0.1)); /* its top at z = 0.1 */
-    body *low = add(&w, "low", SHAPE_SPHERE);
-    low->sp.radius = r;
-    rebuild(low);
+    body *low = add_ball(&w, "low", r);
     low->elasticity = e;
     body_set_mass(low, m2);
     low->x = v3(0, 0, 0.2 + 1e-6);
     low->v = v3(0.5, 0, 0);
-    body *top = add(&w, "top", SHAPE_SPHERE); /* out of the way until it is thrown */
-    top->sp.radius = r;
-    rebuild(top);
+    body *top = add_ball(&w, "top", r); /* out of the way until it is thrown */
     top->elasticity = 0.8;
     body_set_mass(top, m1);
     top->x = v3(2, 2, 5);
@@ -513,9 +489,7 @@ static void slider_leaves_the_table_at_its_edge(void **state)
     w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
     w.set.time_step = 0.05;
     add_static_box(&w, "table", v3(0.5, 0.5, 0.05)); /* top at z = 0.05, edge at x = 0.5 */
-    body *ball = add(&w, "ball", SHAPE_SPHERE);
-    ball->sp.radius = 0.1;
-    rebuild(ball);
+    body *ball = add_ball(&w, "ball", 0.1);
     ball->elasticity = 0;
     ball->x = v3(-0.45, 0, 0.15 + 1e-6);
     ball->v = v3(1, 0, 0);
@@ -550,15 +524,11 @@ static void sandwich_against_a_wall_passes_the_blow_on(void **state)
     w.set.time_step = 0.05;
     body *wall = add_static_box(&w, "wall", v3(0.1, 1, 1)); /* its face at x = 0.1 */
     wall->elasticity = 0;
-    body *box = add(&w, "box", SHAPE_CUBE);
-    box->sp.size = v3(0.1, 0.1, 0.1);
-    rebuild(box);
+    body *box = add_box(&w, "box", v3(0.1, 0.1, 0.1));
     box->elasticity = 0.5;
     box->x = v3(0.2 + 0.01, 0, 0); /* 1 cm from the wall, at 1 m/s: there at 10 ms */
     box->v = v3(-1, 0, 0);
-    body *ball = add(&w, "ball", SHAPE_SPHERE);
-    ball->sp.radius = 0.1;
-    rebuild(ball);
+    body *ball = add_ball(&w, "ball", 0.1);
     ball->elasticity = 0.5;
     body_set_mass(ball, 5);
     ball->x = v3(0.4 + 0.03, 0, 0); /* 3 cm from the box's far side, at 2 m/s: 15 ms */
@@ -580,9 +550,7 @@ static void ball_comes_to_rest_in_finite_time(void **state)
     world_init(&w);
     w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
     add_static_box(&w, "table", v3(1, 1, 0.05));
-    body *ball = add(&w, "ball", SHAPE_SPHERE);
-    ball->sp.radius = 0.1;
-    rebuild(ball);
+    body *ball = add_ball(&w, "ball", 0.1);
     ball->elasticity = 0.8;
     ball->x = v3(0, 0, 1.05);
     int f = 0;
@@ -601,9 +569,7 @@ static void ball_comes_to_rest_in_finite_time(void **state)
     frames(&w, 100); /* resting: no more work */
     assert_int_equal(w.st.pair_checks, checks);
     /* something hits it: it wakes */
-    body *hit = add(&w, "hit", SHAPE_SPHERE);
-    hit->sp.radius = 0.1;
-    rebuild(hit);
+    body *hit = add_ball(&w, "hit", 0.1);
     hit->x = v3(-1, 0, 0.15);
     hit->v = v3(3, 0, 0);
     frames(&w, 5);

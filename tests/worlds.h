@@ -37,6 +37,24 @@ static inline void rebuild(body *b)
     assert_int_equal(body_build(b, err, sizeof err), 0);
 }
 
+/* A dynamic ball of radius r, built and added to w (at the origin). */
+static inline body *add_ball(world *w, const char *name, double r)
+{
+    body *b = add(w, name, SHAPE_SPHERE);
+    b->sp.radius = r;
+    rebuild(b);
+    return b;
+}
+
+/* A dynamic box with half-extents size, built and added to w (at the origin). */
+static inline body *add_box(world *w, const char *name, vec3 size)
+{
+    body *b = add(w, name, SHAPE_CUBE);
+    b->sp.size = size;
+    rebuild(b);
+    return b;
+}
+
 /* A uniform number in [lo, hi) from a 64-bit LCG: the same sequence everywhere. */
 static inline double urand(unsigned long long *s, double lo, double hi)
 {
