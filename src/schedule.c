@@ -166,10 +166,9 @@ double sched_predict_bodies(const world *w, const body *a, const body *b, double
     return predict(w, a, b, d, false, 0);
 }
 
-double sched_predict_far(const world *w, const pair *p, double d, double sep)
+double sched_predict_far(const world *w, const body *a, const body *b, double d, double sep)
 {
-    return predict(w, w->bodies[p->a], w->bodies[p->b], d - SCHED_SHIFTS * sep, true,
-                   SCHED_SLACK);
+    return predict(w, a, b, d - SCHED_SHIFTS * sep, true, SCHED_SLACK);
 }
 
 /* ---- the indexed binary heap ---- */

@@ -27,13 +27,14 @@ double sched_predict_bodies(const world *w, const body *a, const body *b, double
 /* Speed (m/s) a far pair's bound gives each moving object beyond its own. */
 #define SCHED_SLACK 0.1
 
-/* A bound for pair p, d apart now, that holds whatever its objects' spins become
- * (each turns its surface by all of R - r at once), while their speeds stay
- * within SCHED_SLACK of what they are now plus what the force adds, and through
- * SCHED_SHIFTS shifts of up to sep each: so that a collision that spins an object
- * faster, speeds it up a little or sets it a hair apart leaves the pair's time as
- * it was.  It is earlier than sched_predict's by little when d is large. */
-double sched_predict_far(const world *w, const pair *p, double d, double sep);
+/* A bound for objects a and b, d apart in the states given, that holds whatever
+ * their spins become (each turns its surface by all of R - r at once), while
+ * their speeds stay within SCHED_SLACK of what they are in those states plus what
+ * the force adds, whatever their directions, and through SCHED_SHIFTS shifts of
+ * up to sep each: so that a collision that turns an object back, spins it faster,
+ * speeds it up a little or sets it a hair apart leaves the pair's time as it was.
+ * It is earlier than sched_predict's by little when d is large. */
+double sched_predict_far(const world *w, const body *a, const body *b, double d, double sep);
 
 /* Builds the heap over every pair, all due at time t, and the lists of each
  * object's pairs.  Returns 0, or -1 when out of memory. */

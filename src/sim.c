@@ -334,6 +334,20 @@ static body flown(const world *w, int i, double t)
     return b;
 }
 
+/* Body i where its flight starts (at snap_t[i]). */
+static const body *at_start(const world *w, int i)
+{
+    return w->snap[i].state == STATE_DYNAMIC ? &w->snap[i] : w->bodies[i];
+}
+
+/* The earlier start of the flights of pair p's moving objects. */
+static double flights_start(const world *w, const pair *p)
+{
+    bool ma = w->snap[p->a].state == STATE_DYNAMIC, mb = w->snap[p->b].state == STATE_DYNAMIC;
+    if (ma && mb) return fmin(w->snap_t[p->a], w->snap_t[p->b]);
+    return ma ? w->snap_t[p->a] : w->snap_t[p->b];
+}
+
 /* Every moving object to the end of the step, t_end: an object whose flight did
  * not change since it was last flown there is there already (answer puts back
  * what it flew to a collision and left unchanged). */
@@ -807,27 +821,33 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
     if (!pair_moves(w, p)) return HUGE_VAL;
     if (w->set.collision_heap && (slides_clear(w, p->a, p->b) || slides_clear(w, p->b, p->a)))
         return HUGE_VAL;
-    p->checked = t_end;
     /* far apart: the bounding spheres' gap bounds the distance from below, and is
      * enough for a prediction beyond the frame (part of the schedule: without it
-     * every pair gets its closest-feature check, as in the thesis's Table 5.3) */
-    double gap = w->set.collision_heap ? bound_gap(w->bodies[p->a], w->bodies[p->b]) : 0;
+     * every pair gets its closest-feature check, as in the thesis's Table 5.3).
+     * It is measured where the objects' flights start: a bound on how far they go
+     * from there holds through a collision later in the step that turns them
+     * back, so that such a collision leaves the pair's time as it is. */
     p->far = false;
-    if (gap > 0) {
-        double ahead = sched_predict_far(w, p, gap, SIM_SEPARATION);
-        if (ahead >= w->set.time_step) {
+    if (w->set.collision_heap) {
+        const body *a = at_start(w, p->a), *b = at_start(w, p->b);
+        double from = flights_start(w, p), gap = bound_gap(a, b);
+        double next = gap > 0 ? from + sched_predict_far(w, a, b, gap, SIM_SEPARATION) : from;
+        if (next - t_end >= w->set.time_step) {
             p->far = true;
-            p->shifts_a = w->bodies[p->a]->shifts;
-            p->shifts_b = w->bodies[p->b]->shifts;
-            p->speed_a = v3_len(w->bodies[p->a]->v) + SCHED_SLACK;
-            p->speed_b = v3_len(w->bodies[p->b]->v) + SCHED_SLACK;
-            return t_end + ahead;
+            p->checked = from;
+            p->shifts_a = a->shifts;
+            p->shifts_b = b->shifts;
+            p->speed_a = v3_len(a->v) + SCHED_SLACK;
+            p->speed_b = v3_len(b->v) + SCHED_SLACK;
+            return next;
         }
     }
+    p->checked = t_end;
     p->speed_a = v3_len(w->bodies[p->a]->v);
     p->speed_b = v3_len(w->bodies[p->b]->v);
     closest_result r = query_apart(w, p, w->bodies[p->a], w->bodies[p->b]);
-    if (r.status != CLOSEST_PENETRATING) return t_end + sched_predict(w, p, r.distance);
+    if (r.status != CLOSEST_PENETRATING) /* without the heap no time is kept */
+        return w->set.collision_heap ? t_end + sched_predict(w, p, r.distance) : HUGE_VAL;
     /* the first contact is a function of the two flights alone, searched from
      * where the later of them starts, so that whenever the pair is found the
      * answer is the same (and is kept while both flights are) */

@@ -132,7 +132,7 @@ static void predictions_are_never_late(void **state)
         assert_int_equal(sim_update_pairs(&w), 0);
         double predicted = sched_predict(&w, &w.pairs[0], r.distance);
         /* the bound that allows any spin and a few shifts is earlier still */
-        double far = sched_predict_far(&w, &w.pairs[0], r.distance, 1e-7);
+        double far = sched_predict_far(&w, ob[0], ob[1], r.distance, 1e-7);
         if (far > predicted) fail_msg("trial %d: far bound %.9g s after %.9g s", k, far, predicted);
         if (far >= 0.5 * predicted) far_useful++;
         double truth = first_contact(&w, ob[0], ob[1], urand(&s, 0.001, 0.02), 3);
