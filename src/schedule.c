@@ -24,7 +24,9 @@
 /* A bound on how fast the body's points turn about its centre of mass, rad/s, as
  * vroc integrates rotation: each step is five rotations about principal axes by
  * angles of at most |L| / I_min times their share of the step (1/2, 1/2, 1, 1/2,
- * 1/2), so the body turns by at most 3 |L| / I_min per second of steps. */
+ * 1/2), so the body turns by at most 3 |L| / I_min per second of steps; a
+ * symmetric top turns about L at |L| / I_p and about its axis at no more than
+ * |L| / I_min, 2 |L| / I_min in all (sim.c, rotate_free). */
 static double spin_bound(const body *b)
 {
     double imin = fmin(b->I_princ.x, fmin(b->I_princ.y, b->I_princ.z));

@@ -37,12 +37,10 @@
 
 /* ------------------------------------------------------------ free flight */
 
-/* Rotates the principal frame qp about its own axis k by the angle tau * pi_k / I_k
- * and turns pi (angular momentum in principal axes) the opposite way. */
-static void rotate_about_principal(quat *qp, vec3 *pi, int k, double tau, vec3 inertia)
+/* Rotates the principal frame qp about its own axis k by angle and turns pi
+ * (angular momentum in principal axes) the opposite way. */
+static void turn_principal(quat *qp, vec3 *pi, int k, double angle)
 {
-    double pk = v3_comp(*pi, k), ik = v3_comp(inertia, k);
-    double angle = tau * pk / ik;
     if (angle == 0) return;
     double hs = sin(0.5 * angle), hc = cos(0.5 * angle);
     double c = hc * hc - hs * hs, s = 2 * hs * hc; /* the whole angle's */
@@ -57,19 +55,43 @@ static void rotate_about_principal(quat *qp, vec3 *pi, int k, double tau, vec3 i
     *qp = q_mul(*qp, r);
 }
 
+/* The same by the angle tau * pi_k / I_k, as the body turns about axis k alone. */
+static void rotate_about_principal(quat *qp, vec3 *pi, int k, double tau, vec3 inertia)
+{
+    turn_principal(qp, pi, k, tau * v3_comp(*pi, k) / v3_comp(inertia, k));
+}
+
+/* The principal axis whose moment differs from the other two equal ones (any for
+ * equal moments), or -1 when no two are equal. */
+static int symmetry_axis(vec3 in)
+{
+    return in.x == in.y ? 2 : in.y == in.z ? 0 : in.x == in.z ? 1 : -1;
+}
+
 /* Turns b freely for h seconds, and sets its angular velocity there: w = L / I in
- * principal axes, turned to world axes. */
+ * principal axes, turned to world axes.  A body with two equal principal moments
+ * I_p (a symmetric top; a sphere or a cube has three) turns exactly: about L at
+ * |L| / I_p, and about its own axis k at L_k (1 / I_k - 1 / I_p).  Any other is
+ * turned by five rotations about its principal axes in turn. */
 static void rotate_free(body *b, double h)
 {
-    if (v3_len2(b->L) == 0) return;
+    double len = v3_len(b->L);
+    if (len == 0) return;
     quat qp = q_mul(b->q, b->q_principal); /* principal axes to world */
     vec3 pi = q_unrotate(qp, b->L);        /* L in principal axes */
     vec3 in = b->I_princ;
-    rotate_about_principal(&qp, &pi, 0, 0.5 * h, in);
-    rotate_about_principal(&qp, &pi, 1, 0.5 * h, in);
-    rotate_about_principal(&qp, &pi, 2, h, in);
-    rotate_about_principal(&qp, &pi, 1, 0.5 * h, in);
-    rotate_about_principal(&qp, &pi, 0, 0.5 * h, in);
+    int k = symmetry_axis(in);
+    if (k >= 0) {
+        double ip = v3_comp(in, (k + 1) % 3);
+        turn_principal(&qp, &pi, k, h * v3_comp(pi, k) * (1 / v3_comp(in, k) - 1 / ip));
+        qp = q_mul(q_axis_angle(v3_scale(b->L, 1 / len), h * len / ip), qp);
+    } else {
+        rotate_about_principal(&qp, &pi, 0, 0.5 * h, in);
+        rotate_about_principal(&qp, &pi, 1, 0.5 * h, in);
+        rotate_about_principal(&qp, &pi, 2, h, in);
+        rotate_about_principal(&qp, &pi, 1, 0.5 * h, in);
+        rotate_about_principal(&qp, &pi, 0, 0.5 * h, in);
+    }
     qp = q_normalize(qp);
     b->q = q_mul(qp, q_conj(b->q_principal));
     b->w = q_rotate(qp, v3(pi.x / in.x, pi.y / in.y, pi.z / in.z));

@@ -2,7 +2,8 @@
  *
  * Projectile motion in closed form; a freely spinning asymmetric box checked against
  * the box's closed-form inertia (not vroc's mass code) and against an independent
- * RK4 integration of Euler's equations with tiny steps; the speed limits; the
+ * RK4 integration of Euler's equations with tiny steps; a symmetric top, turned in
+ * closed form, against the same at any step; the speed limits; the
  * internal-step count of language.md ("Time"). */
 #include "check.h"
 
@@ -144,6 +145,46 @@ static void spinning_box_follows_eulers_equations(void **state)
     world_free(&w);
 }
 
+/* A box with two equal sides is a symmetric top, which vroc turns in closed form:
+ * whatever the step, it follows Euler's equations (RK4 with tiny steps) and keeps
+ * its energy, and its axis keeps its angle to L while it goes round L. */
+static void symmetric_top_is_exact_whatever_the_step(void **state)
+{
+    (void)state;
+    const double steps[] = {0, 0.0123, 0.1};
+    for (size_t k = 0; k < sizeof steps / sizeof steps[0]; k++) {
+        world w;
+        world_init(&w);
+        w.set.internal_step = steps[k];
+        body *b = add(&w, "top", SHAPE_CUBE);
+        b->sp.size = v3(0.2, 0.2, 0.5);
+        char err[256];
+        assert_int_equal(body_build(b, err, sizeof err), 0);
+        body_set_rotation(b, v3(1, -1, 0.5), 0.4);
+        body_set_angular_vel(b, v3(1.5, -0.5, 2.5));
+        vec3 inertia = box_inertia(b->sp.size, 1);
+        quat q = b->q;
+        vec3 wb = q_unrotate(q, b->w);
+        vec3 L0 = world_L(b->q, inertia, b->w);
+        double E0 = 0.5 * v3_dot(b->w, L0);
+        vec3 axis0 = q_rotate(b->q, v3(0, 0, 1));
+        double tilt0 = v3_dot(axis0, v3_norm(L0));
+        run_frames(&w, 20); /* 2 s */
+        for (int i = 0; i < 200000; i++) rk4_rigid(&q, &wb, inertia, 1e-5);
+        quat d = q_mul(q_conj(q), b->q);
+        double angle = 2 * atan2(sqrt(d.x * d.x + d.y * d.y + d.z * d.z), fabs(d.w));
+        print_message("symmetric top, internal step %g: %.3g rad from RK4\n", steps[k], angle);
+        assert_true(angle < 1e-8);
+        vec3 L = world_L(b->q, inertia, b->w);
+        assert_vec_near(L, L0, 1e-12);
+        assert_near(0.5 * v3_dot(b->w, L), E0, 1e-12);
+        assert_near(v3_dot(q_rotate(b->q, v3(0, 0, 1)), v3_norm(L)), tilt0, 1e-12);
+        /* and it went a long way round */
+        assert_true(v3_dot(q_rotate(b->q, v3(0, 0, 1)), axis0) < 0.9);
+        world_free(&w);
+    }
+}
+
 static void speed_limits_clamp(void **state)
 {
     (void)state;
@@ -225,6 +266,7 @@ int main(void)
         cmocka_unit_test(projectile_is_exact_whatever_the_step),
         cmocka_unit_test(spinning_box_keeps_its_angular_momentum),
         cmocka_unit_test(spinning_box_follows_eulers_equations),
+        cmocka_unit_test(symmetric_top_is_exact_whatever_the_step),
         cmocka_unit_test(speed_limits_clamp),
         cmocka_unit_test(static_objects_never_move),
         cmocka_unit_test(internal_steps_per_frame),
