@@ -314,6 +314,10 @@ static int build_superquadric(shape *s, char *err, size_t errlen)
         return -1;
     }
     s->mass = poly_mass(s->hull);
+    /* with an even ures the tessellation is symmetric about its centre (omega and
+     * omega + pi both occur), so that its centre of mass is there: the hull's
+     * integration leaves only rounding (1e-17 m) */
+    if (s->p.ures % 2 == 0) s->mass.com = v3(0, 0, 0);
     s->r_in = poly_inner_radius(s->hull, s->mass.com);
     s->r_out = poly_outer_radius(s->hull, s->mass.com);
     return 0;
