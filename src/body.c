@@ -118,12 +118,6 @@ void body_free(body *b)
     b->built = false;
 }
 
-vec3 body_com(const body *b)
-{
-    vec3 c = b->shape.mass.com;
-    if (c.x == 0 && c.y == 0 && c.z == 0) return b->x; /* every shape vroc builds */
-    return v3_add(b->x, q_rotate(b->q, c));
-}
 
 mat3 body_inertia_world(const body *b)
 {

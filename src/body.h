@@ -16,6 +16,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <string.h>
 
 #include "shape.h"
 #include "vmath.h"
@@ -35,7 +36,14 @@ typedef struct body {
     double volume;     /* loudness of collision sounds, >= 0 */
     int color[3];      /* 0..255 */
 
-    /* state */
+    /* inertia, derived from shape and mass */
+    double inv_mass;   /* 0 for static objects */
+    mat3 I_body;       /* inertia tensor about the com, body axes (mass-scaled) */
+    mat3 I_body_inv;   /* its inverse (zero for static objects) */
+    quat q_principal;  /* principal axes in body axes: I_body = P diag(I_princ) P^T */
+    vec3 I_princ;      /* principal moments */
+
+    /* state: from x to the end, what the simulation changes (body_copy_state) */
     vec3 x;            /* origin in world coordinates (translate) */
     quat q;            /* orientation, body to world */
     vec3 v;            /* velocity of the centre of mass */
@@ -48,13 +56,6 @@ typedef struct body {
     double rot_angle;
     bool rot_given;
 
-    /* inertia, derived from shape and mass */
-    double inv_mass;   /* 0 for static objects */
-    mat3 I_body;       /* inertia tensor about the com, body axes (mass-scaled) */
-    mat3 I_body_inv;   /* its inverse (zero for static objects) */
-    quat q_principal;  /* principal axes in body axes: I_body = P diag(I_princ) P^T */
-    vec3 I_princ;      /* principal moments */
-
     int support;       /* index of the body this one rests on, or -1 */
     int slide;         /* the support it slides on (see sim.c), or -1 */
     long slide_pair;   /* the pair of that contact in world.pairs */
@@ -64,6 +65,14 @@ typedef struct body {
     vec3 pinned_n;     /*   that contact's normal, towards this body, */
     double pinned_t;   /*   and when */
 } body;
+
+/* Copies src's state (x to the end) over dst's, for a dst that is a copy of the
+ * same body: the simulation's copies of a body within a frame differ only there. */
+static inline void body_copy_state(body *dst, const body *src)
+{
+    memcpy((char *)dst + offsetof(body, x), (const char *)src + offsetof(body, x),
+           sizeof(body) - offsetof(body, x));
+}
 
 /* A fresh body of the given kind named name, with the thesis's defaults:
  * mass 1, elasticity 1, volume 1, colour (255,0,0), at the origin, identity
@@ -84,7 +93,12 @@ void body_set_mass(body *b, double mass);
 static inline bool body_is_static(const body *b) { return b->mass < 0; }
 
 /* Centre of mass in world coordinates. */
-vec3 body_com(const body *b);
+static inline vec3 body_com(const body *b)
+{
+    vec3 c = b->shape.mass.com;
+    if (c.x == 0 && c.y == 0 && c.z == 0) return b->x; /* every shape vroc builds */
+    return v3_add(b->x, q_rotate(b->q, c));
+}
 
 /* The world inertia tensor R I_body R^T and its inverse. */
 mat3 body_inertia_world(const body *b);

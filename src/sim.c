@@ -321,7 +321,22 @@ static void *resized(void *p, size_t elem, int n, bool *ok)
  * that changed it.  An object's place at time t is always one flight from there,
  * so a collision that sends the world back to an earlier instant leaves every
  * other object's flight, and so its pairs' predictions, exactly as they were. */
-static int save_states(world *w, double t)
+static void save_states(world *w, double t)
+{
+    for (int i = 0; i < w->n; i++) {
+        /* what does not move is where it is: only its state is kept (flown) */
+        if (w->bodies[i]->state == STATE_DYNAMIC) body_copy_state(&w->snap[i], w->bodies[i]);
+        else w->snap[i].state = w->bodies[i]->state;
+        w->snap_t[i] = t;
+        w->snap_id[i] = w->flight_count++;
+        w->end_id[i] = -1;
+    }
+}
+
+/* Makes snap, pre and end copies of the objects that may move in the frame, so
+ * that within it only their states need copying (nothing else changes while time
+ * runs; static objects are read where they are). */
+static int frame_states(world *w)
 {
     if (w->n > w->capsnap) {
         bool ok = true;
@@ -335,15 +350,31 @@ static int save_states(world *w, double t)
         if (!ok) return -1;
         w->capsnap = w->n;
     }
-    for (int i = 0; i < w->n; i++) {
-        /* what does not move is where it is: only its state is kept (flown) */
-        if (w->bodies[i]->state == STATE_DYNAMIC) w->snap[i] = *w->bodies[i];
-        else w->snap[i].state = w->bodies[i]->state;
-        w->snap_t[i] = t;
-        w->snap_id[i] = w->flight_count++;
-        w->end_id[i] = -1;
-    }
+    for (int i = 0; i < w->n; i++)
+        if (!body_is_static(w->bodies[i])) w->snap[i] = w->pre[i] = w->end[i] = *w->bodies[i];
     return 0;
+}
+
+/* Puts moving body i's state at time t in out, a copy of body i. */
+static void fly_into(const world *w, int i, double t, body *out)
+{
+    body_copy_state(out, &w->snap[i]);
+    double dt = t - w->snap_t[i];
+    if (dt > 0) sim_flight(out, dt, world_body_accel(w, out), w->set.max_linear, w->set.max_angular);
+}
+
+/* Puts body i's state at time t in out, a copy of body i (what does not move is
+ * there already). */
+static void fly_at(const world *w, int i, double t, body *out)
+{
+    if (w->snap[i].state == STATE_DYNAMIC) fly_into(w, i, t, out);
+}
+
+static void swap_bodies(body **x, body **y)
+{
+    body *t = *x;
+    *x = *y;
+    *y = t;
 }
 
 /* Body i's state at time t (a shallow copy: shares the shape). */
@@ -351,8 +382,7 @@ static body flown(const world *w, int i, double t)
 {
     if (w->snap[i].state != STATE_DYNAMIC) return *w->bodies[i];
     body b = w->snap[i];
-    double dt = t - w->snap_t[i];
-    if (dt > 0) sim_flight(&b, dt, world_body_accel(w, &b), w->set.max_linear, w->set.max_angular);
+    fly_into(w, i, t, &b);
     return b;
 }
 
@@ -377,9 +407,9 @@ static void fly_to_end(world *w, double t_end)
 {
     for (int i = 0; i < w->n; i++) {
         if (w->snap[i].state != STATE_DYNAMIC || w->end_id[i] == w->snap_id[i]) continue;
-        w->end[i] = flown(w, i, t_end);
+        fly_into(w, i, t_end, &w->end[i]);
         w->end_id[i] = w->snap_id[i];
-        *w->bodies[i] = w->end[i];
+        body_copy_state(w->bodies[i], &w->end[i]);
     }
 }
 
@@ -405,44 +435,64 @@ static vec3 point_accel(const world *w, const body *b, vec3 p)
 /* Body b (object i, flown) as it moves at that instant: a flight turns an object
  * at the angular momentum it starts with, and only its end is held to
  * max_angular, so the spin that moves it is the start's.  b itself, or scratch
- * filled in when that spin differs. */
+ * (a copy of object i) given that spin when it differs. */
 static const body *moving(const world *w, int i, const body *b, body *scratch)
 {
     vec3 L = w->snap[i].L;
     if (b->state != STATE_DYNAMIC || spins_on_support(b) ||
         (L.x == b->L.x && L.y == b->L.y && L.z == b->L.z))
         return b;
-    *scratch = *b;
+    body_copy_state(scratch, b);
     scratch->L = L;
     body_update_w(scratch);
     return scratch;
+}
+
+/* True when object i's flight only shifts its shape: it does not move, is a
+ * sphere, or does not spin.  Between two such shapes the plane that separates
+ * their closest points moves with them, so the distance along its normal, which
+ * the Newton step models exactly, is never more than the true one. */
+static bool only_shifts(const world *w, int i)
+{
+    const body *s = &w->snap[i];
+    if (s->state != STATE_DYNAMIC) return true;
+    return w->bodies[i]->shape.p.kind == SHAPE_SPHERE || (s->L.x == 0 && s->L.y == 0 && s->L.z == 0);
 }
 
 /* First contact of pair p within [lo, hi] (absolute times), knowing that it
  * touches or penetrates at hi: the latest time found at which it is apart, less
  * than SIM_SEPARATION / 2 apart or within SIM_TOI_TIME of a time it is not.  Each
  * step tries the time the closest points would meet at their present closing
- * speed and acceleration (a Newton step, 98% of the way, or 99.8% once the model
- * has held), never earlier than the schedule's bound allows a contact.  After a
+ * speed and acceleration (a Newton step, 98% of the way; once the model has held,
+ * or from the start when it cannot overshoot, to a quarter of SIM_SEPARATION
+ * short of contact), never earlier than the schedule's bound allows a contact.  After a
  * step that overshoots it halves the bracket instead (a quarter after repeated
  * overshoots), or, after a 99.8% step, first tries 90% of it. */
 static double time_of_impact(world *w, pair *p, double lo, double hi)
 {
     closest_cache cache = p->hit;
-    body a = flown(w, p->a, lo), b = flown(w, p->b, lo);
-    closest_result r = closest_query_apart(&a, &b, &cache);
+    /* each object where the search stands, where it tries, where it tries back,
+     * and its spin for the model: copies of it, of which only states are copied */
+    body A[4], B[4];
+    A[0] = A[1] = A[2] = A[3] = flown(w, p->a, lo);
+    B[0] = B[1] = B[2] = B[3] = flown(w, p->b, lo);
+    body *a = &A[0], *b = &B[0], *ta = &A[1], *tb = &B[1], *ba = &A[2], *bb = &B[2];
+    closest_result r = closest_query_apart(a, b, &cache);
     w->st.pair_checks++;
     if (r.status != CLOSEST_SEPARATED) return lo; /* touching already */
-    double f = 0.98; /* how far along the model's step to go */
+    /* how far along the model's step to go: all the way when it cannot overshoot */
+    double f = only_shifts(w, p->a) && only_shifts(w, p->b) ? 0.998 : 0.98;
     int overshot = 0;  /* steps in a row that found the pair touching */
     while (hi - lo > SIM_TOI_TIME && r.distance >= 0.5 * SIM_SEPARATION) {
-        body sa, sb;
-        const body *ma = moving(w, p->a, &a, &sa), *mb = moving(w, p->b, &b, &sb);
+        const body *ma = moving(w, p->a, a, &A[3]), *mb = moving(w, p->b, b, &B[3]);
         double safe = lo + sched_predict_bodies(w, ma, mb, r.distance);
         double s = contact_closing_speed(ma, mb, v3_scale(v3_add(r.pa, r.pb), 0.5), r.normal);
         double c = v3_dot(v3_sub(point_accel(w, mb, r.pb), point_accel(w, ma, r.pa)), r.normal);
         /* s t + c t^2 / 2 = D, its least positive root, stably */
-        double D = f * r.distance, disc = s * s + 2 * c * D, t = 0.5 * (lo + hi);
+        double D = f * r.distance;
+        /* once trusted, aim at the middle of where the search may stop */
+        if (f > 0.99) D = fmax(D, r.distance - 0.25 * SIM_SEPARATION);
+        double disc = s * s + 2 * c * D, t = 0.5 * (lo + hi);
         bool newton = !overshot && disc >= 0 && s + sqrt(disc) > 0;
         if (newton) t = lo + 2 * D / (s + sqrt(disc));
         t = fmax(t, safe);
@@ -453,8 +503,9 @@ static double time_of_impact(world *w, pair *p, double lo, double hi)
         /* touching at every try: the contact is early in the bracket */
         if (overshot >= 2) t = fmin(t, lo + 0.25 * (hi - lo));
         if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
-        body ta = flown(w, p->a, t), tb = flown(w, p->b, t);
-        closest_result rt = closest_query_apart(&ta, &tb, &cache);
+        fly_at(w, p->a, t, ta);
+        fly_at(w, p->b, t, tb);
+        closest_result rt = closest_query_apart(ta, tb, &cache);
         w->st.pair_checks++;
         if (rt.status != CLOSEST_SEPARATED) {
             /* a trusted step that just overshot: the contact is just short of it */
@@ -463,16 +514,17 @@ static double time_of_impact(world *w, pair *p, double lo, double hi)
             overshot++;
             f = 0.98;
             if (back > lo) {
-                body ba = flown(w, p->a, back), bb = flown(w, p->b, back);
-                closest_result rb = closest_query_apart(&ba, &bb, &cache);
+                fly_at(w, p->a, back, ba);
+                fly_at(w, p->b, back, bb);
+                closest_result rb = closest_query_apart(ba, bb, &cache);
                 w->st.pair_checks++;
                 if (rb.status != CLOSEST_SEPARATED) {
                     hi = back;
                 } else {
                     overshot = 0;
                     lo = back;
-                    a = ba;
-                    b = bb;
+                    swap_bodies(&a, &ba);
+                    swap_bodies(&b, &bb);
                     r = rb;
                 }
             }
@@ -481,8 +533,8 @@ static double time_of_impact(world *w, pair *p, double lo, double hi)
             if (newton) f = rt.distance <= 2 * (1 - f) * r.distance ? 0.998 : 0.98;
             overshot = 0;
             lo = t;
-            a = ta;
-            b = tb;
+            swap_bodies(&a, &ta);
+            swap_bodies(&b, &tb);
             r = rt;
         }
     }
@@ -919,7 +971,7 @@ static pair *check_due(world *w, double now, double t_end, double *when)
 /* Object i flies on from time t as it is now. */
 static void renew_flight(world *w, int i, double t)
 {
-    w->snap[i] = *w->bodies[i];
+    body_copy_state(&w->snap[i], w->bodies[i]);
     w->snap_t[i] = t;
     w->snap_id[i] = w->flight_count++;
 }
@@ -965,8 +1017,8 @@ static void answer(world *w, pair *p, double t)
     int ends[2] = {p->a, p->b};
     for (int k = 0; k < 2; k++) {
         int i = ends[k];
-        if (w->snap[i].state == STATE_DYNAMIC) *w->bodies[i] = flown(w, i, t);
-        w->pre[i] = *w->bodies[i];
+        if (w->snap[i].state == STATE_DYNAMIC) fly_into(w, i, t, w->bodies[i]);
+        body_copy_state(&w->pre[i], w->bodies[i]);
     }
     for (int i = 0; i < w->n; i++) w->touched[i] = false;
     w->time = t;
@@ -975,8 +1027,10 @@ static void answer(world *w, pair *p, double t)
     for (int k = 0; k < 2; k++) {
         int i = ends[k];
         w->touched[i] = false;
-        if (memcmp(&w->pre[i], w->bodies[i], sizeof(body)) == 0) {
-            if (w->snap[i].state == STATE_DYNAMIC) *w->bodies[i] = w->end[i]; /* as it was */
+        if (memcmp((char *)&w->pre[i] + offsetof(body, x), (char *)w->bodies[i] + offsetof(body, x),
+                   sizeof(body) - offsetof(body, x)) == 0) {
+            /* as it was */
+            if (w->snap[i].state == STATE_DYNAMIC) body_copy_state(w->bodies[i], &w->end[i]);
             continue;
         }
         renew_flight(w, i, t);
@@ -988,9 +1042,9 @@ static void answer(world *w, pair *p, double t)
         body *b = w->bodies[i];
         if (w->snap[i].state == STATE_DYNAMIC) {
             /* a moving object that slides no more: where it is at t, with that */
-            body at = flown(w, i, t);
-            at.slide = b->slide;
-            *b = at;
+            int slide = b->slide;
+            fly_into(w, i, t, b);
+            b->slide = slide;
         }
         renew_flight(w, i, t);
     }
@@ -1000,7 +1054,8 @@ static void answer(world *w, pair *p, double t)
 static int internal_step(world *w, double h)
 {
     double now = w->time, t_end = now + h;
-    if (due_room(w, w->npairs) != 0 || save_states(w, now) != 0) return -1;
+    if (due_room(w, w->npairs) != 0) return -1;
+    save_states(w, now);
     for (int n = 0;; n++) {
         fly_to_end(w, t_end);
         double when;
@@ -1024,7 +1079,8 @@ int sim_frame(world *w, char *err, size_t errlen)
                  w->set.time_step, n, SIM_MAX_SUBFRAMES);
         return -1;
     }
-    if (sim_update_pairs(w) != 0 || (w->sched_dirty && sched_build(w, w->time) != 0)) {
+    if (sim_update_pairs(w) != 0 || (w->sched_dirty && sched_build(w, w->time) != 0) ||
+        frame_states(w) != 0) {
         snprintf(err, errlen, "out of memory");
         return -1;
     }
