@@ -42,7 +42,8 @@
 static void turn_principal(quat *qp, vec3 *pi, int k, double angle)
 {
     if (angle == 0) return;
-    double hs = sin(0.5 * angle), hc = cos(0.5 * angle);
+    double hs, hc;
+    sin_cos(0.5 * angle, &hs, &hc);
     double c = hc * hc - hs * hs, s = 2 * hs * hc; /* the whole angle's */
     vec3 p = *pi;
     /* pi' = Rot_k(-angle) pi */

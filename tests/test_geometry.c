@@ -3,7 +3,7 @@
  * tetrahedron and octahedron, the sphere and the ellipsoid (V = 4/3 pi a b c,
  * Ixx = V (b^2 + c^2) / 5), and the box that a superquadric with small exponents
  * approaches.  The adjacency conventions of poly.h are checked here directly, not
- * only through poly_check. */
+ * only through poly_check.  And vmath's sin_cos against libm. */
 #include "check.h"
 
 #include <stdlib.h>
@@ -554,6 +554,22 @@ static void test_build_failure(void **state)
     assert_null(s.draw.tri);
 }
 
+/* vmath's sin_cos, by series for small angles, against libm: within 2 ulp, and
+ * exact where the answer is (0 and 1 at 0). */
+static void test_sin_cos(void **state)
+{
+    (void)state;
+    double s, c;
+    sin_cos(0, &s, &c);
+    assert_true(s == 0 && c == 1);
+    for (int i = -100000; i <= 100000; i++) {
+        double x = 0.3 * i / 100000; /* both sides of the series' limit, 1/8 */
+        sin_cos(x, &s, &c);
+        assert_true(fabs(s - sin(x)) <= 4.5e-16 * fabs(sin(x)));
+        assert_true(fabs(c - cos(x)) <= 4.5e-16);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest t[] = {
@@ -572,6 +588,7 @@ int main(void)
         cmocka_unit_test(test_superquadric_range),
         cmocka_unit_test(test_superquadric_points),
         cmocka_unit_test(test_build_failure),
+        cmocka_unit_test(test_sin_cos),
     };
     return cmocka_run_group_tests(t, NULL, NULL);
 }
