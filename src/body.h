@@ -61,9 +61,9 @@ typedef struct body {
     long slide_pair;   /* the pair of that contact in world.pairs */
     vec3 slide_n;      /* that support's normal, towards this body */
     long shifts;       /* how many times collisions set it apart (sim.c) */
-    int pinned_by;     /* the still object it last struck (sim.c), or -1; */
-    vec3 pinned_n;     /*   that contact's normal, towards this body, */
-    double pinned_t;   /*   and when */
+    int pinned_by[2];  /* the last two still objects it struck (sim.c), or -1; */
+    vec3 pinned_n[2];  /*   those contacts' normals, towards this body, */
+    double pinned_t[2];/*   and when */
 } body;
 
 /* Copies src's state (x to the end) over dst's, for a dst that is a copy of the

@@ -703,25 +703,42 @@ static vec3 support_normal(const body *s, closest_feature f, vec3 n)
     return v3_dot(fn, n) > 1 - 1e-6 ? fn : n;
 }
 
-/* True when object i, pushed along toward, is pinned against the still object it
- * struck a moment ago (see SIM_PINNED_TIME): then *s is that contact's normal,
- * and the blow passes on to the still object. */
-static bool pinned(world *w, int i, vec3 toward, vec3 *s)
+/* True when object i, pushed along toward (within 45 degrees), is pinned against
+ * the still object it struck a moment ago that its pinned_by[slot] names (see
+ * SIM_PINNED_TIME): then *s is that contact's normal, along which the blow
+ * passes on to the still object (the object moves only across it). */
+static bool pinned_by(world *w, int i, int slot, vec3 toward, vec3 *s)
 {
     const body *x = w->bodies[i];
-    int k = x->pinned_by;
+    int k = x->pinned_by[slot];
     if (x->state != STATE_DYNAMIC || k < 0 || k >= w->n || w->bodies[k]->state == STATE_DYNAMIC ||
-        w->time - x->pinned_t > SIM_PINNED_TIME || v3_dot(x->pinned_n, toward) > -0.99)
+        w->time - x->pinned_t[slot] > SIM_PINNED_TIME || v3_dot(x->pinned_n[slot], toward) > -0.7)
         return false;
     for (long j = w->obj_first[i]; j < w->obj_first[i + 1]; j++) {
         pair *o = &w->pairs[w->obj_pairs[j]];
         if (o->a != k && o->b != k) continue;
         closest_result r = query_apart(w, o, w->bodies[o->a], w->bodies[o->b]);
         if (r.status == CLOSEST_PENETRATING || r.distance > SIM_PINNED_GAP) return false;
-        *s = x->pinned_n;
+        *s = x->pinned_n[slot];
         return true;
     }
     return false;
+}
+
+/* The same for either of the last two still objects i struck. */
+static bool pinned(world *w, int i, vec3 toward, vec3 *s)
+{
+    return pinned_by(w, i, 0, toward, s) || pinned_by(w, i, 1, toward, s);
+}
+
+/* Body x struck still object k along n (towards x) at time t: kept in the slot
+ * that holds k already, or else in the older one. */
+static void strike(body *x, int k, vec3 n, double t)
+{
+    int slot = x->pinned_by[1] == k || (x->pinned_by[0] != k && x->pinned_t[1] < x->pinned_t[0]);
+    x->pinned_by[slot] = k;
+    x->pinned_n[slot] = n;
+    x->pinned_t[slot] = t;
 }
 
 /* Answers the collision of pair p now: the impulse, the separation, the log; and
@@ -764,16 +781,8 @@ static void collide(world *w, pair *p)
         w->st.collisions++;
         log_event(w, a, b, c.point, c.normal, c.impulse, c.speed);
         /* what struck a still object, for a sandwich */
-        if (a->state == STATE_DYNAMIC && b->state != STATE_DYNAMIC) {
-            a->pinned_by = p->b;
-            a->pinned_n = r.normal;
-            a->pinned_t = w->time;
-        }
-        if (b->state == STATE_DYNAMIC && a->state != STATE_DYNAMIC) {
-            b->pinned_by = p->a;
-            b->pinned_n = v3_neg(r.normal);
-            b->pinned_t = w->time;
-        }
+        if (a->state == STATE_DYNAMIC && b->state != STATE_DYNAMIC) strike(a, p->b, r.normal, w->time);
+        if (b->state == STATE_DYNAMIC && a->state != STATE_DYNAMIC) strike(b, p->a, v3_neg(r.normal), w->time);
     }
     /* the contact state: an object that barely bounces off a support under it rests
      * on it, or slides on it when it still moves along it */

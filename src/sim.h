@@ -45,8 +45,9 @@
  * support, if that face is within the angle and nothing is in the way. */
 #define SIM_SETTLE_ANGLE 0.35
 /* A sandwich: an object that struck a still object less than SIM_PINNED_TIME (s)
- * ago, and is still within SIM_PINNED_GAP (m) of it, passes a blow that presses
- * it back against it on to it, as a stack passes blows to its support. */
+ * ago, one of the last two it struck, and is still within SIM_PINNED_GAP (m) of
+ * it, passes the part of a blow within 45 degrees of pressing it back against it
+ * on to it, as a stack passes blows to its support. */
 #define SIM_PINNED_TIME 0.01
 #define SIM_PINNED_GAP 1e-5
 /* Collisions one internal step may answer before the step gives up and lets the

@@ -126,8 +126,10 @@ void world_delete(world *w, int i)
         if (b->support == i) b->support = -1;
         else if (b->support > i) b->support--;
         if (b->slide >= i) b->slide = -1; /* the pairs are rebuilt anyway */
-        if (b->pinned_by == i) b->pinned_by = -1;
-        else if (b->pinned_by > i) b->pinned_by--;
+        for (int k = 0; k < 2; k++) {
+            if (b->pinned_by[k] == i) b->pinned_by[k] = -1;
+            else if (b->pinned_by[k] > i) b->pinned_by[k]--;
+        }
     }
 }
 
