@@ -515,22 +515,31 @@ static void slider_leaves_the_table_at_its_edge(void **state)
  * The wall takes the blow through the box, as a support takes a blow through a
  * stack: two collisions in all, the box stays, and the ball leaves as from the
  * wall, at e times its speed. */
+/* The sandwich's world, with no force: a wall with its face at x = 0.1
+ * (restitution 0), a 1 kg box 1 cm from it arriving at 1 m/s (there at 10 ms),
+ * and a 5 kg ball for the caller to aim. */
+static void sandwich(world *w, body **box, body **ball)
+{
+    world_init(w);
+    w->set.force = (dir_amount){v3(0, 0, -1), 0};
+    w->set.time_step = 0.05;
+    body *wall = add_static_box(w, "wall", v3(0.1, 1, 1));
+    wall->elasticity = 0;
+    *box = add_box(w, "box", v3(0.1, 0.1, 0.1));
+    (*box)->elasticity = 0.5;
+    (*box)->x = v3(0.2 + 0.01, 0, 0);
+    (*box)->v = v3(-1, 0, 0);
+    *ball = add_ball(w, "ball", 0.1);
+    (*ball)->elasticity = 0.5;
+    body_set_mass(*ball, 5);
+}
+
 static void sandwich_against_a_wall_passes_the_blow_on(void **state)
 {
     (void)state;
     world w;
-    world_init(&w);
-    w.set.force = (dir_amount){v3(0, 0, -1), 0};
-    w.set.time_step = 0.05;
-    body *wall = add_static_box(&w, "wall", v3(0.1, 1, 1)); /* its face at x = 0.1 */
-    wall->elasticity = 0;
-    body *box = add_box(&w, "box", v3(0.1, 0.1, 0.1));
-    box->elasticity = 0.5;
-    box->x = v3(0.2 + 0.01, 0, 0); /* 1 cm from the wall, at 1 m/s: there at 10 ms */
-    box->v = v3(-1, 0, 0);
-    body *ball = add_ball(&w, "ball", 0.1);
-    ball->elasticity = 0.5;
-    body_set_mass(ball, 5);
+    body *box, *ball;
+    sandwich(&w, &box, &ball);
     ball->x = v3(0.4 + 0.03, 0, 0); /* 3 cm from the box's far side, at 2 m/s: 15 ms */
     ball->v = v3(-2, 0, 0);
     frames(&w, 1);
@@ -553,18 +562,8 @@ static void oblique_sandwich_passes_the_blow_on(void **state)
 {
     (void)state;
     world w;
-    world_init(&w);
-    w.set.force = (dir_amount){v3(0, 0, -1), 0};
-    w.set.time_step = 0.05;
-    body *wall = add_static_box(&w, "wall", v3(0.1, 1, 1)); /* its face at x = 0.1 */
-    wall->elasticity = 0;
-    body *box = add_box(&w, "box", v3(0.1, 0.1, 0.1));
-    box->elasticity = 0.5;
-    box->x = v3(0.2 + 0.01, 0, 0); /* at the wall at 10 ms */
-    box->v = v3(-1, 0, 0);
-    body *ball = add_ball(&w, "ball", 0.1);
-    ball->elasticity = 0.5;
-    body_set_mass(ball, 5);
+    body *box, *ball;
+    sandwich(&w, &box, &ball);
     /* towards the box's edge at (0.3, 0.1), along n, 30 degrees off the wall's
      * normal: there 3 cm later, at 15 ms */
     const double pi = 3.14159265358979323846;
