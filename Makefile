@@ -106,7 +106,7 @@ check-build: vroc man/vroc.1 build-san/vroc $(addprefix build/tests/,$(TESTS)) \
              $(addprefix build-san/tests/,$(TESTS))
 
 # ---- benchmarks ----
-build/bench/%: bench/%.c build/libvroc.a
+build/bench/%: bench/%.c bench/bench.h build/libvroc.a
 	@mkdir -p build/bench
 	$(CC) $(CFLAGS_ALL) -O2 -o $@ $< build/libvroc.a $(LIBS)
 

@@ -18,24 +18,13 @@
 #include <string.h>
 #include <time.h>
 
+#include "bench.h"
+
 #include "closest.h"
 #include "shape.h"
 
 #define RUNS 3
 #define POSES 4000
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
-}
 
 /* A shape with its closest data (built here when shape_build does not attach it). */
 typedef struct {

@@ -48,6 +48,8 @@
 #include <string.h>
 #include <time.h>
 
+#include "bench.h"
+
 #include "shell.h"
 #include "sim.h"
 #include "view.h"
@@ -76,19 +78,6 @@ typedef struct {
     long frames;
     bool truncated;
 } run_result;
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 static double median(double *v, int n)
 {
