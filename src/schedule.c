@@ -178,7 +178,7 @@ double sched_predict_far(const world *w, const body *a, const body *b, double d,
 static void place(world *w, long pos, sched_entry e)
 {
     w->heap[pos] = e;
-    w->pairs[e.pair].heap = pos;
+    w->heap_pos[e.pair] = pos;
 }
 
 static void sift_up(world *w, long pos)
@@ -212,18 +212,22 @@ int sched_build(world *w, double t)
 {
     long np = w->npairs;
     sched_entry *heap = malloc((size_t)(np ? np : 1) * sizeof *heap);
+    long *pos = malloc((size_t)(np ? np : 1) * sizeof *pos);
     long *first = malloc((size_t)(w->n + 1) * sizeof *first);
     long *list = malloc((size_t)(2 * np + 1) * sizeof *list);
-    if (!heap || !first || !list) {
+    if (!heap || !pos || !first || !list) {
         free(heap);
+        free(pos);
         free(first);
         free(list);
         return -1;
     }
     free(w->heap);
+    free(w->heap_pos);
     free(w->obj_first);
     free(w->obj_pairs);
     w->heap = heap;
+    w->heap_pos = pos;
     w->obj_first = first;
     w->obj_pairs = list;
     for (int k = 0; k <= w->n; k++) first[k] = 0;
@@ -250,7 +254,7 @@ int sched_build(world *w, double t)
 void sched_set(world *w, long i, double next)
 {
     double old = w->pairs[i].next;
-    long pos = w->pairs[i].heap;
+    long pos = w->heap_pos[i];
     w->pairs[i].next = next;
     w->heap[pos].next = next;
     if (next < old) sift_up(w, pos);
@@ -277,7 +281,7 @@ int sched_check(const world *w)
 {
     for (long pos = 0; pos < w->npairs; pos++) {
         long i = w->heap[pos].pair;
-        if (w->pairs[i].heap != pos || w->pairs[i].next != w->heap[pos].next) return -1;
+        if (w->heap_pos[i] != pos || w->pairs[i].next != w->heap[pos].next) return -1;
         if (pos > 0 && w->heap[pos].next < w->heap[(pos - 1) / 2].next) return -1;
     }
     return 0;

@@ -164,7 +164,7 @@ int sim_update_pairs(world *w)
     for (int i = 0; i < w->n; i++) {
         for (int j = i + 1; j < w->n; j++) {
             if (body_is_static(w->bodies[i]) && body_is_static(w->bodies[j])) continue;
-            w->pairs[k++] = (pair){.a = i, .b = j, .heap = -1, .toi_a = -1, .toi_b = -1};
+            w->pairs[k++] = (pair){.a = i, .b = j, .toi_a = -1, .toi_b = -1};
         }
     }
     w->npairs = k;
@@ -334,16 +334,24 @@ static void save_states(world *w, double t)
     }
 }
 
-/* Makes snap, pre and end copies of the objects that may move in the frame, so
- * that within it only their states need copying (nothing else changes while time
- * runs; static objects are read where they are). */
-static int frame_states(world *w)
+/* Copies of each object a time of impact or a settling works on: body i's are
+ * scratch[SCRATCH i] to scratch[SCRATCH i + SCRATCH - 1]. */
+#define SCRATCH 4
+
+/* Makes snap, pre, end and scratch copies of the objects that may move, so that within a
+ * frame only their states need copying (nothing else changes while time runs;
+ * static objects are read where they are).  The copies are made again only after
+ * a command (changed, w->sched_dirty): between frames nothing else changes a
+ * body but its state, which every step copies before it reads it. */
+static int frame_states(world *w, bool changed)
 {
     if (w->n > w->capsnap) {
+        changed = true;
         bool ok = true;
         w->snap = resized(w->snap, sizeof *w->snap, w->n, &ok);
         w->pre = resized(w->pre, sizeof *w->pre, w->n, &ok);
         w->end = resized(w->end, sizeof *w->end, w->n, &ok);
+        w->scratch = resized(w->scratch, SCRATCH * sizeof *w->scratch, w->n, &ok);
         w->snap_t = resized(w->snap_t, sizeof *w->snap_t, w->n, &ok);
         w->snap_id = resized(w->snap_id, sizeof *w->snap_id, w->n, &ok);
         w->end_id = resized(w->end_id, sizeof *w->end_id, w->n, &ok);
@@ -351,8 +359,11 @@ static int frame_states(world *w)
         if (!ok) return -1;
         w->capsnap = w->n;
     }
-    for (int i = 0; i < w->n; i++)
-        if (!body_is_static(w->bodies[i])) w->snap[i] = w->pre[i] = w->end[i] = *w->bodies[i];
+    for (int i = 0; changed && i < w->n; i++)
+        if (!body_is_static(w->bodies[i])) {
+            w->snap[i] = w->pre[i] = w->end[i] = *w->bodies[i];
+            for (int k = 0; k < SCRATCH; k++) w->scratch[SCRATCH * i + k] = *w->bodies[i];
+        }
     return 0;
 }
 
@@ -378,13 +389,24 @@ static void swap_bodies(body **x, body **y)
     *y = t;
 }
 
-/* Body i's state at time t (a shallow copy: shares the shape). */
-static body flown(const world *w, int i, double t)
+/* Body i at time t: itself when it does not move, else its scratch copy number
+ * k, flown there. */
+static const body *flown(const world *w, int i, double t, int k)
 {
-    if (w->snap[i].state != STATE_DYNAMIC) return *w->bodies[i];
-    body b = w->snap[i];
-    fly_into(w, i, t, &b);
+    if (w->snap[i].state != STATE_DYNAMIC) return w->bodies[i];
+    body *b = &w->scratch[SCRATCH * i + k];
+    fly_into(w, i, t, b);
     return b;
+}
+
+/* The copies of body i a search works on, the first at time t: body i itself
+ * when it does not move (nothing then changes them), else its scratch copies
+ * (only the first flown: the others are written before they are read). */
+static void search_copies(world *w, int i, double t, body *out[SCRATCH])
+{
+    for (int k = 0; k < SCRATCH; k++)
+        out[k] = w->snap[i].state == STATE_DYNAMIC ? &w->scratch[SCRATCH * i + k] : w->bodies[i];
+    if (w->snap[i].state == STATE_DYNAMIC) fly_into(w, i, t, out[0]);
 }
 
 /* Body i where its flight starts (at snap_t[i]). */
@@ -474,10 +496,10 @@ static double time_of_impact(world *w, pair *p, double lo, double hi)
     closest_cache cache = p->hit;
     /* each object where the search stands, where it tries, where it tries back,
      * and its spin for the model: copies of it, of which only states are copied */
-    body A[4], B[4];
-    A[0] = A[1] = A[2] = A[3] = flown(w, p->a, lo);
-    B[0] = B[1] = B[2] = B[3] = flown(w, p->b, lo);
-    body *a = &A[0], *b = &B[0], *ta = &A[1], *tb = &B[1], *ba = &A[2], *bb = &B[2];
+    body *A[SCRATCH], *B[SCRATCH];
+    search_copies(w, p->a, lo, A);
+    search_copies(w, p->b, lo, B);
+    body *a = A[0], *b = B[0], *ta = A[1], *tb = B[1], *ba = A[2], *bb = B[2];
     closest_result r = closest_query_apart(a, b, &cache);
     w->st.pair_checks++;
     if (r.status != CLOSEST_SEPARATED) return lo; /* touching already */
@@ -485,7 +507,7 @@ static double time_of_impact(world *w, pair *p, double lo, double hi)
     double f = only_shifts(w, p->a) && only_shifts(w, p->b) ? 0.998 : 0.98;
     int overshot = 0;  /* steps in a row that found the pair touching */
     while (hi - lo > SIM_TOI_TIME && r.distance >= 0.5 * SIM_SEPARATION) {
-        const body *ma = moving(w, p->a, a, &A[3]), *mb = moving(w, p->b, b, &B[3]);
+        const body *ma = moving(w, p->a, a, A[3]), *mb = moving(w, p->b, b, B[3]);
         double safe = lo + sched_predict_bodies(w, ma, mb, r.distance);
         double s = contact_closing_speed(ma, mb, v3_scale(v3_add(r.pa, r.pb), 0.5), r.normal);
         double c = v3_dot(v3_sub(point_accel(w, mb, r.pb), point_accel(w, ma, r.pa)), r.normal);
@@ -657,9 +679,9 @@ static int settle(world *w, int mi, int si, vec3 n, vec3 support_pt, pair *p, do
             if (o == p) continue;
             /* the other object where it is now (only the pair is flown to the
              * collision: see internal_step), unless it is clearly out of reach */
-            body other = flown(w, o->a == mi ? o->b : o->a, w->time);
-            if (bound_gap(m, &other) > SIM_SEPARATION) continue;
-            closest_result ro = o->a == mi ? query(w, o, m, &other) : query(w, o, &other, m);
+            const body *other = flown(w, o->a == mi ? o->b : o->a, w->time, 0);
+            if (bound_gap(m, other) > SIM_SEPARATION) continue;
+            closest_result ro = o->a == mi ? query(w, o, m, other) : query(w, o, other, m);
             if (ro.status != CLOSEST_SEPARATED || ro.distance < SIM_SEPARATION) ok = false;
         }
         if (!ok) {
@@ -1090,7 +1112,7 @@ int sim_frame(world *w, char *err, size_t errlen)
         return -1;
     }
     if (sim_update_pairs(w) != 0 || (w->sched_dirty && sched_build(w, w->time) != 0) ||
-        frame_states(w) != 0) {
+        frame_states(w, w->sched_dirty) != 0) {
         snprintf(err, errlen, "out of memory");
         return -1;
     }

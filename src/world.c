@@ -64,12 +64,15 @@ void world_free(world *w)
     free(w->snap_id);
     free(w->pre);
     free(w->end);
+    free(w->scratch);
     free(w->end_id);
     free(w->touched);
     free(w->heap);
+    free(w->heap_pos);
     free(w->obj_first);
     free(w->obj_pairs);
     w->heap = NULL;
+    w->heap_pos = NULL;
     w->obj_first = w->obj_pairs = NULL;
     free(w->due);
     free(w->due_next);
@@ -77,7 +80,7 @@ void world_free(world *w)
     w->due_next = NULL;
     w->capdue = 0;
     w->pairs = NULL;
-    w->snap = w->pre = w->end = NULL;
+    w->snap = w->pre = w->end = w->scratch = NULL;
     w->end_id = NULL;
     w->touched = NULL;
     w->snap_t = NULL;

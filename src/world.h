@@ -82,7 +82,6 @@ typedef struct {
     double next;          /* earliest time the pair could collide (the schedule) */
     double checked;       /* when next was found from its objects' speeds, or +inf
                            * when it holds only while their motions do (sim.c) */
-    long heap;            /* its place in the schedule's heap */
     double toi;           /* its first contact found in this internal step, valid */
     long toi_a, toi_b;    /*   while its objects fly from flights numbered so (sim.c) */
     bool far;             /* next came from sched_predict_far, when its objects had */
@@ -116,9 +115,13 @@ typedef struct world {
     long npairs, cappairs;
     bool pairs_dirty;     /* objects were added, deleted or changed mass */
     sched_entry *heap;    /* the schedule: a binary min-heap of (next, pair) */
+    long *heap_pos;       /* each pair's place in it (apart from the pairs, so that
+                           * sifting writes no pair) */
     long *obj_first;      /* the pairs of object k: obj_pairs[obj_first[k] .. */
     long *obj_pairs;      /*   obj_first[k + 1] - 1] */
-    bool sched_dirty;     /* a command changed something: every pair is due */
+    bool sched_dirty;     /* a command changed something: every pair is due, and
+                           * the simulation copies its bodies afresh (set it after
+                           * changing a body other than by its state, x to the end) */
     long *due;            /* scratch: the pairs checked in a step, their new times */
     double *due_next;
     long capdue;
@@ -130,6 +133,7 @@ typedef struct world {
     bool *touched;        /* scratch: the other objects a collision's answer changed */
     body *end;            /* scratch: the states at the end of the internal step, */
     long *end_id;         /*   flown from the starts numbered so */
+    body *scratch;        /* scratch: SIM_SCRATCH copies of each object (sim.c) */
     int capsnap;
 } world;
 
