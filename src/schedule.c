@@ -33,17 +33,9 @@ static double spin_bound(const body *b)
     return imin > 0 ? 3 * v3_len(b->L) / imin : 0;
 }
 
-/* The closing bound of the pair's moving objects, a + b t + c t^2 on the piece of
- * time around t (the bound is quadratic between the breakpoints where an object's
- * speed bound reaches max_linear or its rotation allowance runs out). */
-typedef struct {
-    double s, acc, vmax, t_lin; /* centre: s t + acc t^2 / 2 until t_lin, then vmax t */
-    double rate, cap, t_rot;    /* surface: rate t until t_rot, then cap */
-} reach_terms;
-
-static reach_terms terms_of(const body *b, double acc, double vmax, double slack)
+static sched_reach terms_of(const body *b, double acc, double vmax, double slack)
 {
-    reach_terms r;
+    sched_reach r;
     r.s = v3_len(b->v) + slack;
     r.acc = acc;
     r.vmax = vmax;
@@ -55,7 +47,7 @@ static reach_terms terms_of(const body *b, double acc, double vmax, double slack
     return r;
 }
 
-static void add_piece(const reach_terms *r, double t, double *a, double *b, double *c)
+static void add_piece(const sched_reach *r, double t, double *a, double *b, double *c)
 {
     if (t < r->t_lin) {
         *b += r->s;
@@ -67,7 +59,7 @@ static void add_piece(const reach_terms *r, double t, double *a, double *b, doub
     else *a += r->cap;
 }
 
-static double eval(const reach_terms *r, int n, double t)
+static double eval(const sched_reach *r, int n, double t)
 {
     double f = 0;
     for (int k = 0; k < n; k++) {
@@ -95,17 +87,18 @@ static double piece_root(double a, double b, double c, double target)
     return b > 0 ? -cc / b : HUGE_VAL;
 }
 
+/* The earliest time the bound (its terms filled in by the caller) reaches d, or
+ * HUGE_VAL when it never does; 0 when d <= 0. */
 static double predict(const world *w, const body *a, const body *b, double d, bool any_spin,
-                      double slack)
+                      const double slack[2], sched_bound *keep)
 {
-    if (d <= 0) return 0;
     const body *ob[2] = {a, b};
     double vmax = w->set.max_linear;
-    reach_terms r[2];
+    sched_reach r[2];
     int n = 0;
     for (int k = 0; k < 2; k++) {
         if (ob[k]->state != STATE_DYNAMIC) continue;
-        r[n] = terms_of(ob[k], v3_len(world_body_accel(w, ob[k])), vmax, slack);
+        r[n] = terms_of(ob[k], v3_len(world_body_accel(w, ob[k])), vmax, slack[k]);
         if (any_spin) { /* the whole turn at once */
             r[n].cap = ob[k]->shape.r_out - ob[k]->shape.r_in;
             r[n].rate = 0;
@@ -113,12 +106,18 @@ static double predict(const world *w, const body *a, const body *b, double d, bo
         }
         n++;
     }
+    if (keep) {
+        keep->dist = d;
+        keep->n = n;
+        for (int k = 0; k < n; k++) keep->r[k] = r[k];
+    }
+    if (d <= 0) return 0;
     if (n == 0) return HUGE_VAL;
     /* a margin for the rounding of the flight and of the distance */
     double target = d - 1e-9 * (1 + ob[0]->shape.r_out + ob[1]->shape.r_out);
     if (target <= 0) return 0;
     if (n == 1 && r[0].t_rot == 0) { /* one object, its turn all at once: in closed form */
-        const reach_terms *o = &r[0];
+        const sched_reach *o = &r[0];
         double left = target - o->cap, t;
         if (left <= 0) return 0;
         if (o->s >= o->vmax) {
@@ -165,12 +164,35 @@ static double predict(const world *w, const body *a, const body *b, double d, bo
 
 double sched_predict_bodies(const world *w, const body *a, const body *b, double d)
 {
-    return predict(w, a, b, d, false, 0);
+    static const double none[2] = {0, 0};
+    return predict(w, a, b, d, false, none, NULL);
 }
 
 double sched_predict_far(const world *w, const body *a, const body *b, double d, double sep)
 {
-    return predict(w, a, b, d - SCHED_SHIFTS * sep, true, SCHED_SLACK);
+    static const double slack[2] = {SCHED_SLACK, SCHED_SLACK};
+    return predict(w, a, b, d - SCHED_SHIFTS * sep, true, slack, NULL);
+}
+
+double sched_predict_kept(const world *w, const body *a, const body *b, double d, double slack_a,
+                          double slack_b, sched_bound *keep)
+{
+    const double slack[2] = {slack_a, slack_b};
+    return predict(w, a, b, d, false, slack, keep);
+}
+
+double sched_closing(const world *w, const body *a, const body *b, double slack_a, double slack_b,
+                   double t)
+{
+    sched_bound k;
+    const double slack[2] = {slack_a, slack_b};
+    predict(w, a, b, 0, false, slack, &k);
+    return eval(k.r, k.n, t);
+}
+
+double sched_left(const sched_bound *k, double t)
+{
+    return k->dist - eval(k->r, k->n, t);
 }
 
 /* ---- the indexed binary heap ---- */
@@ -213,21 +235,25 @@ int sched_build(world *w, double t)
     long np = w->npairs;
     sched_entry *heap = malloc((size_t)(np ? np : 1) * sizeof *heap);
     long *pos = malloc((size_t)(np ? np : 1) * sizeof *pos);
+    sched_bound *bound = malloc((size_t)(np ? np : 1) * sizeof *bound);
     long *first = malloc((size_t)(w->n + 1) * sizeof *first);
     long *list = malloc((size_t)(2 * np + 1) * sizeof *list);
-    if (!heap || !pos || !first || !list) {
+    if (!heap || !pos || !bound || !first || !list) {
         free(heap);
         free(pos);
+        free(bound);
         free(first);
         free(list);
         return -1;
     }
     free(w->heap);
     free(w->heap_pos);
+    free(w->bound);
     free(w->obj_first);
     free(w->obj_pairs);
     w->heap = heap;
     w->heap_pos = pos;
+    w->bound = bound;
     w->obj_first = first;
     w->obj_pairs = list;
     for (int k = 0; k <= w->n; k++) first[k] = 0;

@@ -36,6 +36,39 @@ double sched_predict_bodies(const world *w, const body *a, const body *b, double
  * It is earlier than sched_predict's by little when d is large. */
 double sched_predict_far(const world *w, const body *a, const body *b, double d, double sep);
 
+/* One moving object's part of a bound, as a function of the time t since it was
+ * found: its centre goes at most s t + acc t^2 / 2 until t_lin, then vmax t; its
+ * surface turns about the centre by at most rate t until t_rot, then cap. */
+typedef struct {
+    double s, acc, vmax, t_lin;
+    double rate, cap, t_rot;
+} sched_reach;
+
+/* A near pair's prediction as it was made: the distance then and the bound on how
+ * far its n moving objects could close it since. */
+typedef struct sched_bound {
+    double dist;
+    sched_reach r[2];
+    int n;
+} sched_bound;
+
+/* sched_predict_bodies for objects whose speeds may exceed those of the states
+ * given by slack_a and slack_b (m/s; the states may be earlier than the instant
+ * the time is counted from); the bound it used is kept in *keep. */
+double sched_predict_kept(const world *w, const body *a, const body *b, double d, double slack_a,
+                          double slack_b, sched_bound *keep);
+
+/* How far objects a and b, in the states given (speeds up to slack_a and slack_b
+ * more), could close their distance in t seconds: the bound sched_predict_kept
+ * predicts with. */
+double sched_closing(const world *w, const body *a, const body *b, double slack_a, double slack_b,
+                   double t);
+
+/* What is left of a kept bound's distance t seconds after it was found, while
+ * its objects moved as it assumed: a lower bound on the pair's distance then
+ * (negative when they may touch). */
+double sched_left(const sched_bound *k, double t);
+
 /* Builds the heap over every pair, all due at time t, and the lists of each
  * object's pairs.  Returns 0, or -1 when out of memory. */
 int sched_build(world *w, double t);

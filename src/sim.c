@@ -953,7 +953,10 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
     p->speed_b = v3_len(w->bodies[p->b]->v);
     closest_result r = query_apart(w, p, w->bodies[p->a], w->bodies[p->b]);
     if (r.status != CLOSEST_PENETRATING) /* without the heap no time is kept */
-        return w->set.collision_heap ? t_end + sched_predict(w, p, r.distance) : HUGE_VAL;
+        return w->set.collision_heap ? t_end + sched_predict_kept(w, w->bodies[p->a], w->bodies[p->b],
+                                                                  r.distance, 0, 0, &w->bound[i])
+                                     : HUGE_VAL;
+    w->bound[i].dist = 0; /* touching: nothing left to keep (repredict) */
     /* the first contact is a function of the two flights alone, searched from
      * where the later of them starts, so that whenever the pair is found the
      * answer is the same (and is kept while both flights are) */
@@ -1008,13 +1011,61 @@ static void renew_flight(world *w, int i, double t)
     w->snap_id[i] = w->flight_count++;
 }
 
+/* True when body b flies from state s (at time t) to time t + h without reaching
+ * the speed limits, so that its centre moves by the plain v h + a h^2 / 2 and
+ * its surface turns at the spin s has. */
+static bool unlimited(const world *w, const body *b, double h)
+{
+    double acc = v3_len(world_body_accel(w, b));
+    return b->state != STATE_DYNAMIC ||
+           (v3_len(b->v) + acc * h < w->set.max_linear && v3_len(b->w) < w->set.max_angular);
+}
+
+/* A new time for near pair k of object i, which a collision at time t changed
+ * from pre (moved by moved), from what is left of its distance then: the
+ * distance when the pair was checked, less what the objects could close from the
+ * check to t as the bound kept then assumed (they moved so until t), or, for a
+ * check later than t (at the end of the step, with i's flight from before the
+ * collision), less what they could have closed from t to the check; less the
+ * move.  Object i moves on from t as it is now, and the other as it flies, no
+ * faster than its speed where its flight starts plus what the force adds since.
+ * Without a bound, the pair is due at t. */
+static void repredict(world *w, long k, int i, const body *pre, double moved, double t)
+{
+    pair *q = &w->pairs[k];
+    int j = q->a == i ? q->b : q->a;
+    const body *o = at_start(w, j);
+    double slack = o->state == STATE_DYNAMIC ? v3_len(world_body_accel(w, o)) * (t - w->snap_t[j]) : 0;
+    double left = -1;
+    if (q->checked <= t) {
+        left = sched_left(&w->bound[k], t - q->checked) - moved;
+    } else if (unlimited(w, pre, q->checked - t) &&
+               unlimited(w, o, q->checked - w->snap_t[j])) {
+        double back = q->a == i ? sched_closing(w, pre, o, 0, slack, q->checked - t)
+                                : sched_closing(w, o, pre, slack, 0, q->checked - t);
+        left = w->bound[k].dist - back - moved;
+    }
+    if (left <= 0) {
+        sched_set(w, k, t);
+        return;
+    }
+    const body *me = w->bodies[i];
+    double next = q->a == i ? sched_predict_kept(w, me, o, left, 0, slack, &w->bound[k])
+                            : sched_predict_kept(w, o, me, left, slack, 0, &w->bound[k]);
+    q->checked = t;
+    q->speed_a = v3_len(w->bodies[q->a]->v) + (q->a == i ? 0 : slack);
+    q->speed_b = v3_len(w->bodies[q->b]->v) + (q->b == i ? 0 : slack);
+    sched_set(w, k, t + next);
+}
+
 /* Makes due at time t the pairs of object i, which a collision changed from a to
  * b, that its new motion may bring together before their time.  A pair's time
  * came from a bound on its objects' motion from its check on: each no faster than
  * its speed then (speed_a, speed_b) plus what the force adds since, turning no
  * faster than then (or by all of R - r at once, for a far pair), and, for a far
  * pair, set apart at most SCHED_SHIFTS times by a separation.  Where b keeps
- * within that, the pair keeps its time. */
+ * within that, the pair keeps its time; a near pair found at or before t that
+ * does not gets a new one from its kept bound (repredict). */
 static void reschedule(world *w, int i, const body *a, const body *b, double t)
 {
     double acc = v3_len(world_body_accel(w, a)), moved = v3_len(v3_sub(a->x, b->x));
@@ -1036,7 +1087,9 @@ static void reschedule(world *w, int i, const body *a, const body *b, double t)
                    SCHED_SHIFTS;
         else if (keep)
             keep = moved == 0 && !spun;
-        if (!keep && q->next > t) sched_set(w, k, t);
+        if (keep || q->next <= t) continue;
+        if (!q->far && q->checked < HUGE_VAL) repredict(w, k, i, a, moved, t);
+        else sched_set(w, k, t);
     }
 }
 

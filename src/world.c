@@ -69,10 +69,12 @@ void world_free(world *w)
     free(w->touched);
     free(w->heap);
     free(w->heap_pos);
+    free(w->bound);
     free(w->obj_first);
     free(w->obj_pairs);
     w->heap = NULL;
     w->heap_pos = NULL;
+    w->bound = NULL;
     w->obj_first = w->obj_pairs = NULL;
     free(w->due);
     free(w->due_next);

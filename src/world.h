@@ -117,6 +117,7 @@ typedef struct world {
     sched_entry *heap;    /* the schedule: a binary min-heap of (next, pair) */
     long *heap_pos;       /* each pair's place in it (apart from the pairs, so that
                            * sifting writes no pair) */
+    struct sched_bound *bound; /* each near pair's bound, as its time was found */
     long *obj_first;      /* the pairs of object k: obj_pairs[obj_first[k] .. */
     long *obj_pairs;      /*   obj_first[k + 1] - 1] */
     bool sched_dirty;     /* a command changed something: every pair is due, and

@@ -5,7 +5,7 @@
 # frames' files.
 . "$(dirname "$0")/lib.sh"
 S=$(cd "$(dirname "$0")/../scenes" && pwd)
-frames=40
+frames=100
 [ "${BUILD:-build}" = build-san ] && frames=15
 for f in "$S"/*.vroc; do
     name=$(basename "$f" .vroc)
