@@ -156,14 +156,17 @@ int sim_update_pairs(world *w)
     long n = world_pairs(w);
     if (n > w->cappairs) {
         pair *np = realloc(w->pairs, (size_t)n * sizeof *np);
-        if (!np) return -1;
-        w->pairs = np;
+        if (np) w->pairs = np;
+        pair_hit *nh = realloc(w->hits, (size_t)n * sizeof *nh);
+        if (nh) w->hits = nh;
+        if (!np || !nh) return -1;
         w->cappairs = n;
     }
     long k = 0;
     for (int i = 0; i < w->n; i++) {
         for (int j = i + 1; j < w->n; j++) {
             if (body_is_static(w->bodies[i]) && body_is_static(w->bodies[j])) continue;
+            w->hits[k].t = NAN;
             w->pairs[k++] = (pair){.a = i, .b = j, .toi_a = -1, .toi_b = -1};
         }
     }
@@ -502,6 +505,7 @@ static double time_of_impact(world *w, pair *p, double lo, double hi)
     body *a = A[0], *b = B[0], *ta = A[1], *tb = B[1], *ba = A[2], *bb = B[2];
     closest_result r = closest_query_apart(a, b, &cache);
     w->st.pair_checks++;
+    w->hits[p - w->pairs].t = NAN;
     if (r.status != CLOSEST_SEPARATED) return lo; /* touching already */
     /* how far along the model's step to go: all the way when it cannot overshoot */
     double f = only_shifts(w, p->a) && only_shifts(w, p->b) ? 0.998 : 0.98;
@@ -561,6 +565,8 @@ static double time_of_impact(world *w, pair *p, double lo, double hi)
             r = rt;
         }
     }
+    /* the answer, when it comes at lo, starts from here */
+    w->hits[p - w->pairs] = (pair_hit){r, cache, lo};
     return lo;
 }
 
@@ -769,7 +775,16 @@ static void strike(body *x, int k, vec3 n, double t)
 static void collide(world *w, pair *p)
 {
     body *a = w->bodies[p->a], *b = w->bodies[p->b];
-    closest_result r = query_hit(w, p, a, b);
+    /* where the time of impact stopped, when that is now: the same flights to the
+     * same instant, so the same states */
+    const pair_hit *h = &w->hits[p - w->pairs];
+    closest_result r;
+    if (h->t == w->time && p->toi_a == w->snap_id[p->a] && p->toi_b == w->snap_id[p->b]) {
+        r = h->r;
+        p->hit = h->cache;
+    } else {
+        r = query_hit(w, p, a, b);
+    }
     if (r.status == CLOSEST_INVALID) return;
     double scale = a->shape.r_out + b->shape.r_out;
     vec3 pt = contact_point(a, b, &r, 1e-6 * scale + fmax(0, -r.distance));

@@ -59,6 +59,7 @@ void world_free(world *w)
     if (w->trace) fclose(w->trace);
     if (w->events) fclose(w->events);
     free(w->pairs);
+    free(w->hits);
     free(w->snap);
     free(w->snap_t);
     free(w->snap_id);
@@ -82,6 +83,7 @@ void world_free(world *w)
     w->due_next = NULL;
     w->capdue = 0;
     w->pairs = NULL;
+    w->hits = NULL;
     w->snap = w->pre = w->end = w->scratch = NULL;
     w->end_id = NULL;
     w->touched = NULL;

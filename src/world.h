@@ -89,6 +89,15 @@ typedef struct {
     double speed_a, speed_b; /* the speeds next was found from (slack included) */
 } pair;
 
+/* A pair's first contact as its time of impact found it (sim.c): the pair at
+ * time t, apart, and the features the search ended on; t is NAN when there is
+ * none to reuse. */
+typedef struct {
+    closest_result r;
+    closest_cache cache;
+    double t;
+} pair_hit;
+
 /* An entry of the schedule's heap: a pair's time, kept next to its index so that
  * sifting reads no pair. */
 typedef struct {
@@ -112,6 +121,7 @@ typedef struct world {
     FILE *events;         /* `events = FILE`, or NULL */
     char events_path[PATH_MAX_VROC];
     pair *pairs;          /* the pairs, rebuilt by the simulation when pairs_dirty */
+    pair_hit *hits;       /* each pair's last first contact found */
     long npairs, cappairs;
     bool pairs_dirty;     /* objects were added, deleted or changed mass */
     sched_entry *heap;    /* the schedule: a binary min-heap of (next, pair) */
