@@ -5,8 +5,9 @@
  * |w| R t when that is smaller), against the farthest vroc's own integrator can
  * carry the two centres of mass towards each other (|v| t + |a| t^2 / 2, and never
  * more than max_linear t).  Pairs sit in an indexed binary heap keyed by that time;
- * an internal step checks only the pairs that are due.  A change of an object's
- * motion makes all its pairs due at once.
+ * an internal step checks only the pairs that are due.  A collision that changes
+ * an object's motion gives its near pairs new times from the bounds they were
+ * found with (sched_bound), or makes them due (sim.c, reschedule).
  */
 #ifndef VROC_SCHEDULE_H
 #define VROC_SCHEDULE_H
