@@ -1026,9 +1026,9 @@ static void renew_flight(world *w, int i, double t)
     w->snap_id[i] = w->flight_count++;
 }
 
-/* True when body b flies from state s (at time t) to time t + h without reaching
- * the speed limits, so that its centre moves by the plain v h + a h^2 / 2 and
- * its surface turns at the spin s has. */
+/* True when body b, from the state given, flies h seconds without reaching the
+ * speed limits, so that its centre moves by the plain v h + a h^2 / 2 and its
+ * surface turns at the spin it has. */
 static bool unlimited(const world *w, const body *b, double h)
 {
     double acc = v3_len(world_body_accel(w, b));
@@ -1079,8 +1079,8 @@ static void repredict(world *w, long k, int i, const body *pre, double moved, do
  * its speed then (speed_a, speed_b) plus what the force adds since, turning no
  * faster than then (or by all of R - r at once, for a far pair), and, for a far
  * pair, set apart at most SCHED_SHIFTS times by a separation.  Where b keeps
- * within that, the pair keeps its time; a near pair found at or before t that
- * does not gets a new one from its kept bound (repredict). */
+ * within that, the pair keeps its time; a near pair that does not gets a new
+ * one from its kept bound (repredict). */
 static void reschedule(world *w, int i, const body *a, const body *b, double t)
 {
     double acc = v3_len(world_body_accel(w, a)), moved = v3_len(v3_sub(a->x, b->x));
