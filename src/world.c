@@ -158,19 +158,6 @@ long world_pairs(const world *w)
     return (long)d * (d - 1) / 2 + (long)d * s;
 }
 
-vec3 world_accel(const world *w)
-{
-    return v3_scale(v3_norm(w->set.force.dir), w->set.force.amount);
-}
-
-vec3 world_body_accel(const world *w, const body *b)
-{
-    vec3 a = world_accel(w);
-    if (b->slide < 0) return a;
-    double an = v3_dot(a, b->slide_n);
-    return an < 0 ? v3_mad(a, b->slide_n, -an) : a;
-}
-
 long world_subframes(const world *w)
 {
     const settings *s = &w->set;

@@ -172,12 +172,21 @@ void world_counts(const world *w, int *dynamic, int *stat);
 long world_pairs(const world *w);
 
 /* The global acceleration: force.dir / |force.dir| * force.amount (zero when
- * none). */
-vec3 world_accel(const world *w);
+ * none).  Inline, as are the next: the schedule and every flight ask for it. */
+static inline vec3 world_accel(const world *w)
+{
+    return v3_scale(v3_norm(w->set.force.dir), w->set.force.amount);
+}
 
 /* The global acceleration as body b feels it: less the part that presses it onto
  * the support it slides on (sim.c). */
-vec3 world_body_accel(const world *w, const body *b);
+static inline vec3 world_body_accel(const world *w, const body *b)
+{
+    vec3 a = world_accel(w);
+    if (b->slide < 0) return a;
+    double an = v3_dot(a, b->slide_n);
+    return an < 0 ? v3_mad(a, b->slide_n, -an) : a;
+}
 
 /* Internal steps per frame: ceil(time_step / hmax) with hmax = internal_step when
  * set, else collision_dist / (2 max_linear); 1 when that bound is infinite; 0 when
