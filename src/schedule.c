@@ -89,8 +89,10 @@ static double piece_root(double a, double b, double c, double target)
 
 /* The earliest time the bound (its terms filled in by the caller) reaches d, or
  * HUGE_VAL when it never does; 0 when d <= 0. */
+/* turn[k] (with any_spin) says whether object k's turn counts at all: a gap the
+ * turn cannot change (between spheres about the centres of mass) leaves it out. */
 static double predict(const world *w, const body *a, const body *b, double d, bool any_spin,
-                      const double slack[2], sched_bound *keep)
+                      const bool turn[2], const double slack[2], sched_bound *keep)
 {
     const body *ob[2] = {a, b};
     double vmax = w->set.max_linear;
@@ -99,8 +101,8 @@ static double predict(const world *w, const body *a, const body *b, double d, bo
     for (int k = 0; k < 2; k++) {
         if (ob[k]->state != STATE_DYNAMIC) continue;
         r[n] = terms_of(ob[k], v3_len(world_body_accel(w, ob[k])), vmax, slack[k]);
-        if (any_spin) { /* the whole turn at once */
-            r[n].cap = ob[k]->shape.r_out - ob[k]->shape.r_in;
+        if (any_spin) { /* the whole turn at once, when it counts */
+            r[n].cap = turn[k] ? ob[k]->shape.r_out - ob[k]->shape.r_in : 0;
             r[n].rate = 0;
             r[n].t_rot = 0;
         }
@@ -162,23 +164,27 @@ static double predict(const world *w, const body *a, const body *b, double d, bo
     return HUGE_VAL;
 }
 
+static const bool both[2] = {true, true};
+
 double sched_predict_bodies(const world *w, const body *a, const body *b, double d)
 {
     static const double none[2] = {0, 0};
-    return predict(w, a, b, d, false, none, NULL);
+    return predict(w, a, b, d, false, both, none, NULL);
 }
 
-double sched_predict_far(const world *w, const body *a, const body *b, double d, double sep)
+double sched_predict_far(const world *w, const body *a, const body *b, double d, double sep,
+                         bool turn_a, bool turn_b)
 {
     static const double slack[2] = {SCHED_SLACK, SCHED_SLACK};
-    return predict(w, a, b, d - SCHED_SHIFTS * sep, true, slack, NULL);
+    const bool turn[2] = {turn_a, turn_b};
+    return predict(w, a, b, d - SCHED_SHIFTS * sep, true, turn, slack, NULL);
 }
 
 double sched_predict_kept(const world *w, const body *a, const body *b, double d, double slack_a,
                           double slack_b, sched_bound *keep)
 {
     const double slack[2] = {slack_a, slack_b};
-    return predict(w, a, b, d, false, slack, keep);
+    return predict(w, a, b, d, false, both, slack, keep);
 }
 
 double sched_closing(const world *w, const body *a, const body *b, double slack_a, double slack_b,
@@ -186,7 +192,7 @@ double sched_closing(const world *w, const body *a, const body *b, double slack_
 {
     sched_bound k;
     const double slack[2] = {slack_a, slack_b};
-    predict(w, a, b, 0, false, slack, &k);
+    predict(w, a, b, 0, false, both, slack, &k);
     return eval(k.r, k.n, t);
 }
 

@@ -28,14 +28,18 @@ double sched_predict_bodies(const world *w, const body *a, const body *b, double
 /* Speed (m/s) a far pair's bound gives each moving object beyond its own. */
 #define SCHED_SLACK 0.1
 
-/* A bound for objects a and b, d apart in the states given, that holds whatever
- * their spins become (each turns its surface by all of R - r at once), while
- * their speeds stay within SCHED_SLACK of what they are in those states plus what
- * the force adds, whatever their directions, and through SCHED_SHIFTS shifts of
- * up to sep each: so that a collision that turns an object back, spins it faster,
- * speeds it up a little or sets it a hair apart leaves the pair's time as it was.
- * It is earlier than sched_predict's by little when d is large. */
-double sched_predict_far(const world *w, const body *a, const body *b, double d, double sep);
+/* A bound for objects a and b, a gap d apart in the states given, that holds
+ * whatever their spins become, while their speeds stay within SCHED_SLACK of what
+ * they are in those states plus what the force adds, whatever their directions,
+ * and through SCHED_SHIFTS shifts of up to sep each: so that a collision that
+ * turns an object back, spins it faster, speeds it up a little or sets it a hair
+ * apart leaves the pair's time as it was.  turn_a and turn_b say whether a turn of
+ * that object can close the gap; each that can turns its surface by all of its
+ * R - r at once.  (A gap between spheres about the centres of mass that hold the
+ * objects, or from such a sphere to a still object, no turn changes.)  It is
+ * earlier than sched_predict's by little when d is large. */
+double sched_predict_far(const world *w, const body *a, const body *b, double d, double sep,
+                         bool turn_a, bool turn_b);
 
 /* One moving object's part of a bound, as a function of the time t since it was
  * found: its centre goes at most s t + acc t^2 / 2 until t_lin, then vmax t; its

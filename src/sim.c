@@ -585,14 +585,19 @@ static double box_gap(vec3 c, double r, const body *b)
 
 /* A gap no more than the distance of a and b: between the spheres about their
  * centres of mass that hold them, or, when one is much the larger (a floor, a
- * wall, a table), between the other's sphere and its bounding box. */
-static double bound_gap(const body *a, const body *b)
+ * wall, a table), between the other's sphere and its bounding box.  A turn of
+ * either object leaves a sphere as it is; *turn_a or *turn_b (when not NULL) says
+ * whether the gap is to a's box or to b's, which turns with it. */
+static double bound_gap(const body *a, const body *b, bool *turn_a, bool *turn_b)
 {
     vec3 ca = body_com(a), cb = body_com(b);
     double ra = a->shape.r_out, rb = b->shape.r_out;
     double gap = v3_len(v3_sub(ca, cb)) - ra - rb;
     double box = ra > 2 * rb ? box_gap(cb, rb, a) : rb > 2 * ra ? box_gap(ca, ra, b) : gap;
-    return box > gap ? box : gap;
+    bool to_box = box > gap;
+    if (turn_a) *turn_a = to_box && ra > 2 * rb;
+    if (turn_b) *turn_b = to_box && rb > 2 * ra;
+    return to_box ? box : gap;
 }
 
 /* Moves the dynamic objects of the pair apart along n until they are sep apart
@@ -686,7 +691,7 @@ static int settle(world *w, int mi, int si, vec3 n, vec3 support_pt, pair *p, do
             /* the other object where it is now (only the pair is flown to the
              * collision: see internal_step), unless it is clearly out of reach */
             const body *other = flown(w, o->a == mi ? o->b : o->a, w->time, 0);
-            if (bound_gap(m, other) > SIM_SEPARATION) continue;
+            if (bound_gap(m, other, NULL, NULL) > SIM_SEPARATION) continue;
             closest_result ro = o->a == mi ? query(w, o, m, other) : query(w, o, other, m);
             if (ro.status != CLOSEST_SEPARATED || ro.distance < SIM_SEPARATION) ok = false;
         }
@@ -951,8 +956,10 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
     p->far = false;
     if (w->set.collision_heap) {
         const body *a = at_start(w, p->a), *b = at_start(w, p->b);
-        double from = flights_start(w, p), gap = bound_gap(a, b);
-        double next = gap > 0 ? from + sched_predict_far(w, a, b, gap, SIM_SEPARATION) : from;
+        bool turn_a, turn_b;
+        double from = flights_start(w, p), gap = bound_gap(a, b, &turn_a, &turn_b);
+        double next =
+            gap > 0 ? from + sched_predict_far(w, a, b, gap, SIM_SEPARATION, turn_a, turn_b) : from;
         if (next - t_end >= w->set.time_step) {
             p->far = true;
             p->checked = from;

@@ -134,7 +134,7 @@ static void predictions_are_never_late(void **state)
 {
     (void)state;
     unsigned long long s = 11;
-    int collided = 0, tight = 0, far_useful = 0;
+    int collided = 0, tight = 0, far_useful = 0, ball_gaps = 0;
     const int trials = 600;
     for (int k = 0; k < trials; k++) {
         world w;
@@ -143,22 +143,32 @@ static void predictions_are_never_late(void **state)
         if (d == 0) continue;
         double predicted = sched_predict(&w, &w.pairs[0], d);
         /* the bound that allows any spin and a few shifts is earlier still */
-        double far = sched_predict_far(&w, ob[0], ob[1], d, 1e-7);
+        double far = sched_predict_far(&w, ob[0], ob[1], d, 1e-7, true, true);
         if (far > predicted) fail_msg("trial %d: far bound %.9g s after %.9g s", k, far, predicted);
         if (far >= 0.5 * predicted) far_useful++;
+        /* from the gap of the spheres about the centres of mass that hold them,
+         * which no turn changes: no turn counted */
+        double balls = v3_len(v3_sub(body_com(ob[0]), body_com(ob[1]))) - ob[0]->shape.r_out -
+                       ob[1]->shape.r_out;
+        double unturned = balls > 0 ? sched_predict_far(&w, ob[0], ob[1], balls, 1e-7, false, false) : 0;
         double truth = first_contact(&w, ob[0], ob[1], urand(&s, 0.001, 0.02), 3);
         if (truth < HUGE_VAL) collided++;
         if (predicted > truth)
             fail_msg("trial %d: predicted %.9g s but they touch at %.9g s", k, predicted, truth);
+        if (unturned > truth)
+            fail_msg("trial %d: far bound from the spheres' gap %.9g s, but they touch at %.9g s", k,
+                     unturned, truth);
+        if (balls > 0) ball_gaps++;
         if (truth < HUGE_VAL && predicted > 0.3 * truth) tight++;
         world_free(&w);
     }
     print_message("never late: %d of %d trials collided; %d predictions within 70%% of the truth; "
-                  "%d far bounds at least half the prediction\n",
-                  collided, trials, tight, far_useful);
+                  "%d far bounds at least half the prediction; %d from the spheres' gap\n",
+                  collided, trials, tight, far_useful, ball_gaps);
     assert_true(collided > trials / 3); /* the test must exercise real collisions */
     assert_true(tight > collided / 4);  /* and the bound must be of use */
     assert_true(far_useful > trials / 2); /* the far one too */
+    assert_true(ball_gaps > trials / 4);  /* and the spheres' gap was tried */
 }
 
 /* Body b flown h seconds in one flight, when it moves. */
