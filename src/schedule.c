@@ -201,6 +201,103 @@ double sched_left(const sched_bound *k, double t)
     return k->dist - eval(k->r, k->n, t);
 }
 
+/* ---- along the normal ---- */
+
+/* The first t in [lo, hi) at which p0 + p1 t + p2 t^2 reaches target, known to be
+ * short of it at lo; HUGE_VAL when it does not. */
+static double first_reach(double p0, double p1, double p2, double target, double lo, double hi)
+{
+    double q = p0 - target; /* f(t) = p2 t^2 + p1 t + q, f(lo) < 0 */
+    double t = HUGE_VAL;
+    if (p2 == 0) {
+        if (p1 > 0) t = -q / p1;
+    } else {
+        double disc = p1 * p1 - 4 * p2 * q;
+        if (disc < 0) return HUGE_VAL; /* (only when p2 < 0: it never gets there) */
+        double m = -0.5 * (p1 + copysign(sqrt(disc), p1));
+        double r1 = m / p2, r2 = m != 0 ? q / m : r1;
+        double small = fmin(r1, r2), big = fmax(r1, r2);
+        /* convex: the upward crossing is the larger root; concave: the smaller */
+        t = p2 > 0 ? big : small;
+    }
+    return t >= lo && t < hi ? t : HUGE_VAL;
+}
+
+/* One moving object's part of the bound along n: how fast its centre comes on
+ * along n (and with what acceleration), and how its surface turns. */
+typedef struct {
+    double s, acc;    /* centre: s t + acc t^2 / 2 towards the other, exactly */
+    double rate, cap; /* surface: min(cap, rate t) further out */
+} along_reach;
+
+static double along_eval(const along_reach *r, int n, double t)
+{
+    double f = 0;
+    for (int k = 0; k < n; k++) f += r[k].s * t + 0.5 * r[k].acc * t * t + fmin(r[k].cap, r[k].rate * t);
+    return f;
+}
+
+double sched_predict_along(const world *w, const body *a, const body *b, double d, vec3 n, vec3 pa,
+                           vec3 pb)
+{
+    const body *ob[2] = {a, b};
+    along_reach r[2];
+    int m = 0;
+    double horizon = HUGE_VAL, vmax = w->set.max_linear;
+    for (int k = 0; k < 2; k++) {
+        const body *x = ob[k];
+        if (x->state != STATE_DYNAMIC) continue;
+        double sign = k == 0 ? 1 : -1; /* a comes on along n, b along -n */
+        vec3 acc = world_body_accel(w, x), c = body_com(x);
+        double speed = v3_len(x->v), am = v3_len(acc);
+        /* until its speed could reach max_linear its centre flies the parabola
+         * exactly; the time is not trusted beyond */
+        if (speed >= vmax) return 0;
+        if (am > 0) horizon = fmin(horizon, (vmax - speed) / am);
+        r[m].s = sign * v3_dot(x->v, n);
+        r[m].acc = sign * v3_dot(acc, n);
+        /* how far out along n its surface reaches from its centre now, and how
+         * much further a turn can take it (to R at most, at w_max R) */
+        double out = k == 0 ? v3_dot(v3_sub(pa, c), n) : v3_dot(v3_sub(c, pb), n);
+        r[m].rate = spin_bound(x) * x->shape.r_out;
+        r[m].cap = r[m].rate > 0 ? fmax(0, x->shape.r_out - out) : 0;
+        m++;
+    }
+    if (m == 0 || d <= 0) return d <= 0 ? 0 : HUGE_VAL;
+    double target = d - 1e-9 * (1 + a->shape.r_out + b->shape.r_out);
+    if (target <= 0) return 0;
+    /* breakpoints: where each turn reaches its cap, then the horizon */
+    double bp[3];
+    int nb = 0;
+    for (int k = 0; k < m; k++)
+        if (r[k].rate > 0 && r[k].cap / r[k].rate < horizon) bp[nb++] = r[k].cap / r[k].rate;
+    if (nb == 2 && bp[1] < bp[0]) {
+        double x = bp[0];
+        bp[0] = bp[1];
+        bp[1] = x;
+    }
+    bp[nb++] = horizon;
+    double lo = 0;
+    for (int i = 0; i < nb; lo = bp[i++]) {
+        double hi = bp[i];
+        if (hi <= lo) continue;
+        double p0 = 0, p1 = 0, p2 = 0; /* the bound on [lo, hi) */
+        for (int k = 0; k < m; k++) {
+            p1 += r[k].s;
+            p2 += 0.5 * r[k].acc;
+            if (r[k].rate > 0 && lo < r[k].cap / r[k].rate) p1 += r[k].rate;
+            else p0 += r[k].cap;
+        }
+        if (p0 + p1 * lo + p2 * lo * lo >= target) return lo * (1 - 1e-12);
+        double t = first_reach(p0, p1, p2, target, lo, hi);
+        if (t == HUGE_VAL) continue;
+        t *= 1 - 1e-12;
+        while (t > 0 && along_eval(r, m, t) >= target) t *= 1 - 1e-9; /* never late */
+        return t;
+    }
+    return horizon; /* short of d until then: made again there */
+}
+
 /* ---- the indexed binary heap ---- */
 
 static void place(world *w, long pos, sched_entry e)

@@ -5,7 +5,10 @@
  * |w| R t when that is smaller), against the farthest vroc's own integrator can
  * carry the two centres of mass towards each other (|v| t + |a| t^2 / 2, and never
  * more than max_linear t).  Pairs sit in an indexed binary heap keyed by that time;
- * an internal step checks only the pairs that are due.  A collision that changes
+ * an internal step checks only the pairs that are due.  A near pair's time may
+ * instead come from the motion along the normal between its closest points
+ * (sched_predict_along), later where the objects do not come on straight; such a
+ * time holds only while both fly on as they did.  A collision that changes
  * an object's motion gives its near pairs new times from the bounds they were
  * found with (sched_bound), or makes them due (sim.c, reschedule).
  */
@@ -73,6 +76,18 @@ double sched_closing(const world *w, const body *a, const body *b, double slack_
  * its objects moved as it assumed: a lower bound on the pair's distance then
  * (negative when they may touch). */
 double sched_left(const sched_bound *k, double t);
+
+/* A later time than sched_predict's where the objects do not come on straight
+ * at each other: a and b, distance d apart, closest at points pa and pb, n the
+ * unit normal from a to b.  The plane through the gap at right angles to n
+ * separates them; along n each centre flies its parabola exactly (v.n t + a.n t^2
+ * / 2, while its speed stays under max_linear), and each surface turns out from
+ * its centre at most as far as R and at w_max R.  Beyond the time that speed
+ * could reach max_linear nothing is promised: the time returned is no later.
+ * The bound holds only while both objects fly as they fly now, with no slack:
+ * any change to either's motion must make the pair's time again (sim.c). */
+double sched_predict_along(const world *w, const body *a, const body *b, double d, vec3 n, vec3 pa,
+                           vec3 pb);
 
 /* Builds the heap over every pair, all due at time t, and the lists of each
  * object's pairs.  Returns 0, or -1 when out of memory. */

@@ -289,6 +289,17 @@ static void wake_unsupported(world *w, bool *touched)
     }
 }
 
+/* Makes due now the pairs of object i whose times hold only while it flies as it
+ * did (pair.along), when it stops. */
+static void along_due(world *w, int i)
+{
+    if (!w->obj_first) return;
+    for (long j = w->obj_first[i]; j < w->obj_first[i + 1]; j++) {
+        long k = w->obj_pairs[j];
+        if (w->pairs[k].along && w->pairs[k].next > w->time) sched_set(w, k, w->time);
+    }
+}
+
 /* The frame rule (thesis 3.3.3): an object still sliding on a support at the end of
  * the frame, slower than the rest speed, rests on it. */
 static void rest_still_objects(world *w)
@@ -303,6 +314,7 @@ static void rest_still_objects(world *w)
             double speed = v3_len(b->v) + v3_len(b->w) * b->shape.r_out;
             if (speed < SIM_REST_SPEED) {
                 come_to_rest(b, b->slide);
+                along_due(w, i);
                 changed = true;
             }
         }
@@ -953,7 +965,7 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
      * It is measured where the objects' flights start: a bound on how far they go
      * from there holds through a collision later in the step that turns them
      * back, so that such a collision leaves the pair's time as it is. */
-    p->far = false;
+    p->far = p->along = false;
     if (w->set.collision_heap) {
         const body *a = at_start(w, p->a), *b = at_start(w, p->b);
         bool turn_a, turn_b;
@@ -973,11 +985,17 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
     p->checked = t_end;
     p->speed_a = v3_len(w->bodies[p->a]->v);
     p->speed_b = v3_len(w->bodies[p->b]->v);
-    closest_result r = query_apart(w, p, w->bodies[p->a], w->bodies[p->b]);
-    if (r.status != CLOSEST_PENETRATING) /* without the heap no time is kept */
-        return w->set.collision_heap ? t_end + sched_predict_kept(w, w->bodies[p->a], w->bodies[p->b],
-                                                                  r.distance, 0, 0, &w->bound[i])
-                                     : HUGE_VAL;
+    const body *a = w->bodies[p->a], *b = w->bodies[p->b];
+    closest_result r = query_apart(w, p, a, b);
+    if (r.status != CLOSEST_PENETRATING) {
+        if (!w->set.collision_heap) return HUGE_VAL; /* without the heap no time is kept */
+        /* the bound from speeds, kept for a collision that changes an object, and
+         * the one along the normal, later where they do not come on straight */
+        double next = sched_predict_kept(w, a, b, r.distance, 0, 0, &w->bound[i]);
+        double along = sched_predict_along(w, a, b, r.distance, v3_neg(r.normal), r.pa, r.pb);
+        p->along = along > next;
+        return t_end + (p->along ? along : next);
+    }
     w->bound[i].dist = 0; /* touching: nothing left to keep (repredict) */
     /* the first contact is a function of the two flights alone, searched from
      * where the later of them starts, so that whenever the pair is found the
@@ -1075,6 +1093,7 @@ static void repredict(world *w, long k, int i, const body *pre, double moved, do
     double next = q->a == i ? sched_predict_kept(w, me, o, left, 0, slack, &w->bound[k])
                             : sched_predict_kept(w, o, me, left, slack, 0, &w->bound[k]);
     q->checked = t;
+    q->along = false;
     q->speed_a = v3_len(w->bodies[q->a]->v) + (q->a == i ? 0 : slack);
     q->speed_b = v3_len(w->bodies[q->b]->v) + (q->b == i ? 0 : slack);
     sched_set(w, k, t + next);
@@ -1085,9 +1104,10 @@ static void repredict(world *w, long k, int i, const body *pre, double moved, do
  * came from a bound on its objects' motion from its check on: each no faster than
  * its speed then (speed_a, speed_b) plus what the force adds since, turning no
  * faster than then (or by all of R - r at once, for a far pair), and, for a far
- * pair, set apart at most SCHED_SHIFTS times by a separation.  Where b keeps
- * within that, the pair keeps its time; a near pair that does not gets a new
- * one from its kept bound (repredict). */
+ * pair, set apart at most SCHED_SHIFTS times by a separation; or, for a near pair
+ * whose time came along the normal (pair.along), from exactly the motions then.
+ * Where b keeps within that, the pair keeps its time; a near pair that does not
+ * gets a new one from its kept bound (repredict). */
 static void reschedule(world *w, int i, const body *a, const body *b, double t)
 {
     double acc = v3_len(world_body_accel(w, a)), moved = v3_len(v3_sub(a->x, b->x));
@@ -1108,7 +1128,7 @@ static void reschedule(world *w, int i, const body *a, const body *b, double t)
             keep = w->bodies[q->a]->shifts - q->shifts_a + w->bodies[q->b]->shifts - q->shifts_b <=
                    SCHED_SHIFTS;
         else if (keep)
-            keep = moved == 0 && !spun;
+            keep = moved == 0 && !spun && !q->along;
         if (keep || q->next <= t) continue;
         if (!q->far && q->checked < HUGE_VAL) repredict(w, k, i, a, moved, t);
         else sched_set(w, k, t);

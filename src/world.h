@@ -84,6 +84,8 @@ typedef struct {
                            * when it holds only while their motions do (sim.c) */
     double toi;           /* its first contact found in this internal step, valid */
     long toi_a, toi_b;    /*   while its objects fly from flights numbered so (sim.c) */
+    bool along;           /* next came from sched_predict_along: it holds only while
+                           * both objects fly as they flew when it was found */
     bool far;             /* next came from sched_predict_far, when its objects had */
     long shifts_a, shifts_b; /*  been set apart so many times */
     double speed_a, speed_b; /* the speeds next was found from (slack included) */

@@ -265,6 +265,84 @@ static void kept_bounds_are_never_late(void **state)
     assert_true(tight > collided / 4);
 }
 
+/* The time along the normal (sched_predict_along) is never later than the true
+ * first contact either, with the objects sent every way: at each other, anywhere,
+ * or across the line between them; and it is later than the bound from speeds
+ * alone where they do not come on straight. */
+static void along_predictions_are_never_late(void **state)
+{
+    (void)state;
+    unsigned long long s = 23;
+    int collided = 0, later = 0, much_later = 0;
+    const int trials = 900;
+    for (int k = 0; k < trials; k++) {
+        world w;
+        body *ob[2];
+        if (random_pair(&w, &s, k, ob) == 0) continue;
+        vec3 dir = v3_norm(v3_sub(ob[1]->x, ob[0]->x));
+        for (int j = 0; j < 2 && k % 3 != 0; j++) {
+            if (body_is_static(ob[j])) continue;
+            vec3 v = v3(urand(&s, -4, 4), urand(&s, -4, 4), urand(&s, -4, 4));
+            if (k % 3 == 2) v = v3_mad(v, dir, -v3_dot(v, dir)); /* across */
+            ob[j]->v = v;
+        }
+        if (k % 4 == 3) body_set_angular_vel(ob[0], v3(0, 0, 0)); /* one not turning */
+        for (int j = 0; j < 2 && k % 5 == 4; j++) /* at 90% to 100% of the speed limit */
+            if (v3_len(ob[j]->v) > 0)
+                ob[j]->v = v3_scale(v3_norm(ob[j]->v), urand(&s, 0.9, 1) * w.set.max_linear);
+        closest_result r = closest_query(ob[0], ob[1], NULL);
+        if (r.status != CLOSEST_SEPARATED) {
+            world_free(&w);
+            continue;
+        }
+        double speeds = sched_predict_bodies(&w, ob[0], ob[1], r.distance);
+        double along = sched_predict_along(&w, ob[0], ob[1], r.distance, v3_neg(r.normal), r.pa, r.pb);
+        double truth = first_contact(&w, ob[0], ob[1], urand(&s, 0.001, 0.02), 3);
+        if (truth < HUGE_VAL) collided++;
+        /* exact for objects that do not turn: allowed the 1e-9 s to which
+         * first_contact finds the contact (its last time apart) */
+        if (along > truth + 1e-9)
+            fail_msg("trial %d: along the normal %.12g s, but they touch at %.12g s", k, along, truth);
+        if (along > speeds) later++;
+        if (along > 2 * speeds) much_later++;
+        world_free(&w);
+    }
+    print_message("along the normal: %d of %d trials collided; %d later than the bound from speeds, "
+                  "%d twice as late\n",
+                  collided, trials, later, much_later);
+    assert_true(collided > trials / 6);
+    assert_true(later > trials / 4);
+    assert_true(much_later > trials / 8);
+}
+
+/* A ball going away from a wall and fast across it, under a force mostly across:
+ * the speed limit soon holds it back, it turns its velocity along the force and
+ * comes back long before the parabola would.  The time along the normal must stop
+ * where the limit may start to act. */
+static void along_stops_at_the_speed_limit(void **state)
+{
+    (void)state;
+    world w;
+    world_init(&w);
+    w.set.max_linear = 5;
+    w.set.force = (dir_amount){v3(-2, 20, 0), v3_len(v3(-2, 20, 0))}; /* 2 m/s^2 back */
+    body *wall = add_static_box(&w, "wall", v3(0.1, 100, 100));
+    body *ball = add_ball(&w, "ball", 0.1);
+    ball->x = v3(0.5, 0, 0);
+    ball->v = v3(2, 4.5, 0); /* away at 2 m/s: 4.92 m/s in all */
+    closest_result r = closest_query(wall, ball, NULL);
+    assert_int_equal(r.status, CLOSEST_SEPARATED);
+    double along = sched_predict_along(&w, wall, ball, r.distance, v3_neg(r.normal), r.pa, r.pb);
+    double truth = first_contact(&w, wall, ball, 0.001, 5);
+    double parabola = 1 + sqrt(1 + r.distance); /* 2 t - t^2 = -d */
+    print_message("going off a wall at the speed limit: back at %.4f s (the parabola: %.4f s); "
+                  "along the normal %.4f s\n",
+                  truth, parabola, along);
+    assert_true(truth < parabola - 0.1); /* the limit acts */
+    assert_true(along <= truth);
+    world_free(&w);
+}
+
 /* The heap and checking every pair give the same trajectories. */
 static void heap_on_and_off_agree(void **state)
 {
@@ -324,6 +402,8 @@ int main(void)
         cmocka_unit_test(heap_keeps_its_order),
         cmocka_unit_test(predictions_are_never_late),
         cmocka_unit_test(kept_bounds_are_never_late),
+        cmocka_unit_test(along_predictions_are_never_late),
+        cmocka_unit_test(along_stops_at_the_speed_limit),
         cmocka_unit_test(heap_on_and_off_agree),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
