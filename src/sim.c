@@ -986,7 +986,11 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
     p->speed_a = v3_len(w->bodies[p->a]->v);
     p->speed_b = v3_len(w->bodies[p->b]->v);
     const body *a = w->bodies[p->a], *b = w->bodies[p->b];
-    closest_result r = query_apart(w, p, a, b);
+    /* found touching in this step from the same flights (flight numbers are new
+     * each step), it touches still, and its first contact is known: no query */
+    bool known = p->toi_a == w->snap_id[p->a] && p->toi_b == w->snap_id[p->b];
+    closest_result r = {.status = CLOSEST_PENETRATING};
+    if (!known) r = query_apart(w, p, a, b);
     if (r.status != CLOSEST_PENETRATING) {
         if (!w->set.collision_heap) return HUGE_VAL; /* without the heap no time is kept */
         /* the bound from speeds, kept for a collision that changes an object, and
@@ -1000,7 +1004,7 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
     /* the first contact is a function of the two flights alone, searched from
      * where the later of them starts, so that whenever the pair is found the
      * answer is the same (and is kept while both flights are) */
-    if (p->toi_a != w->snap_id[p->a] || p->toi_b != w->snap_id[p->b]) {
+    if (!known) {
         double from = fmax(w->snap_t[p->a], w->snap_t[p->b]);
         p->toi = fmax(time_of_impact(w, p, from, t_end), now);
         p->toi_a = w->snap_id[p->a];
