@@ -956,6 +956,7 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
 {
     pair *p = &w->pairs[i];
     p->checked = HUGE_VAL;
+    p->along = false;
     if (!pair_moves(w, p)) return HUGE_VAL;
     if (w->set.collision_heap && (slides_clear(w, p->a, p->b) || slides_clear(w, p->b, p->a)))
         return HUGE_VAL;
@@ -965,7 +966,7 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
      * It is measured where the objects' flights start: a bound on how far they go
      * from there holds through a collision later in the step that turns them
      * back, so that such a collision leaves the pair's time as it is. */
-    p->far = p->along = false;
+    p->far = false;
     if (w->set.collision_heap) {
         const body *a = at_start(w, p->a), *b = at_start(w, p->b);
         bool turn_a, turn_b;
