@@ -88,9 +88,9 @@ static double piece_root(double a, double b, double c, double target)
 }
 
 /* The earliest time the bound (its terms filled in by the caller) reaches d, or
- * HUGE_VAL when it never does; 0 when d <= 0. */
-/* turn[k] (with any_spin) says whether object k's turn counts at all: a gap the
- * turn cannot change (between spheres about the centres of mass) leaves it out. */
+ * HUGE_VAL when it never does; 0 when d <= 0.  turn[k] (with any_spin) says
+ * whether object k's turn counts at all: a gap the turn cannot change (between
+ * spheres about the centres of mass) leaves it out. */
 static double predict(const world *w, const body *a, const body *b, double d, bool any_spin,
                       const bool turn[2], const double slack[2], sched_bound *keep)
 {
@@ -226,8 +226,8 @@ static double first_reach(double p0, double p1, double p2, double target, double
 /* One moving object's part of the bound along n: how fast its centre comes on
  * along n (and with what acceleration), and how its surface turns. */
 typedef struct {
-    double s, acc;    /* centre: s t + acc t^2 / 2 towards the other, exactly */
-    double rate, cap; /* surface: min(cap, rate t) further out */
+    double s, acc;           /* centre: s t + acc t^2 / 2 towards the other, exactly */
+    double rate, cap, t_rot; /* surface: rate t further out until t_rot, then cap */
 } along_reach;
 
 static double along_eval(const along_reach *r, int n, double t)
@@ -261,6 +261,7 @@ double sched_predict_along(const world *w, const body *a, const body *b, double 
         double out = k == 0 ? v3_dot(v3_sub(pa, c), n) : v3_dot(v3_sub(c, pb), n);
         r[m].rate = spin_bound(x) * x->shape.r_out;
         r[m].cap = r[m].rate > 0 ? fmax(0, x->shape.r_out - out) : 0;
+        r[m].t_rot = r[m].rate > 0 ? r[m].cap / r[m].rate : 0;
         m++;
     }
     if (m == 0 || d <= 0) return d <= 0 ? 0 : HUGE_VAL;
@@ -270,7 +271,7 @@ double sched_predict_along(const world *w, const body *a, const body *b, double 
     double bp[3];
     int nb = 0;
     for (int k = 0; k < m; k++)
-        if (r[k].rate > 0 && r[k].cap / r[k].rate < horizon) bp[nb++] = r[k].cap / r[k].rate;
+        if (r[k].t_rot > 0 && r[k].t_rot < horizon) bp[nb++] = r[k].t_rot;
     if (nb == 2 && bp[1] < bp[0]) {
         double x = bp[0];
         bp[0] = bp[1];
@@ -285,7 +286,7 @@ double sched_predict_along(const world *w, const body *a, const body *b, double 
         for (int k = 0; k < m; k++) {
             p1 += r[k].s;
             p2 += 0.5 * r[k].acc;
-            if (r[k].rate > 0 && lo < r[k].cap / r[k].rate) p1 += r[k].rate;
+            if (lo < r[k].t_rot) p1 += r[k].rate;
             else p0 += r[k].cap;
         }
         if (p0 + p1 * lo + p2 * lo * lo >= target) return lo * (1 - 1e-12);
