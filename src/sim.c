@@ -1099,8 +1099,8 @@ static void repredict(world *w, long k, int i, const body *pre, double moved, do
                             : sched_predict_kept(w, o, me, left, slack, 0, &w->bound[k]);
     q->checked = t;
     q->along = false;
-    q->speed_a = v3_len(w->bodies[q->a]->v) + (q->a == i ? 0 : slack);
-    q->speed_b = v3_len(w->bodies[q->b]->v) + (q->b == i ? 0 : slack);
+    q->speed_a = v3_len((q->a == i ? me : o)->v) + (q->a == i ? 0 : slack);
+    q->speed_b = v3_len((q->b == i ? me : o)->v) + (q->b == i ? 0 : slack);
     sched_set(w, k, t + next);
 }
 
