@@ -126,7 +126,8 @@ typedef struct world {
     pair_hit *hits;       /* each pair's last first contact found */
     long npairs, cappairs;
     bool pairs_dirty;     /* objects were added, deleted or changed mass */
-    sched_entry *heap;    /* the schedule: a binary min-heap of (next, pair) */
+    sched_entry *heap;    /* the schedule: a binary min-heap of (next, pair), and
+                           * after the last an end mark that no time precedes */
     long *heap_pos;       /* each pair's place in it (apart from the pairs, so that
                            * sifting writes no pair) */
     struct sched_bound *bound; /* each near pair's bound, as its time was found */
