@@ -339,7 +339,9 @@ static void *resized(void *p, size_t elem, int n, bool *ok)
  * other object's flight, and so its pairs' predictions, exactly as they were. */
 static void save_states(world *w, double t)
 {
-    for (int i = 0; i < w->n; i++) {
+    /* (a static object's start stays as frame_states set it: it never moves) */
+    for (int k = 0; k < w->nmovers; k++) {
+        int i = w->movers[k];
         /* what does not move is where it is: only its state is kept (flown) */
         if (w->bodies[i]->state == STATE_DYNAMIC) body_copy_state(&w->snap[i], w->bodies[i]);
         else w->snap[i].state = w->bodies[i]->state;
@@ -371,14 +373,25 @@ static int frame_states(world *w, bool changed)
         w->snap_id = resized(w->snap_id, sizeof *w->snap_id, w->n, &ok);
         w->end_id = resized(w->end_id, sizeof *w->end_id, w->n, &ok);
         w->touched = resized(w->touched, sizeof *w->touched, w->n, &ok);
+        w->movers = resized(w->movers, sizeof *w->movers, w->n, &ok);
         if (!ok) return -1;
         w->capsnap = w->n;
     }
-    for (int i = 0; changed && i < w->n; i++)
+    if (!changed) return 0;
+    w->nmovers = 0;
+    for (int i = 0; i < w->n; i++) {
         if (!body_is_static(w->bodies[i])) {
+            w->movers[w->nmovers++] = i;
             w->snap[i] = w->pre[i] = w->end[i] = *w->bodies[i];
             for (int k = 0; k < SCRATCH; k++) w->scratch[SCRATCH * i + k] = *w->bodies[i];
+        } else {
+            /* a static object flies from nowhere before any step */
+            w->snap[i].state = w->bodies[i]->state;
+            w->snap_t[i] = -HUGE_VAL;
+            w->snap_id[i] = w->flight_count++;
+            w->end_id[i] = -1;
         }
+    }
     return 0;
 }
 

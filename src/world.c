@@ -68,6 +68,7 @@ void world_free(world *w)
     free(w->scratch);
     free(w->end_id);
     free(w->touched);
+    free(w->movers);
     free(w->heap);
     free(w->heap_pos);
     free(w->bound);
@@ -87,6 +88,8 @@ void world_free(world *w)
     w->snap = w->pre = w->end = w->scratch = NULL;
     w->end_id = NULL;
     w->touched = NULL;
+    w->movers = NULL;
+    w->nmovers = 0;
     w->snap_t = NULL;
     w->snap_id = NULL;
     w->npairs = w->cappairs = 0;

@@ -148,6 +148,7 @@ typedef struct world {
     body *end;            /* scratch: the states at the end of the internal step, */
     long *end_id;         /*   flown from the starts numbered so */
     body *scratch;        /* scratch: SIM_SCRATCH copies of each object (sim.c) */
+    int *movers, nmovers; /* scratch: the objects that are not static, in order */
     int capsnap;
 } world;
 
