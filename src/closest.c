@@ -281,8 +281,8 @@ static void seg_seg(vec3 p0, vec3 p1, vec3 q0, vec3 q1, double *s_out, double *t
         s = clamp01((b * f - c * e) / denom);
     } else { /* parallel: q0, q1 at u0, u1 along p */
         double u0 = -c / a, u1 = (b - c) / a;
-        double lo = fmax(0, fmin(u0, u1)), hi = fmin(1, fmax(u0, u1));
-        s = lo <= hi ? 0.5 * (lo + hi) : (fmax(u0, u1) < 0 ? 0 : 1);
+        double lo = d_max(0, d_min(u0, u1)), hi = d_min(1, d_max(u0, u1));
+        s = lo <= hi ? 0.5 * (lo + hi) : (d_max(u0, u1) < 0 ? 0 : 1);
     }
     t = (b * s + f) / e;
     if (t < 0) {
@@ -634,7 +634,7 @@ static int state_ef(walk *w, int k)
     const poly_face *F = &pf->f[f];
     double dl = v3_dot(F->n, v3_lerp(a, b, c.lo)) - F->d;
     double du = v3_dot(F->n, v3_lerp(a, b, c.hi)) - F->d;
-    if (fmin(dl, du) <= w->eps && fmax(dl, du) >= -w->eps) return W_PENETRATION;
+    if (d_min(dl, du) <= w->eps && d_max(dl, du) >= -w->eps) return W_PENETRATION;
     double slope = v3_dot(v3_sub(b, a), F->n); /* len times the rate */
     if (dl < 0) slope = -slope;                 /* below the plane the distance is -d */
     if (slope >= -EPS_DIR * w->h[k]->elen[e]) { /* nearest at lo (ties too) */
@@ -1000,7 +1000,7 @@ static void sat_estimate(const walk *w, closest_result *r)
                 }
             }
         }
-    double depth = fmax(best, 0);
+    double depth = d_max(best, 0);
     r->distance = depth > 0 ? -depth : 0.0;
     if (bja >= 0) { /* an edge-edge axis: A moves along it */
         r->normal = m3_mulv(w->R[0], bax);

@@ -29,7 +29,7 @@ static int support_set(const body *b, vec3 d, vec3 u, vec3 v, double tol, p2 *ou
     const poly *h = b->shape.hull;
     vec3 dl = q_unrotate(b->q, d);
     double best = -HUGE_VAL;
-    for (int i = 0; i < h->nv; i++) best = fmax(best, v3_dot(h->v[i], dl));
+    for (int i = 0; i < h->nv; i++) best = d_max(best, v3_dot(h->v[i], dl));
     int n = 0;
     for (int i = 0; i < h->nv && n < max; i++) {
         if (v3_dot(h->v[i], dl) < best - tol) continue;
@@ -109,8 +109,8 @@ static bool clip_segment(p2 s0, p2 s1, const p2 *poly, int n, p2 *mid)
         p2 a = poly[i], b = poly[(i + 1) % n];
         double d0 = cross2(a, b, s0), d1 = cross2(a, b, s1);
         if (d0 < 0 && d1 < 0) return false;
-        if (d0 < 0) t0 = fmax(t0, d0 / (d0 - d1));
-        else if (d1 < 0) t1 = fmin(t1, d0 / (d0 - d1));
+        if (d0 < 0) t0 = d_max(t0, d0 / (d0 - d1));
+        else if (d1 < 0) t1 = d_min(t1, d0 / (d0 - d1));
     }
     if (t0 > t1) return false;
     double t = 0.5 * (t0 + t1);
@@ -134,7 +134,7 @@ static bool segment_overlap(const p2 *a, const p2 *b, double eps, p2 *mid)
     double s0 = 0, s1 = l;
     double t0 = d.x * (b[0].x - a[0].x) + d.y * (b[0].y - a[0].y);
     double t1 = d.x * (b[1].x - a[0].x) + d.y * (b[1].y - a[0].y);
-    double lo = fmax(s0, fmin(t0, t1)), hi = fmin(s1, fmax(t0, t1));
+    double lo = d_max(s0, d_min(t0, t1)), hi = d_min(s1, d_max(t0, t1));
     if (lo > hi) return false;
     double t = 0.5 * (lo + hi);
     *mid = (p2){a[0].x + d.x * t, a[0].y + d.y * t};

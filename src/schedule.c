@@ -29,7 +29,7 @@
  * |L| / I_min, 2 |L| / I_min in all (sim.c, rotate_free). */
 static double spin_bound(const body *b)
 {
-    double imin = fmin(b->I_princ.x, fmin(b->I_princ.y, b->I_princ.z));
+    double imin = d_min(b->I_princ.x, d_min(b->I_princ.y, b->I_princ.z));
     return imin > 0 ? 3 * v3_len(b->L) / imin : 0;
 }
 
@@ -80,7 +80,7 @@ static double piece_root(double a, double b, double c, double target)
 {
     double cc = a - target;
     if (c > 0) { /* c t^2 + b t + cc = 0, stably */
-        double disc = fmax(0, b * b - 4 * c * cc);
+        double disc = d_max(0, b * b - 4 * c * cc);
         double q = -0.5 * (b + sqrt(disc));
         return fabs(q) > 0 ? cc / q : 0;
     }
@@ -157,7 +157,7 @@ static double predict(const world *w, const body *a, const body *b, double d, bo
         double t = piece_root(pa, pb, pc, target);
         if (t == HUGE_VAL && hi == HUGE_VAL) return HUGE_VAL; /* nothing moves closer */
         if (!(t < hi)) continue; /* the bound stays short of d on this piece */
-        t = fmax(lo, t) * (1 - 1e-12);
+        t = d_max(lo, t) * (1 - 1e-12);
         while (t > 0 && eval(r, n, t) >= target) t *= 1 - 1e-9; /* never late */
         return t;
     }
@@ -216,7 +216,7 @@ static double first_reach(double p0, double p1, double p2, double target, double
         if (disc < 0) return HUGE_VAL; /* (only when p2 < 0: it never gets there) */
         double m = -0.5 * (p1 + copysign(sqrt(disc), p1));
         double r1 = m / p2, r2 = m != 0 ? q / m : r1;
-        double small = fmin(r1, r2), big = fmax(r1, r2);
+        double small = d_min(r1, r2), big = d_max(r1, r2);
         /* convex: the upward crossing is the larger root; concave: the smaller */
         t = p2 > 0 ? big : small;
     }
@@ -233,7 +233,7 @@ typedef struct {
 static double along_eval(const along_reach *r, int n, double t)
 {
     double f = 0;
-    for (int k = 0; k < n; k++) f += r[k].s * t + 0.5 * r[k].acc * t * t + fmin(r[k].cap, r[k].rate * t);
+    for (int k = 0; k < n; k++) f += r[k].s * t + 0.5 * r[k].acc * t * t + d_min(r[k].cap, r[k].rate * t);
     return f;
 }
 
@@ -253,14 +253,14 @@ double sched_predict_along(const world *w, const body *a, const body *b, double 
         /* until its speed could reach max_linear its centre flies the parabola
          * exactly; the time is not trusted beyond */
         if (speed >= vmax) return 0;
-        if (am > 0) horizon = fmin(horizon, (vmax - speed) / am);
+        if (am > 0) horizon = d_min(horizon, (vmax - speed) / am);
         r[m].s = sign * v3_dot(x->v, n);
         r[m].acc = sign * v3_dot(acc, n);
         /* how far out along n its surface reaches from its centre now, and how
          * much further a turn can take it (to R at most, at w_max R) */
         double out = k == 0 ? v3_dot(v3_sub(pa, c), n) : v3_dot(v3_sub(c, pb), n);
         r[m].rate = spin_bound(x) * x->shape.r_out;
-        r[m].cap = r[m].rate > 0 ? fmax(0, x->shape.r_out - out) : 0;
+        r[m].cap = r[m].rate > 0 ? d_max(0, x->shape.r_out - out) : 0;
         r[m].t_rot = r[m].rate > 0 ? r[m].cap / r[m].rate : 0;
         m++;
     }

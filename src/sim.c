@@ -447,7 +447,7 @@ static const body *at_start(const world *w, int i)
 static double flights_start(const world *w, const pair *p)
 {
     bool ma = w->snap[p->a].state == STATE_DYNAMIC, mb = w->snap[p->b].state == STATE_DYNAMIC;
-    if (ma && mb) return fmin(w->snap_t[p->a], w->snap_t[p->b]);
+    if (ma && mb) return d_min(w->snap_t[p->a], w->snap_t[p->b]);
     return ma ? w->snap_t[p->a] : w->snap_t[p->b];
 }
 
@@ -543,17 +543,17 @@ static double time_of_impact(world *w, pair *p, double lo, double hi)
         /* s t + c t^2 / 2 = D, its least positive root, stably */
         double D = f * r.distance;
         /* once trusted, aim at the middle of where the search may stop */
-        if (f > 0.99) D = fmax(D, r.distance - 0.25 * SIM_SEPARATION);
+        if (f > 0.99) D = d_max(D, r.distance - 0.25 * SIM_SEPARATION);
         double disc = s * s + 2 * c * D, t = 0.5 * (lo + hi);
         bool newton = !overshot && disc >= 0 && s + sqrt(disc) > 0;
         if (newton) t = lo + 2 * D / (s + sqrt(disc));
-        t = fmax(t, safe);
+        t = d_max(t, safe);
         if (!(t < hi)) {
             newton = false;
-            t = 0.5 * (fmax(lo, fmin(safe, hi)) + hi);
+            t = 0.5 * (d_max(lo, d_min(safe, hi)) + hi);
         }
         /* touching at every try: the contact is early in the bracket */
-        if (overshot >= 2) t = fmin(t, lo + 0.25 * (hi - lo));
+        if (overshot >= 2) t = d_min(t, lo + 0.25 * (hi - lo));
         if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
         fly_at(w, p->a, t, ta);
         fly_at(w, p->b, t, tb);
@@ -817,8 +817,8 @@ static void collide(world *w, pair *p)
     }
     if (r.status == CLOSEST_INVALID) return;
     double scale = a->shape.r_out + b->shape.r_out;
-    vec3 pt = contact_point(a, b, &r, 1e-6 * scale + fmax(0, -r.distance));
-    double e = fmin(a->elasticity, b->elasticity);
+    vec3 pt = contact_point(a, b, &r, 1e-6 * scale + d_max(0, -r.distance));
+    double e = d_min(a->elasticity, b->elasticity);
     vec3 g = world_accel(w);
     vec3 up = v3_len2(g) > 0 ? v3_neg(v3_norm(g)) : v3(0, 0, 0);
     /* a slow collision under gravity (the collision envelope of Mirtich and
@@ -828,7 +828,7 @@ static void collide(world *w, pair *p)
      * milliseconds, not every few microseconds */
     double press = v3_dot(v3_sub(still_accel(w, b), still_accel(w, a)), r.normal);
     double cs = contact_closing_speed(a, b, pt, r.normal);
-    double leave = sqrt(2 * fmax(press, v3_len(g)) * SIM_HOP);
+    double leave = sqrt(2 * d_max(press, v3_len(g)) * SIM_HOP);
     bool slow = cs > 0 && cs < SIM_REST_SPEED;
     if (slow && e * cs < leave) e = leave / cs;
     /* in a stack, the object underneath passes a blow from above on to what holds
@@ -1019,8 +1019,8 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
      * where the later of them starts, so that whenever the pair is found the
      * answer is the same (and is kept while both flights are) */
     if (!known) {
-        double from = fmax(w->snap_t[p->a], w->snap_t[p->b]);
-        p->toi = fmax(time_of_impact(w, p, from, t_end), now);
+        double from = d_max(w->snap_t[p->a], w->snap_t[p->b]);
+        p->toi = d_max(time_of_impact(w, p, from, t_end), now);
         p->toi_a = w->snap_id[p->a];
         p->toi_b = w->snap_id[p->b];
     }

@@ -16,6 +16,12 @@ typedef struct { double x, y, z; } vec3;
 typedef struct { double w, x, y, z; } quat;
 typedef struct { double m[3][3]; } mat3;
 
+/* The smaller and the larger of two numbers, for the core's hot loops: fmin and
+ * fmax are calls into libm, since they must also sort out NaN and signed zeros;
+ * these need neither (a NaN b gives b for d_min, a for d_max). */
+static inline double d_min(double a, double b) { return b < a ? b : a; }
+static inline double d_max(double a, double b) { return b > a ? b : a; }
+
 static inline vec3 v3(double x, double y, double z) { return (vec3){x, y, z}; }
 static inline vec3 v3_add(vec3 a, vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
 static inline vec3 v3_sub(vec3 a, vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
