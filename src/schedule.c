@@ -33,7 +33,10 @@ static double spin_bound(const body *b)
     return imin > 0 ? 3 * v3_len(b->L) / imin : 0;
 }
 
-static sched_reach terms_of(const body *b, double acc, double vmax, double slack)
+/* Body b's part of the bound; its turn at the rate its spin allows, or, with
+ * whole set, by all of R - r at once when turn says it counts (whatever its spin). */
+static sched_reach terms_of(const body *b, double acc, double vmax, double slack, bool whole,
+                            bool turn)
 {
     sched_reach r;
     r.s = v3_len(b->v) + slack;
@@ -41,8 +44,13 @@ static sched_reach terms_of(const body *b, double acc, double vmax, double slack
     r.vmax = vmax;
     if (r.s >= vmax) r.t_lin = 0;
     else r.t_lin = acc > 0 ? 2 * (vmax - r.s) / acc : HUGE_VAL;
-    r.rate = spin_bound(b) * b->shape.r_out;
-    r.cap = r.rate > 0 ? b->shape.r_out - b->shape.r_in : 0; /* no spin, no turn */
+    if (whole) {
+        r.rate = 0;
+        r.cap = turn ? b->shape.r_out - b->shape.r_in : 0;
+    } else {
+        r.rate = spin_bound(b) * b->shape.r_out;
+        r.cap = r.rate > 0 ? b->shape.r_out - b->shape.r_in : 0; /* no spin, no turn */
+    }
     r.t_rot = r.rate > 0 ? r.cap / r.rate : 0;
     return r;
 }
@@ -100,13 +108,8 @@ static double predict(const world *w, const body *a, const body *b, double d, bo
     int n = 0;
     for (int k = 0; k < 2; k++) {
         if (ob[k]->state != STATE_DYNAMIC) continue;
-        r[n] = terms_of(ob[k], v3_len(world_body_accel(w, ob[k])), vmax, slack[k]);
-        if (any_spin) { /* the whole turn at once, when it counts */
-            r[n].cap = turn[k] ? ob[k]->shape.r_out - ob[k]->shape.r_in : 0;
-            r[n].rate = 0;
-            r[n].t_rot = 0;
-        }
-        n++;
+        /* with any_spin, the whole turn at once, when it counts */
+        r[n++] = terms_of(ob[k], v3_len(world_body_accel(w, ob[k])), vmax, slack[k], any_spin, turn[k]);
     }
     if (keep) {
         keep->dist = d;
