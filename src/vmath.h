@@ -18,7 +18,7 @@ typedef struct { double m[3][3]; } mat3;
 
 /* The smaller and the larger of two numbers, for the core's hot loops: fmin and
  * fmax are calls into libm, since they must also sort out NaN and signed zeros;
- * these need neither (a NaN b gives b for d_min, a for d_max). */
+ * these need neither (with a NaN on either side, both give a). */
 static inline double d_min(double a, double b) { return b < a ? b : a; }
 static inline double d_max(double a, double b) { return b > a ? b : a; }
 
