@@ -5,7 +5,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "log.h"
 #include "schedule.h"
 #include "sim.h"
 #include "world.h"
@@ -343,50 +342,56 @@ static void along_stops_at_the_speed_limit(void **state)
     world_free(&w);
 }
 
+/* Thirty objects of the three kinds, thrown at random over a floor. */
+static void pile(world *w, bool heap)
+{
+    world_init(w);
+    w->set.collision_heap = heap;
+    w->set.force = (dir_amount){v3(0, 0, -1), 9.8};
+    unsigned long long s = 3;
+    body *floor_ = add(w, "floor", SHAPE_CUBE);
+    floor_->sp.size = v3(3, 3, 0.1);
+    char err[256];
+    assert_int_equal(body_build(floor_, err, sizeof err), 0);
+    body_set_mass(floor_, -1);
+    for (int i = 0; i < 30; i++) {
+        char name[8];
+        snprintf(name, sizeof name, "o%d", i);
+        body *b = add(w, name, (shape_kind)(i % 3));
+        b->sp.radius = 0.15;
+        b->sp.size = v3(0.15, 0.1, 0.12);
+        b->sp.a1 = b->sp.a2 = b->sp.a3 = 0.14;
+        b->sp.exp1 = 0.6;
+        assert_int_equal(body_build(b, err, sizeof err), 0);
+        b->x = v3((i % 6) * 0.5 - 1.25, (i / 6) * 0.5 - 1, 0.6 + urand(&s, 0, 1.5));
+        b->v = v3(urand(&s, -1, 1), urand(&s, -1, 1), urand(&s, -1, 1));
+        body_set_angular_vel(b, v3(urand(&s, -2, 2), urand(&s, -2, 2), urand(&s, -2, 2)));
+        b->elasticity = 0.7;
+    }
+}
+
+/* Fails unless every object of the two worlds is in the same state to the bit. */
+static void same_states(const world *w0, const world *w1, int frame, const char *what)
+{
+    for (int i = 0; i < w0->n; i++) {
+        const body *a = w0->bodies[i], *b = w1->bodies[i];
+        if (memcmp(&a->x, &b->x, sizeof a->x) != 0 || memcmp(&a->q, &b->q, sizeof a->q) != 0 ||
+            memcmp(&a->v, &b->v, sizeof a->v) != 0 || a->state != b->state)
+            fail_msg("frame %d: %s differs %s: dx %g dv %g states %d %d", frame, a->name, what,
+                     v3_dist(a->x, b->x), v3_dist(a->v, b->v), a->state, b->state);
+    }
+}
+
 /* The heap and checking every pair give the same trajectories. */
 static void heap_on_and_off_agree(void **state)
 {
     (void)state;
     world ws[2];
-    for (int m = 0; m < 2; m++) {
-        world *w = &ws[m];
-        world_init(w);
-        w->set.collision_heap = m == 0;
-        w->set.force = (dir_amount){v3(0, 0, -1), 9.8};
-        unsigned long long s = 3;
-        body *floor_ = add(w, "floor", SHAPE_CUBE);
-        floor_->sp.size = v3(3, 3, 0.1);
-        char err[256];
-        assert_int_equal(body_build(floor_, err, sizeof err), 0);
-        body_set_mass(floor_, -1);
-        for (int i = 0; i < 30; i++) {
-            char name[8];
-            snprintf(name, sizeof name, "o%d", i);
-            body *b = add(w, name, (shape_kind)(i % 3));
-            b->sp.radius = 0.15;
-            b->sp.size = v3(0.15, 0.1, 0.12);
-            b->sp.a1 = b->sp.a2 = b->sp.a3 = 0.14;
-            b->sp.exp1 = 0.6;
-            assert_int_equal(body_build(b, err, sizeof err), 0);
-            b->x = v3((i % 6) * 0.5 - 1.25, (i / 6) * 0.5 - 1, 0.6 + urand(&s, 0, 1.5));
-            b->v = v3(urand(&s, -1, 1), urand(&s, -1, 1), urand(&s, -1, 1));
-            body_set_angular_vel(b, v3(urand(&s, -2, 2), urand(&s, -2, 2), urand(&s, -2, 2)));
-            b->elasticity = 0.7;
-        }
-    }
+    for (int m = 0; m < 2; m++) pile(&ws[m], m == 0);
     char err[256];
-    if (getenv("VROC_DEBUG_EVENTS")) {
-        log_events_open(&ws[0], "/tmp/ev-on.csv", err, sizeof err);
-        log_events_open(&ws[1], "/tmp/ev-off.csv", err, sizeof err);
-    }
     for (int f = 0; f < 25; f++) {
-        for (int m = 1; m >= 0; m--) { assert_int_equal(sim_frame(&ws[m], err, sizeof err), 0); if (getenv("VROC_DEBUG_EVENTS")) fprintf(stderr, "f %d m %d coll %ld checks %ld\n", f, m, ws[m].st.collisions, ws[m].st.pair_checks); }
-        for (int i = 0; i < ws[0].n; i++) {
-            const body *a = ws[0].bodies[i], *b = ws[1].bodies[i];
-            if (memcmp(&a->x, &b->x, sizeof a->x) != 0 || memcmp(&a->q, &b->q, sizeof a->q) != 0 ||
-                memcmp(&a->v, &b->v, sizeof a->v) != 0 || a->state != b->state)
-                fail_msg("frame %d: %s differs with the heap on and off: dx %g dv %g states %d %d", f, a->name, v3_dist(a->x, b->x), v3_dist(a->v, b->v), a->state, b->state);
-        }
+        for (int m = 1; m >= 0; m--) assert_int_equal(sim_frame(&ws[m], err, sizeof err), 0);
+        same_states(&ws[0], &ws[1], f, "with the heap on and off");
     }
     print_message("heap on: %ld pair checks, off: %ld; %ld collisions\n", ws[0].st.pair_checks,
                   ws[1].st.pair_checks, ws[0].st.collisions);
