@@ -382,6 +382,7 @@ int sched_build(world *w, double t)
     for (long i = 0; i < np; i++) {
         w->pairs[i].next = t;
         place(w, i, (sched_entry){t, i}); /* all equal: already a heap */
+        bound[i] = (sched_bound){.dist = 0}; /* none kept yet */
     }
     heap[np] = (sched_entry){HUGE_VAL, -1}; /* no pair comes after it */
     return 0;

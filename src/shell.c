@@ -162,6 +162,10 @@ cmd_status shell_check_start(shell *sh, const stmt *st)
         sh_error(sh, st, "time cannot run while objects interpenetrate: move them apart first");
         return CMD_ERROR;
     }
+    if (sim_prepare(&sh->w) != 0) {
+        sh_error(sh, st, "out of memory");
+        return CMD_ERROR;
+    }
     return CMD_OK;
 }
 

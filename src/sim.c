@@ -957,6 +957,10 @@ static int due_room(world *w, long n)
     double *dn = realloc(w->due_next, (size_t)n * sizeof *dn);
     if (dn) w->due_next = dn;
     if (!d || !dn) return -1;
+    /* written once now, so that the system maps its pages here and not in the
+     * middle of a frame (see sim_prepare) */
+    memset(d, 0, (size_t)n * sizeof *d);
+    memset(dn, 0, (size_t)n * sizeof *dn);
     w->capdue = n;
     return 0;
 }
@@ -1214,6 +1218,15 @@ static int internal_step(world *w, double h)
     return 0;
 }
 
+int sim_prepare(world *w)
+{
+    if (sim_update_pairs(w) != 0 || (w->sched_dirty && sched_build(w, w->time) != 0) ||
+        frame_states(w, w->sched_dirty) != 0 || due_room(w, w->npairs) != 0)
+        return -1;
+    w->sched_dirty = false;
+    return 0;
+}
+
 int sim_frame(world *w, char *err, size_t errlen)
 {
     long n = world_subframes(w);
@@ -1224,12 +1237,10 @@ int sim_frame(world *w, char *err, size_t errlen)
                  w->set.time_step, n, SIM_MAX_SUBFRAMES);
         return -1;
     }
-    if (sim_update_pairs(w) != 0 || (w->sched_dirty && sched_build(w, w->time) != 0) ||
-        frame_states(w, w->sched_dirty) != 0) {
+    if (sim_prepare(w) != 0) {
         snprintf(err, errlen, "out of memory");
         return -1;
     }
-    w->sched_dirty = false;
     double t0 = w->time, h = n > 0 ? w->set.time_step / (double)n : 0;
     wake_unsupported(w, NULL);
     for (long k = 0; k < n; k++) {

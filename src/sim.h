@@ -59,6 +59,13 @@
  * With time_step 0 nothing moves and the frame still counts. */
 int sim_frame(world *w, char *err, size_t errlen);
 
+/* Makes ready what the frames need: the pairs, the schedule, the copies of the
+ * objects that may move and the scratch of the internal steps, each allocated
+ * and written once, so that frames allocate nothing and touch no fresh memory
+ * (the shell calls it when time is about to run; sim_frame calls it too, for
+ * what a command changed since).  Returns 0, or -1 when out of memory. */
+int sim_prepare(world *w);
+
 /* Free flight of one dynamic body over h seconds under acceleration a, then the
  * speed limits. */
 void sim_flight(body *b, double h, vec3 a, double max_linear, double max_angular);

@@ -401,6 +401,30 @@ static void heap_on_and_off_agree(void **state)
     world_free(&ws[1]);
 }
 
+/* sim_prepare (what `start` does before time runs) leaves the schedule built and
+ * the scratch of the steps in place, and changes no trajectory. */
+static void prepared_worlds_move_the_same(void **state)
+{
+    (void)state;
+    world ws[2];
+    for (int m = 0; m < 2; m++) pile(&ws[m], true);
+    assert_int_equal(sim_prepare(&ws[0]), 0);
+    assert_false(ws[0].sched_dirty);
+    assert_int_equal(sched_check(&ws[0]), 0);
+    assert_true(ws[0].capdue >= ws[0].npairs);
+    assert_true(ws[0].capsnap >= ws[0].n);
+    for (long i = 0; i < ws[0].npairs; i++) assert_true(ws[0].pairs[i].next == ws[0].time);
+    assert_int_equal(sim_prepare(&ws[0]), 0); /* again: nothing to do */
+    char err[256];
+    for (int f = 0; f < 10; f++) {
+        for (int m = 0; m < 2; m++) assert_int_equal(sim_frame(&ws[m], err, sizeof err), 0);
+        same_states(&ws[0], &ws[1], f, "prepared and not");
+    }
+    assert_true(ws[0].st.collisions > 0);
+    world_free(&ws[0]);
+    world_free(&ws[1]);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -410,6 +434,7 @@ int main(void)
         cmocka_unit_test(along_predictions_are_never_late),
         cmocka_unit_test(along_stops_at_the_speed_limit),
         cmocka_unit_test(heap_on_and_off_agree),
+        cmocka_unit_test(prepared_worlds_move_the_same),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
