@@ -7,8 +7,9 @@
 #   - the thesis scenes (Table 5.1): simulation only with the collision heap on and
 #     off, and with both eyes rendered into memory at 640x512 after every frame;
 #     100 frames (10 s of simulated time at 0.1 s, as the thesis's "average over
-#     approximately 10 seconds"), median of 5 runs or more (3 for the heap off and
-#     rendered runs);
+#     approximately 10 seconds"), median of 5 runs or more, and of at least 2 s of
+#     runs with the heap on or off, so that the heap's ratio compares medians of
+#     alike samples (3 runs or more for the rendered runs);
 #   - the random environment (Table 5.6) for 20 to 100 objects, and 200, 500 and
 #     1000 for scaling (fewer runs and frames there, as printed);
 # then prints build/bench/bench_view and build/bench/bench_closest.
@@ -140,7 +141,7 @@ printf '%s\n' "$THESIS" | while IFS='|' read -r id name file rest; do
         continue
     fi
     measure "$id.on" "$file" --frames "$F" --runs "$R" --min-time "$MT" --heap on
-    measure "$id.off" "$file" --frames "$F" --runs "$R3" --heap off
+    measure "$id.off" "$file" --frames "$F" --runs "$R3" --min-time "$MT" --heap off
     measure "$id.render" "$file" --frames "$F" --runs "$R3" --heap on --render
 done
 for id in $(printf '%s\n' "$THESIS" | cut -d'|' -f1); do
@@ -177,9 +178,11 @@ printf 'vroc: %s%s, %s\n' "$(git rev-parse --short HEAD 2>/dev/null || echo '?')
     "$(if [ -n "$(git status --porcelain -- src 2>/dev/null)" ]; then echo ' (src modified)'; fi)" \
     "$(date '+%Y-%m-%d %H:%M')"
 echo "One core, one thread (llvmpipe may use more for drawing).  frames/s = frames / wall time"
-echo "of sim_frame (and view_render), first frame included; every figure is the median of"
-echo "the runs, each run on a freshly loaded scene.  Thesis: HP750 = HP-750 TVRX-T4 (mono"
-echo "640x512 images), PxPl5 = Pixel-Planes 5 with 1 or 25 GPs (stereo, head-tracked)."
+echo "of sim_frame (and view_render), first frame included (not what \`start' makes ready"
+echo "before time runs: the pairs, the schedule, the copies of the moving objects); every"
+echo "figure is the median of the runs, each run on a freshly loaded scene.  Thesis:"
+echo "HP750 = HP-750 TVRX-T4 (mono 640x512 images), PxPl5 = Pixel-Planes 5 with 1 or 25"
+echo "GPs (stereo, head-tracked)."
 if [ -n "$MISSING" ]; then
     echo "Missing scenes, not measured:$MISSING"
 fi
