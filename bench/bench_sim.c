@@ -5,10 +5,11 @@
  * through shell_run_text), refuses interpenetrating starts as `run` does, then times
  * sim_frame over N frames with CLOCK_MONOTONIC: simulation only, or each frame
  * followed by view_render of both eyes at 640x512 into memory (--render).  Every run
- * reloads the scene fresh; every figure printed is the median over R runs.  The
- * first frame (which builds the pair list and the schedule) is inside the timing, as
- * it is inside `run`; its own time is printed as first_frame_ms.  The off-screen
- * context is made once, before any timing, and kept across runs.
+ * reloads the scene fresh; every figure printed is the median over R runs.  The pair
+ * list, the schedule and the copies of the moving objects are made before the timing,
+ * by the check `run` makes before time runs (shell_check_start, sim_prepare); the
+ * first frame is inside the timing, and its own time is printed as first_frame_ms.
+ * The off-screen context is made once, before any timing, and kept across runs.
  *
  *   bench_sim SCENE.vroc [options]
  *   bench_sim --random N [--seed S] [--thick A] [--walls on|off] [options]

@@ -269,7 +269,7 @@ printf '%s\n' "$THESIS" | while IFS='|' read -r id name rest; do
 done
 echo "pair checks: closest-feature queries, the time-of-impact search's (a few per collision)"
 echo "included; checks/pair: those per object pair; heap pops: pairs taken from the"
-echo "schedule; restarts: walks redone from scratch; 1st frame: the one that builds pairs and heap."
+echo "schedule; restarts: walks redone from scratch; 1st frame: the first frame's own time."
 
 echo
 echo "Table 5.6: random objects, frames/s (subframes/s)"
