@@ -1199,11 +1199,11 @@ static void answer(world *w, pair *p, double t)
     }
 }
 
-/* One internal step of h seconds (thesis 3.4.2, steps 3 to 5). */
-static int internal_step(world *w, double h)
+/* One internal step of h seconds (thesis 3.4.2, steps 3 to 5); its scratch is
+ * in place (sim_prepare). */
+static void internal_step(world *w, double h)
 {
     double now = w->time, t_end = now + h;
-    if (due_room(w, w->npairs) != 0) return -1;
     save_states(w, now);
     for (int n = 0;; n++) {
         fly_to_end(w, t_end);
@@ -1215,7 +1215,6 @@ static int internal_step(world *w, double h)
     }
     w->time = t_end;
     check_slides(w);
-    return 0;
 }
 
 int sim_prepare(world *w)
@@ -1244,10 +1243,7 @@ int sim_frame(world *w, char *err, size_t errlen)
     double t0 = w->time, h = n > 0 ? w->set.time_step / (double)n : 0;
     wake_unsupported(w, NULL);
     for (long k = 0; k < n; k++) {
-        if (internal_step(w, h) != 0) {
-            snprintf(err, errlen, "out of memory");
-            return -1;
-        }
+        internal_step(w, h);
         w->st.subframes++;
     }
     rest_still_objects(w);
