@@ -270,7 +270,8 @@ static void wake_unsupported(world *w, bool *touched)
     bool changed = true;
     while (changed) {
         changed = false;
-        for (int i = 0; i < w->n; i++) {
+        for (int k = 0; k < w->nmovers; k++) { /* (a static object neither slides nor rests) */
+            int i = w->movers[k];
             body *b = w->bodies[i];
             const body *s = b->slide >= 0 ? w->bodies[b->slide] : NULL;
             if (s && s->state == STATE_DYNAMIC && s->slide < 0) {
@@ -307,7 +308,8 @@ static void rest_still_objects(world *w)
     bool changed = true;
     while (changed) { /* a stack comes to rest from the bottom up */
         changed = false;
-        for (int i = 0; i < w->n; i++) {
+        for (int k = 0; k < w->nmovers; k++) {
+            int i = w->movers[k];
             body *b = w->bodies[i];
             if (b->state != STATE_DYNAMIC || b->slide < 0) continue;
             if (w->bodies[b->slide]->state == STATE_DYNAMIC) continue;
@@ -456,7 +458,8 @@ static double flights_start(const world *w, const pair *p)
  * what it flew to a collision and left unchanged). */
 static void fly_to_end(world *w, double t_end)
 {
-    for (int i = 0; i < w->n; i++) {
+    for (int k = 0; k < w->nmovers; k++) {
+        int i = w->movers[k];
         if (w->snap[i].state != STATE_DYNAMIC || w->end_id[i] == w->snap_id[i]) continue;
         fly_into(w, i, t_end, &w->end[i]);
         w->end_id[i] = w->snap_id[i];
@@ -925,7 +928,8 @@ static bool on_the_face(const world *w, int i)
  * standing stably on it or are thrown off it. */
 static void check_slides(world *w)
 {
-    for (int i = 0; i < w->n; i++) {
+    for (int k = 0; k < w->nmovers; k++) {
+        int i = w->movers[k];
         body *m = w->bodies[i];
         if (m->slide < 0) continue;
         if (m->state != STATE_DYNAMIC) {
