@@ -179,7 +179,11 @@ long world_pairs(const world *w);
  * none).  Inline, as are the next: the schedule and every flight ask for it. */
 static inline vec3 world_accel(const world *w)
 {
-    return v3_scale(v3_norm(w->set.force.dir), w->set.force.amount);
+    vec3 d = w->set.force.dir;
+    /* a unit direction (gravity's (0, 0, -1)) needs no square root: the same to
+     * the bit as normalising it */
+    if (v3_len2(d) == 1) return v3_scale(d, w->set.force.amount);
+    return v3_scale(v3_norm(d), w->set.force.amount);
 }
 
 /* The global acceleration as body b feels it: less the part that presses it onto
