@@ -357,7 +357,7 @@ static void save_states(world *w, double t)
  * scratch[SCRATCH i] to scratch[SCRATCH i + SCRATCH - 1]. */
 #define SCRATCH 4
 
-/* Makes snap, pre, end and scratch copies of the objects that may move, so that within a
+/* Makes snap, pre and scratch copies of the objects that may move, so that within a
  * frame only their states need copying (nothing else changes while time runs;
  * static objects are read where they are).  The copies are made again only after
  * a command (changed, w->sched_dirty): between frames nothing else changes a
@@ -369,7 +369,6 @@ static int frame_states(world *w, bool changed)
         bool ok = true;
         w->snap = resized(w->snap, sizeof *w->snap, w->n, &ok);
         w->pre = resized(w->pre, sizeof *w->pre, w->n, &ok);
-        w->end = resized(w->end, sizeof *w->end, w->n, &ok);
         w->scratch = resized(w->scratch, SCRATCH * sizeof *w->scratch, w->n, &ok);
         w->snap_t = resized(w->snap_t, sizeof *w->snap_t, w->n, &ok);
         w->snap_id = resized(w->snap_id, sizeof *w->snap_id, w->n, &ok);
@@ -384,7 +383,7 @@ static int frame_states(world *w, bool changed)
     for (int i = 0; i < w->n; i++) {
         if (!body_is_static(w->bodies[i])) {
             w->movers[w->nmovers++] = i;
-            w->snap[i] = w->pre[i] = w->end[i] = *w->bodies[i];
+            w->snap[i] = w->pre[i] = *w->bodies[i];
             for (int k = 0; k < SCRATCH; k++) w->scratch[SCRATCH * i + k] = *w->bodies[i];
         } else {
             /* a static object flies from nowhere before any step */
@@ -454,16 +453,15 @@ static double flights_start(const world *w, const pair *p)
 }
 
 /* Every moving object to the end of the step, t_end: an object whose flight did
- * not change since it was last flown there is there already (answer puts back
- * what it flew to a collision and left unchanged). */
+ * not change since it was last flown there is there already (answer flies back
+ * there what it flew to a collision and left unchanged). */
 static void fly_to_end(world *w, double t_end)
 {
     for (int k = 0; k < w->nmovers; k++) {
         int i = w->movers[k];
         if (w->snap[i].state != STATE_DYNAMIC || w->end_id[i] == w->snap_id[i]) continue;
-        fly_into(w, i, t_end, &w->end[i]);
+        fly_into(w, i, t_end, w->bodies[i]);
         w->end_id[i] = w->snap_id[i];
-        body_copy_state(w->bodies[i], &w->end[i]);
     }
 }
 
@@ -1161,11 +1159,11 @@ static void reschedule(world *w, int i, const body *a, const body *b, double t)
     }
 }
 
-/* Answers the collision of pair p at time t.  Only its two objects are flown
- * there; the others stay at the end of the step, where the next check wants
- * them (settle flies the neighbours it looks at).  What the answer changes flies
- * on from t. */
-static void answer(world *w, pair *p, double t)
+/* Answers the collision of pair p at time t, within the step that ends at t_end.
+ * Only its two objects are flown there; the others stay at the end of the step,
+ * where the next check wants them (settle flies the neighbours it looks at).  What
+ * the answer changes flies on from t; what it leaves as it was flies back. */
+static void answer(world *w, pair *p, double t, double t_end)
 {
     int ends[2] = {p->a, p->b};
     for (int k = 0; k < 2; k++) {
@@ -1182,8 +1180,8 @@ static void answer(world *w, pair *p, double t)
         w->touched[i] = false;
         if (memcmp((char *)&w->pre[i] + offsetof(body, x), (char *)w->bodies[i] + offsetof(body, x),
                    sizeof(body) - offsetof(body, x)) == 0) {
-            /* as it was */
-            if (w->snap[i].state == STATE_DYNAMIC) body_copy_state(w->bodies[i], &w->end[i]);
+            /* as it was: at the end of the step again */
+            if (w->snap[i].state == STATE_DYNAMIC) fly_into(w, i, t_end, w->bodies[i]);
             continue;
         }
         renew_flight(w, i, t);
@@ -1214,7 +1212,7 @@ static void internal_step(world *w, double h)
         double when;
         pair *first = check_due(w, now, t_end, &when);
         if (!first || n >= SIM_MAX_COLLISIONS_PER_STEP) break;
-        answer(w, first, when);
+        answer(w, first, when, t_end);
         now = when;
     }
     w->time = t_end;

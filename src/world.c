@@ -64,7 +64,6 @@ void world_free(world *w)
     free(w->snap_t);
     free(w->snap_id);
     free(w->pre);
-    free(w->end);
     free(w->scratch);
     free(w->end_id);
     free(w->touched);
@@ -85,7 +84,7 @@ void world_free(world *w)
     w->capdue = 0;
     w->pairs = NULL;
     w->hits = NULL;
-    w->snap = w->pre = w->end = w->scratch = NULL;
+    w->snap = w->pre = w->scratch = NULL;
     w->end_id = NULL;
     w->touched = NULL;
     w->movers = NULL;

@@ -145,8 +145,8 @@ typedef struct world {
     long flight_count;
     body *pre;            /* scratch: the colliding pair's states before the answer */
     bool *touched;        /* scratch: the other objects a collision's answer changed */
-    body *end;            /* scratch: the states at the end of the internal step, */
-    long *end_id;         /*   flown from the starts numbered so */
+    long *end_id;         /* scratch: the flight each moving object was last flown to
+                           * the end of the internal step from (sim.c) */
     body *scratch;        /* scratch: SIM_SCRATCH copies of each object (sim.c) */
     int *movers, nmovers; /* scratch: the objects that are not static, in order */
     int capsnap;
