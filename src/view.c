@@ -585,8 +585,9 @@ static int view_frame(view **v, const world *w, long frame, int *files, char *er
 {
     const settings *s = &w->set;
     int neyes = s->stereo == STEREO_MONO ? 1 : 2;
-    if (view_render_eyes(v, w, neyes, err, errlen) != 0) return -1;
+    /* the folder first: where no file can be written, nothing is drawn */
     if (s->output[0] && view_mkdirs(s->output, err, errlen) != 0) return -1;
+    if (view_render_eyes(v, w, neyes, err, errlen) != 0) return -1;
     view *vw = *v;
     view_file f[2];
     int n = 1;
