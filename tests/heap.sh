@@ -31,9 +31,16 @@ n=$(ls "$TMP/rec" 2>/dev/null | grep -c '^frame-0000[0-9][0-9]-\(left\|right\)\.
 for want in frame-000000-sbs.png frame-000000-anaglyph.png frame-000001-left.png; do
     [ -s "$TMP/one/$want" ] && ok "refresh writes $want" || notok "refresh writes $want" "$(ls "$TMP/one")"
 done
-# a folder that cannot be written: a clear error, and the simulation goes on
+# a folder that cannot be written: a clear error, and a batch run stops there with a
+# failure status (at the prompt time goes on: test_shell)
 : > "$TMP/file"
 out=$("$VROC" -b "$f" -c "output = \"$TMP/file/sub\"; record = on; run 3; time" 2>&1)
-case "$out" in *"error: record:"*"$TMP/file/sub"*"time = 0.3"*) ok "an output folder that cannot be written: error, time goes on" ;;
-    *) notok "an output folder that cannot be written: error, time goes on" "$out" ;; esac
+status=$?
+case "$out" in
+*"error: record:"*"$TMP/file/sub"*"time stopped"*"time = "*) notok "an output folder that cannot be written stops a batch run" "$out" ;;
+*"error: record:"*"$TMP/file/sub"*"time stopped"*)
+    [ $status -ne 0 ] && ok "an output folder that cannot be written stops a batch run" ||
+        notok "an output folder that cannot be written stops a batch run" "exit status $status" ;;
+*) notok "an output folder that cannot be written stops a batch run" "$out" ;;
+esac
 exit 0

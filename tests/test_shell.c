@@ -318,6 +318,29 @@ static void time_and_stats(void **state)
     assert_int_equal(world_find(&g_sh.w, "never"), -1);
 }
 
+/* A frame that cannot be written turns record off; a batch run (stop_on_error)
+ * stops there with an error, the prompt goes on. */
+static void failed_record_stops_a_batch_run(void **state)
+{
+    (void)state;
+    char out[256], text[400];
+    write_file("plain", "x", 1); /* a file, so no folder can be made under it */
+    path_in_dir(out, sizeof out, "plain/frames/f");
+    snprintf(text, sizeof text, "restart; sphere a; output = \"%s\"; record = on\n", out);
+    assert_int_equal(run(text), CMD_OK);
+    assert_int_equal(run("run 5\n"), CMD_ERROR);
+    assert_non_null(strstr(g_errbuf, "record: "));
+    assert_non_null(strstr(g_errbuf, "time stopped"));
+    assert_false(g_sh.w.set.record);
+    assert_int_equal(g_sh.w.frame, 1);
+    g_sh.stop_on_error = false; /* at the prompt */
+    assert_int_equal(run("record = on; run 5\n"), CMD_OK);
+    assert_non_null(strstr(g_errbuf, "; recording turned off\n")); /* and time goes on */
+    assert_false(g_sh.w.set.record);
+    assert_int_equal(g_sh.w.frame, 6);
+    g_sh.stop_on_error = true;
+}
+
 static void trace_writes_a_row_per_object_per_frame(void **state)
 {
     (void)state;
@@ -367,6 +390,7 @@ int main(void)
         cmocka_unit_test(show_lists_every_setting),
         cmocka_unit_test(time_cannot_run_through_objects),
         cmocka_unit_test(time_and_stats),
+        cmocka_unit_test(failed_record_stops_a_batch_run),
         cmocka_unit_test(trace_writes_a_row_per_object_per_frame),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
