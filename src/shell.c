@@ -189,14 +189,15 @@ cmd_status shell_advance(shell *sh, const stmt *st, long n)
         }
         if (sh->w.set.record &&
             view_refresh(&sh->view, &sh->w, sh->w.frame, &sh->w.st, err, sizeof err) != 0) {
+            /* at the prompt the simulation goes on without the pictures; a batch
+             * run stops at its first error */
             sh->w.set.record = false;
-            if (sh->stop_on_error) { /* a batch run stops at its first error */
-                sh_error(sh, st, "record: %s; recording turned off, time stopped", err);
+            sh_error(sh, st, "record: %s; recording turned off%s", err,
+                     sh->stop_on_error ? ", time stopped" : "");
+            if (sh->stop_on_error) {
                 r = CMD_ERROR;
                 break;
             }
-            /* at the prompt the simulation goes on without the pictures */
-            sh_error(sh, st, "record: %s; recording turned off", err);
         }
     }
     sh->w.st.wall_time += now() - t0;
