@@ -60,6 +60,9 @@ typedef struct body {
     int slide;         /* the support it slides on (see sim.c), or -1 */
     long slide_pair;   /* the pair of that contact in world.pairs */
     vec3 slide_n;      /* that support's normal, towards this body */
+    bool slide_steady; /* the slide is on a face of a still support, turning about
+                        * its normal only (or not at all, or a ball): likely to
+                        * last, so far predictions count its lesser acceleration */
     long shifts;       /* how many times collisions set it apart (sim.c) */
     int pinned_by[2];  /* the last two still objects it struck (sim.c), or -1; */
     vec3 pinned_n[2];  /*   those contacts' normals, towards this body, */

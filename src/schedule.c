@@ -108,8 +108,12 @@ static double predict(const world *w, const body *a, const body *b, double d, bo
     int n = 0;
     for (int k = 0; k < 2; k++) {
         if (ob[k]->state != STATE_DYNAMIC) continue;
-        /* with any_spin, the whole turn at once, when it counts */
-        r[n++] = terms_of(ob[k], v3_len(world_body_accel(w, ob[k])), vmax, slack[k], any_spin, turn[k]);
+        /* with any_spin (far), the whole turn at once, when it counts, and the
+         * whole force unless a steady slide takes part of it */
+        const body *o = ob[k];
+        bool whole = any_spin && !(o->slide >= 0 && o->slide_steady);
+        double acc = v3_len(whole ? world_accel(w) : world_body_accel(w, o));
+        r[n++] = terms_of(o, acc, vmax, slack[k], any_spin, turn[k]);
     }
     if (keep) {
         keep->dist = d;
@@ -403,6 +407,17 @@ long sched_top(const world *w, double *next)
     if (w->npairs == 0) return -1;
     *next = w->heap[0].next;
     return w->heap[0].pair;
+}
+
+void sched_slide_ends(world *w, int k, double t)
+{
+    if (!w->obj_first) return;
+    for (long j = w->obj_first[k]; j < w->obj_first[k + 1]; j++) {
+        long i = w->obj_pairs[j];
+        const pair *p = &w->pairs[i];
+        bool holds = p->far && !(p->a == k ? p->far_slide_a : p->far_slide_b);
+        if (!holds && p->next > t) sched_set(w, i, t);
+    }
 }
 
 void sched_object_due(world *w, int k, double t)

@@ -33,8 +33,10 @@ double sched_predict_bodies(const world *w, const body *a, const body *b, double
 
 /* A bound for objects a and b, a gap d apart in the states given, that holds
  * whatever their spins become, while their speeds stay within SCHED_SLACK of what
- * they are in those states plus what the force adds, whatever their directions,
- * and through SCHED_SHIFTS shifts of up to sep each: so that a collision that
+ * they are in those states plus what the force adds, whatever their directions
+ * (the whole force, whether or not the object slides, unless its slide is steady:
+ * body.slide_steady; so a slide that ends leaves the time as it was), and
+ * through SCHED_SHIFTS shifts of up to sep each: so that a collision that
  * turns an object back, spins it faster, speeds it up a little or sets it a hair
  * apart leaves the pair's time as it was.  turn_a and turn_b say whether a turn of
  * that object can close the gap; each that can turns its surface by all of its
@@ -102,6 +104,12 @@ long sched_top(const world *w, double *next);
 /* Makes every pair of object k due at time t (sooner only: a pair already due
  * earlier keeps its time). */
 void sched_object_due(world *w, int k, double t);
+
+/* The same when object k's slide ends, and with it the part of the force its
+ * support took: for its near pairs, and for the far ones whose times counted that
+ * slide's lesser acceleration (pair.far_slide_a, far_slide_b); the other far ones
+ * counted the whole force, and keep their times. */
+void sched_slide_ends(world *w, int k, double t);
 
 /* Checks the heap's invariants (for tests): 0 when they hold. */
 int sched_check(const world *w);

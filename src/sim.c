@@ -276,7 +276,7 @@ static void wake_unsupported(world *w, bool *touched)
             const body *s = b->slide >= 0 ? w->bodies[b->slide] : NULL;
             if (s && s->state == STATE_DYNAMIC && s->slide < 0) {
                 b->slide = -1; /* the full force: its pairs' predictions change */
-                sched_object_due(w, i, w->time);
+                sched_slide_ends(w, i, w->time);
                 if (touched) touched[i] = true;
             }
             if (b->state != STATE_RESTING) continue;
@@ -651,9 +651,16 @@ static void separate(body *a, body *b, vec3 n, double gap, double sep)
     }
 }
 
+/* True when b's surface stays where it is however b turns: a sphere about its
+ * centre. */
+static bool turns_in_place(const body *b)
+{
+    return b->sp.kind == SHAPE_SPHERE && v3_len2(b->shape.mass.com) == 0;
+}
+
 /* The contact state of body m on support s (index si, normal n from s to m, pair
  * p): it rests when still and its support is, else it slides. */
-static void stand(world *w, body *m, const body *s, int si, vec3 n, const pair *p)
+static void stand(world *w, body *m, const body *s, int si, vec3 n, bool face, const pair *p)
 {
     double speed = v3_len(m->v) + v3_len(m->w) * m->shape.r_out;
     if (speed < SIM_REST_SPEED && s->state != STATE_DYNAMIC) {
@@ -664,6 +671,8 @@ static void stand(world *w, body *m, const body *s, int si, vec3 n, const pair *
         m->slide_pair = p - w->pairs;
         double vn = v3_dot(m->v, n);
         if (vn > 0) m->v = v3_mad(m->v, n, -vn);
+        m->slide_steady = face && s->state != STATE_DYNAMIC &&
+                        (v3_len2(m->L) == 0 || spins_on_support(m) || turns_in_place(m));
     }
 }
 
@@ -684,7 +693,8 @@ static void stand(world *w, body *m, const body *s, int si, vec3 n, const pair *
  * still needs setting apart) or SETTLE_LAID (turned onto its face and placed). */
 enum { SETTLE_NONE, SETTLE_STANDS, SETTLE_LAID };
 
-static int settle(world *w, int mi, int si, vec3 n, vec3 support_pt, pair *p, double g, double e)
+static int settle(world *w, int mi, int si, vec3 n, bool face, vec3 support_pt, pair *p, double g,
+                  double e)
 {
     body *m = w->bodies[mi];
     const body *s = w->bodies[si];
@@ -735,7 +745,7 @@ static int settle(world *w, int mi, int si, vec3 n, vec3 support_pt, pair *p, do
         m->rot_given = false;
         body_update_w(m);
     }
-    stand(w, m, s, si, n, p);
+    stand(w, m, s, si, n, face, p);
     return stable ? SETTLE_STANDS : SETTLE_LAID;
 }
 
@@ -755,11 +765,13 @@ static bool holds(const body *l, vec3 n, vec3 *s)
  * points, f the feature of s) made exact when the contact is on a face of s: that
  * face's normal, so that an object sliding on the face keeps its height above it
  * (a measured normal a hair off would carry it slowly into the face or off it). */
-static vec3 support_normal(const body *s, closest_feature f, vec3 n)
+static vec3 support_normal(const body *s, closest_feature f, vec3 n, bool *face)
 {
+    *face = false;
     if (f.kind != CLOSEST_FACE || !s->shape.hull) return n;
     vec3 fn = v3_norm(q_rotate(s->q, s->shape.hull->f[f.index].n));
-    return v3_dot(fn, n) > 1 - 1e-6 ? fn : n;
+    *face = v3_dot(fn, n) > 1 - 1e-6;
+    return *face ? fn : n;
 }
 
 /* True when object i, pushed along toward (within 45 degrees), is pinned against
@@ -867,12 +879,13 @@ static void collide(world *w, pair *p)
         body *m = k == 0 ? a : b, *s = k == 0 ? b : a;
         int si = k == 0 ? p->b : p->a;
         /* from the support to m */
-        vec3 n = support_normal(s, k == 0 ? r.fb : r.fa, k == 0 ? r.normal : v3_neg(r.normal));
+        bool face;
+        vec3 n = support_normal(s, k == 0 ? r.fb : r.fa, k == 0 ? r.normal : v3_neg(r.normal), &face);
         /* a support: a static or resting object, or one that slides itself */
         if (m->state != STATE_DYNAMIC || (s->state == STATE_DYNAMIC && s->slide < 0)) continue;
         double vn = v3_dot(m->v, n);
         if (v3_dot(n, up) < 0.7 || vn > SIM_REST_SPEED) continue;
-        int how = settle(w, k == 0 ? p->a : p->b, si, n, k == 0 ? r.pb : r.pa, p, v3_len(g),
+        int how = settle(w, k == 0 ? p->a : p->b, si, n, face, k == 0 ? r.pb : r.pa, p, v3_len(g),
                          fmin(a->elasticity, b->elasticity));
         if (how == SETTLE_LAID) return; /* placed apart already */
         if (how == SETTLE_STANDS) settled = true;
@@ -880,12 +893,6 @@ static void collide(world *w, pair *p)
     if (apart || settled) separate(a, b, r.normal, r.distance, SIM_SEPARATION);
 }
 
-/* True when b's surface stays where it is however b turns: a sphere about its
- * centre. */
-static bool turns_in_place(const body *b)
-{
-    return b->sp.kind == SHAPE_SPHERE && v3_len2(b->shape.mass.com) == 0;
-}
 
 /* True when object mi slides on a still support si, not towards it, turning
  * about its normal only (or not at all, or a sphere about its centre).  The plane between them at their
@@ -946,7 +953,7 @@ static void check_slides(world *w)
             v3_dot(n, m->slide_n) < 1 - 1e-6 || v3_dot(m->v, n) > SIM_REST_SPEED ||
             (turned && !contact_stable(m, n, 1e-6 * scale))) {
             m->slide = -1; /* the full force: its pairs' predictions change */
-            sched_object_due(w, i, w->time);
+            sched_slide_ends(w, i, w->time);
         }
     }
 }
@@ -994,6 +1001,8 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
             gap > 0 ? from + sched_predict_far(w, a, b, gap, SIM_SEPARATION, turn_a, turn_b) : from;
         if (next - t_end >= w->set.time_step) {
             p->far = true;
+            p->far_slide_a = a->slide >= 0 && a->slide_steady;
+            p->far_slide_b = b->slide >= 0 && b->slide_steady;
             p->checked = from;
             p->shifts_a = a->shifts;
             p->shifts_b = b->shifts;

@@ -49,7 +49,34 @@ static void heap_keeps_its_order(void **state)
         }
     assert_int_equal(due, 39);
     assert_int_equal(sched_check(&w), 0);
+    /* a slide of object 5 that ends makes due its near pairs, and the far ones
+     * whose times counted that slide; not the far ones found at the whole force */
+    for (long i = 0; i < w.npairs; i++) {
+        pair *p = &w.pairs[i];
+        sched_set(&w, i, 10.0);
+        p->far = i % 3 != 0;
+        p->far_slide_a = p->far_slide_b = false;
+        if (i % 3 == 1) *(p->a == 5 ? &p->far_slide_a : &p->far_slide_b) = true;
+    }
+    sched_slide_ends(&w, 5, 2.0);
+    due = 0;
+    for (long i = 0; i < w.npairs; i++) {
+        const pair *p = &w.pairs[i];
+        bool mine = p->a == 5 || p->b == 5;
+        assert_true(w.pairs[i].next == (mine && i % 3 != 2 ? 2.0 : 10.0));
+        due += w.pairs[i].next == 2.0;
+    }
+    assert_true(due > 10 && due < 39);
+    assert_int_equal(sched_check(&w), 0);
     world_free(&w);
+}
+
+/* Body b flown h seconds in one flight, under the force as it feels it (less the
+ * part its support takes while it slides), when it moves. */
+static void fly_felt(const world *w, body *b, double h)
+{
+    if (b->state == STATE_DYNAMIC)
+        sim_flight(b, h, world_body_accel(w, b), w->set.max_linear, w->set.max_angular);
 }
 
 /* First time the two bodies touch when flown with vroc's integrator in steps of
@@ -57,12 +84,11 @@ static void heap_keeps_its_order(void **state)
 static double first_contact(const world *w, const body *a0, const body *b0, double h, double tmax)
 {
     body a = *a0, b = *b0;
-    vec3 g = world_accel(w);
     double t = 0;
     while (t < tmax) {
         body na = a, nb = b;
-        if (na.state == STATE_DYNAMIC) sim_flight(&na, h, g, w->set.max_linear, w->set.max_angular);
-        if (nb.state == STATE_DYNAMIC) sim_flight(&nb, h, g, w->set.max_linear, w->set.max_angular);
+        fly_felt(w, &na, h);
+        fly_felt(w, &nb, h);
         closest_result r = closest_query(&na, &nb, NULL);
         if (r.status != CLOSEST_SEPARATED) {
             /* contact within this step: bisect its length */
@@ -71,8 +97,8 @@ static double first_contact(const world *w, const body *a0, const body *b0, doub
                 double mid = 0.5 * (lo + hi);
                 na = a;
                 nb = b;
-                if (na.state == STATE_DYNAMIC) sim_flight(&na, mid, g, w->set.max_linear, w->set.max_angular);
-                if (nb.state == STATE_DYNAMIC) sim_flight(&nb, mid, g, w->set.max_linear, w->set.max_angular);
+                fly_felt(w, &na, mid);
+                fly_felt(w, &nb, mid);
                 if (closest_query(&na, &nb, NULL).status == CLOSEST_SEPARATED) lo = mid;
                 else hi = mid;
             }
@@ -168,6 +194,71 @@ static void predictions_are_never_late(void **state)
     assert_true(tight > collided / 4);  /* and the bound must be of use */
     assert_true(far_useful > trials / 2); /* the far one too */
     assert_true(ball_gaps > trials / 4);  /* and the spheres' gap was tried */
+}
+
+/* A far pair's time holds when a slide of one of its objects ends, unless it
+ * counted that slide's lesser acceleration: only a steady slide (on a face of a
+ * still support, turning about its normal only) is counted so, and a slide that
+ * ends makes due the pairs that did (sched_slide_ends).  Objects slide on random
+ * supports, then fly under the whole force from a random instant on: no far time
+ * found while they slid is later than their first contact. */
+static void far_times_hold_when_a_slide_ends(void **state)
+{
+    (void)state;
+    unsigned long long s = 29;
+    int collided = 0, steadier = 0, tried = 0;
+    const int trials = 600;
+    for (int k = 0; k < trials; k++) {
+        world w;
+        body *ob[2];
+        double d = random_pair(&w, &s, 2 * k + 1, ob); /* with gravity */
+        if (d == 0) continue;
+        int i = body_is_static(ob[0]) ? 1 : 0;
+        body *m = ob[i], *o = ob[1 - i];
+        /* slow, the force mostly towards the other, which the slide holds back */
+        vec3 to = v3_norm(v3_sub(o->x, m->x));
+        w.set.force = (dir_amount){v3_add(to, v3(urand(&s, -0.5, 0.5), urand(&s, -0.5, 0.5), 0)), 9.8};
+        for (int j = 0; j < 2; j++)
+            if (!body_is_static(ob[j])) ob[j]->v = v3(urand(&s, -1, 1), urand(&s, -1, 1), urand(&s, -1, 1));
+        /* pressed onto a support on the far side from the other, tilted up to 60 degrees */
+        vec3 g = world_accel(&w);
+        vec3 up = v3_neg(v3_norm(g));
+        vec3 n = v3_norm(v3_add(up, v3(urand(&s, -1, 1), urand(&s, -1, 1), urand(&s, -1, 1))));
+        if (v3_dot(n, up) < 0.5) {
+            world_free(&w);
+            continue;
+        }
+        m->slide = 1 - i;
+        m->slide_n = n;
+        m->slide_steady = false;
+        double far = sched_predict_far(&w, ob[0], ob[1], d, 1e-7, true, true);
+        m->slide_steady = true;
+        double steady = sched_predict_far(&w, ob[0], ob[1], d, 1e-7, true, true);
+        if (steady > far) steadier++;
+        if (steady < far) fail_msg("trial %d: a steady slide's far time %.9g s before %.9g s", k, steady, far);
+        /* it slides until tau, and falls under the whole force from there */
+        double tau = urand(&s, 0, 1) * fmin(far, 1), h = urand(&s, 0.001, 0.02);
+        double truth = first_contact(&w, ob[0], ob[1], h, tau);
+        if (truth == HUGE_VAL) {
+            body a = *ob[0], b = *ob[1];
+            fly_felt(&w, &a, tau);
+            fly_felt(&w, &b, tau);
+            (i == 0 ? &a : &b)->slide = -1;
+            truth = tau + first_contact(&w, &a, &b, h, 5);
+        }
+        tried++;
+        if (truth < HUGE_VAL) collided++;
+        if (far > truth)
+            fail_msg("trial %d: far time %.9g s while sliding, but they touch at %.9g s (the slide "
+                     "ended at %.9g s)",
+                     k, far, truth, tau);
+        world_free(&w);
+    }
+    print_message("slides that end: %d trials, %d collided; %d steady slides' far times later\n", tried,
+                  collided, steadier);
+    assert_true(tried > trials / 3);
+    assert_true(collided > tried / 8); /* the test must exercise real collisions */
+    assert_true(steadier > tried / 2);
 }
 
 /* Body b flown h seconds in one flight, when it moves. */
@@ -430,6 +521,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(heap_keeps_its_order),
         cmocka_unit_test(predictions_are_never_late),
+        cmocka_unit_test(far_times_hold_when_a_slide_ends),
         cmocka_unit_test(kept_bounds_are_never_late),
         cmocka_unit_test(along_predictions_are_never_late),
         cmocka_unit_test(along_stops_at_the_speed_limit),
