@@ -17,8 +17,65 @@ typedef struct {
     double x, y;
 } p2;
 
+#define CONTACT_MAX_SUPPORT 256
+
+/* A hull of at most this many vertices is read in turn; a larger one (a
+ * superquadric's) is walked. */
+#define SUPPORT_SCAN 32
+
+/* The vertices of h (at most SUPPORT_SCAN) within tol of the furthest along dl
+ * (body axes), read in turn: their indices in idx, at most max; returns the count. */
+static int support_scan(const poly *h, vec3 dl, double tol, int *idx, int max)
+{
+    double x[SUPPORT_SCAN], best = -HUGE_VAL;
+    for (int i = 0; i < h->nv; i++) best = d_max(best, x[i] = v3_dot(h->v[i], dl));
+    int n = 0;
+    for (int i = 0; i < h->nv && n < max; i++)
+        if (x[i] >= best - tol) idx[n++] = i;
+    return n;
+}
+
+/* The same for any hull, by a walk: the furthest vertex is reached along edges
+ * that go further, as a linear function on a convex polyhedron has no other local
+ * maximum; and each vertex within tol of it has an edge to one further on, so
+ * they are all reached from it through such vertices.  0 when out of memory. */
+static int support_walk(const poly *h, vec3 dl, double tol, int *idx, int max)
+{
+    int top = 0;
+    double best = v3_dot(h->v[0], dl);
+    for (int from = -1; from != top;) {
+        from = top;
+        for (int k = h->vert_first[from]; k < h->vert_first[from + 1]; k++) {
+            const poly_edge *e = &h->e[h->vert_edge[k]];
+            int o = e->v[0] == from ? e->v[1] : e->v[0];
+            double x = v3_dot(h->v[o], dl);
+            if (x > best) {
+                best = x;
+                top = o;
+            }
+        }
+    }
+    unsigned char *seen = calloc((size_t)h->nv / 8 + 1, 1);
+    if (!seen) return 0;
+    int n = 0;
+    idx[n++] = top;
+    seen[top / 8] |= (unsigned char)(1u << top % 8);
+    for (int i = 0; i < n; i++) {
+        for (int k = h->vert_first[idx[i]]; k < h->vert_first[idx[i] + 1]; k++) {
+            const poly_edge *e = &h->e[h->vert_edge[k]];
+            int o = e->v[0] == idx[i] ? e->v[1] : e->v[0];
+            if (n == max || seen[o / 8] & 1u << o % 8 || v3_dot(h->v[o], dl) < best - tol) continue;
+            seen[o / 8] |= (unsigned char)(1u << o % 8);
+            idx[n++] = o;
+        }
+    }
+    free(seen);
+    return n;
+}
+
 /* Supporting points of b in direction d (world): those within tol of the furthest,
- * in plane coordinates (u, v).  Returns the count (at most max). */
+ * in plane coordinates (u, v).  Returns the count (at most max, itself at most
+ * CONTACT_MAX_SUPPORT; 0 when out of memory). */
 static int support_set(const body *b, vec3 d, vec3 u, vec3 v, double tol, p2 *out, int max)
 {
     if (b->sp.kind == SHAPE_SPHERE) {
@@ -28,13 +85,11 @@ static int support_set(const body *b, vec3 d, vec3 u, vec3 v, double tol, p2 *ou
     }
     const poly *h = b->shape.hull;
     vec3 dl = q_unrotate(b->q, d);
-    double best = -HUGE_VAL;
-    for (int i = 0; i < h->nv; i++) best = d_max(best, v3_dot(h->v[i], dl));
-    int n = 0;
-    for (int i = 0; i < h->nv && n < max; i++) {
-        if (v3_dot(h->v[i], dl) < best - tol) continue;
-        vec3 p = v3_add(b->x, q_rotate(b->q, h->v[i]));
-        out[n++] = (p2){v3_dot(p, u), v3_dot(p, v)};
+    int idx[CONTACT_MAX_SUPPORT];
+    int n = h->nv <= SUPPORT_SCAN ? support_scan(h, dl, tol, idx, max) : support_walk(h, dl, tol, idx, max);
+    for (int i = 0; i < n; i++) {
+        vec3 p = v3_add(b->x, q_rotate(b->q, h->v[idx[i]]));
+        out[i] = (p2){v3_dot(p, u), v3_dot(p, v)};
     }
     return n;
 }
@@ -140,8 +195,6 @@ static bool segment_overlap(const p2 *a, const p2 *b, double eps, p2 *mid)
     *mid = (p2){a[0].x + d.x * t, a[0].y + d.y * t};
     return true;
 }
-
-#define CONTACT_MAX_SUPPORT 256
 
 vec3 contact_point(const body *a, const body *b, const closest_result *r, double tol)
 {

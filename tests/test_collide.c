@@ -2,13 +2,16 @@
  *
  * Head-on collisions of unequal masses, bounce heights e^2 h, conservation of
  * momentum, angular momentum and energy in a closed system, an off-centre hit,
- * nothing through a plate, a box landing flat, Newton's cradle, rest; settling, a
- * rocking pillow and a stack, without storms of micro-collisions. */
+ * nothing through a plate, a box landing flat, a drum's contact region, Newton's
+ * cradle, rest; settling, a rocking pillow and a stack, without storms of
+ * micro-collisions. */
 #include "check.h"
 
 #include <stdlib.h>
 #include <string.h>
 
+#include "closest.h"
+#include "contact.h"
 #include "sim.h"
 #include "world.h"
 #include "worlds.h"
@@ -347,6 +350,65 @@ static void pillow_rocks_to_a_stop(void **state)
     world_free(&w);
 }
 
+/* The contact region of a superquadric drum (its hull walked, not read in turn)
+ * standing on its flat end on a box, anywhere and turned any way about its axis:
+ * the end is a regular polygon, so the contact point is on the drum's axis, and
+ * the drum stands.  Tilted onto its rim it touches at a vertex or an edge, at
+ * the rim's lowest point (found here by reading every vertex), and does not. */
+static void drum_contact_region(void **state)
+{
+    (void)state;
+    world w;
+    world_init(&w);
+    body *table = add_static_box(&w, "table", v3(1, 1, 0.1));
+    body *drum = add(&w, "drum", SHAPE_SUPERQUADRIC);
+    drum->sp.exp1 = 0.1;
+    drum->sp.exp2 = 1;
+    drum->sp.a1 = drum->sp.a2 = 0.1;
+    drum->sp.a3 = 0.15;
+    drum->sp.ures = 24;
+    drum->sp.vres = 12;
+    rebuild(drum);
+    const poly *h = drum->shape.hull;
+    assert_true(h->nv > 32); /* more than contact.c reads in turn */
+    double bottom = HUGE_VAL; /* the end's height below the centre */
+    for (int i = 0; i < h->nv; i++) bottom = fmin(bottom, h->v[i].z);
+    unsigned long long s = 41;
+    for (int k = 0; k < 40; k++) {
+        bool tilted = k % 2;
+        vec3 axis = tilted ? v3(urand(&s, -1, 1), urand(&s, -1, 1), 0) : v3(0, 0, 1);
+        double angle = tilted ? urand(&s, 0.2, 0.6) : urand(&s, 0, 6.3);
+        body_set_rotation(drum, axis, angle);
+        drum->x = v3(urand(&s, -0.5, 0.5), urand(&s, -0.5, 0.5), 0);
+        /* the lowest vertex, read from all of them; the drum put 1e-8 m above the table */
+        vec3 low = v3(0, 0, HUGE_VAL);
+        for (int i = 0; i < h->nv; i++) {
+            vec3 p = v3_add(drum->x, q_rotate(drum->q, h->v[i]));
+            if (p.z < low.z) low = p;
+        }
+        drum->x.z += 0.1 + 1e-8 - low.z;
+        low.z = 0.1 + 1e-8;
+        closest_result r = closest_query(drum, table, NULL);
+        assert_int_equal(r.status, CLOSEST_SEPARATED);
+        vec3 c = contact_point(drum, table, &r, 1e-6);
+        bool stands = contact_stable(drum, r.normal, 1e-6);
+        if (!tilted) {
+            assert_true(fabs(drum->x.z + bottom - 0.1) < 1e-7);
+            if (fabs(c.x - drum->x.x) > 1e-9 || fabs(c.y - drum->x.y) > 1e-9)
+                fail_msg("trial %d: contact at (%g, %g), the axis at (%g, %g)", k, c.x, c.y, drum->x.x,
+                         drum->x.y);
+            assert_true(stands);
+        } else {
+            /* a rim vertex, or the middle of a rim edge (0.1 * 2 pi / 24 long) */
+            if (hypot(c.x - low.x, c.y - low.y) > 0.5 * 0.1 * 2 * M_PI / 24 + 1e-9)
+                fail_msg("trial %d: contact at (%g, %g), the lowest vertex at (%g, %g)", k, c.x, c.y,
+                         low.x, low.y);
+            assert_false(stands);
+        }
+    }
+    world_free(&w);
+}
+
 /* A box dropped onto a box resting on the floor: both come to rest, the top one on
  * the bottom one, without a storm of collisions within the stack. */
 static void stack_comes_to_rest(void **state)
@@ -673,6 +735,7 @@ int main(void)
         cmocka_unit_test(box_dropped_on_its_corner_settles),
         cmocka_unit_test(tilted_box_settles_keeping_what_contact_keeps),
         cmocka_unit_test(pillow_rocks_to_a_stop),
+        cmocka_unit_test(drum_contact_region),
         cmocka_unit_test(stack_comes_to_rest),
         cmocka_unit_test(blow_on_a_stack_passes_to_the_floor),
         cmocka_unit_test(blow_on_a_slider_moves_it_along_the_floor),
