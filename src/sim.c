@@ -52,8 +52,13 @@ static void turn_principal(quat *qp, vec3 *pi, int k, double angle)
     case 1: *pi = v3(c * p.x - s * p.z, p.y, s * p.x + c * p.z); break;
     default: *pi = v3(c * p.x + s * p.y, -s * p.x + c * p.y, p.z); break;
     }
-    quat r = {hc, k == 0 ? hs : 0, k == 1 ? hs : 0, k == 2 ? hs : 0};
-    *qp = q_mul(*qp, r);
+    /* qp r, r = (hc, hs e_k): q_mul with r's two zero parts left out */
+    quat a = *qp;
+    switch (k) {
+    case 0: *qp = (quat){a.w * hc - a.x * hs, a.w * hs + a.x * hc, a.y * hc + a.z * hs, a.z * hc - a.y * hs}; break;
+    case 1: *qp = (quat){a.w * hc - a.y * hs, a.x * hc - a.z * hs, a.w * hs + a.y * hc, a.x * hs + a.z * hc}; break;
+    default: *qp = (quat){a.w * hc - a.z * hs, a.x * hc + a.y * hs, a.y * hc - a.x * hs, a.w * hs + a.z * hc}; break;
+    }
 }
 
 /* The same by the angle tau * pi_k / I_k, as the body turns about axis k alone. */
@@ -69,6 +74,19 @@ static int symmetry_axis(vec3 in)
     return in.x == in.y ? 2 : in.y == in.z ? 0 : in.x == in.z ? 1 : -1;
 }
 
+/* True when b's principal axes are its own (as for every box). */
+static bool aligned(const body *b)
+{
+    quat p = b->q_principal;
+    return p.w == 1 && p.x == 0 && p.y == 0 && p.z == 0;
+}
+
+/* b's principal axes to world axes. */
+static quat principal_frame(const body *b)
+{
+    return aligned(b) ? b->q : q_mul(b->q, b->q_principal);
+}
+
 /* Turns b freely for h seconds, and sets its angular velocity there: w = L / I in
  * principal axes, turned to world axes.  A body with two equal principal moments
  * I_p (a symmetric top; a sphere or a cube has three) turns exactly: about L at
@@ -78,8 +96,9 @@ static void rotate_free(body *b, double h)
 {
     double len = v3_len(b->L);
     if (len == 0) return;
-    quat qp = q_mul(b->q, b->q_principal); /* principal axes to world */
-    vec3 pi = q_unrotate(qp, b->L);        /* L in principal axes */
+    bool own = aligned(b);
+    quat qp = own ? b->q : q_mul(b->q, b->q_principal); /* principal axes to world */
+    vec3 pi = q_unrotate(qp, b->L);                     /* L in principal axes */
     vec3 in = b->I_princ;
     int k = symmetry_axis(in);
     if (k >= 0) {
@@ -94,7 +113,7 @@ static void rotate_free(body *b, double h)
         rotate_about_principal(&qp, &pi, 0, 0.5 * h, in);
     }
     qp = q_normalize(qp);
-    b->q = q_mul(qp, q_conj(b->q_principal));
+    b->q = own ? qp : q_mul(qp, q_conj(b->q_principal));
     b->w = q_rotate(qp, v3(pi.x / in.x, pi.y / in.y, pi.z / in.z));
 }
 
@@ -136,7 +155,7 @@ void sim_flight(body *b, double h, vec3 a, double max_linear, double max_angular
         b->q = q_normalize(q_mul(q_axis_angle(b->slide_n, omega * h), b->q));
         b->rot_given = false;
         b->w = v3_scale(b->slide_n, omega);
-        quat qp = q_mul(b->q, b->q_principal); /* L = I w, in principal axes */
+        quat qp = principal_frame(b); /* L = I w, in principal axes */
         vec3 wp = q_unrotate(qp, b->w), in = b->I_princ;
         b->L = q_rotate(qp, v3(wp.x * in.x, wp.y * in.y, wp.z * in.z));
     } else if (v3_len2(b->L) != 0) {
@@ -144,8 +163,11 @@ void sim_flight(body *b, double h, vec3 a, double max_linear, double max_angular
         b->rot_given = false;
         limit_speeds(b, max_linear, max_angular);
     }
-    /* the centre of mass moved by d; the origin follows the new orientation */
-    b->x = v3_sub(v3_add(c0, d), q_rotate(b->q, b->shape.mass.com));
+    /* the centre of mass moved by d; the origin follows the new orientation (at
+     * the centre of mass, as in every shape vroc builds, it moved so too) */
+    vec3 com = b->shape.mass.com;
+    b->x = v3_add(c0, d);
+    if (com.x != 0 || com.y != 0 || com.z != 0) b->x = v3_sub(b->x, q_rotate(b->q, com));
 }
 
 /* ------------------------------------------------------------ pairs */
