@@ -125,12 +125,6 @@ mat3 body_inertia_world(const body *b)
     return m3_mul(r, m3_mul(b->I_body, m3_transpose(r)));
 }
 
-mat3 body_inertia_world_inv(const body *b)
-{
-    mat3 r = m3_from_quat(b->q);
-    return m3_mul(r, m3_mul(b->I_body_inv, m3_transpose(r)));
-}
-
 void body_set_angular_vel(body *b, vec3 w)
 {
     b->w = w;
@@ -147,9 +141,15 @@ void body_set_rotation(body *b, vec3 axis, double angle)
     body_set_angular_vel(b, b->w);
 }
 
+vec3 body_inertia_inv_mulv(const body *b, vec3 v)
+{
+    if (body_is_static(b)) return v3(0, 0, 0);
+    return q_rotate(b->q, m3_mulv(b->I_body_inv, q_unrotate(b->q, v)));
+}
+
 void body_update_w(body *b)
 {
-    b->w = body_is_static(b) ? v3(0, 0, 0) : m3_mulv(body_inertia_world_inv(b), b->L);
+    b->w = body_inertia_inv_mulv(b, b->L);
 }
 
 double body_energy(const body *b)

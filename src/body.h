@@ -103,9 +103,12 @@ static inline vec3 body_com(const body *b)
     return v3_add(b->x, q_rotate(b->q, c));
 }
 
-/* The world inertia tensor R I_body R^T and its inverse. */
+/* The world inertia tensor R I_body R^T. */
 mat3 body_inertia_world(const body *b);
-mat3 body_inertia_world_inv(const body *b);
+
+/* Its inverse times v, without forming it: v turned to body axes, times the
+ * inverse body tensor, turned back (zero for a static body). */
+vec3 body_inertia_inv_mulv(const body *b, vec3 v);
 
 /* Sets the angular velocity (world axes) as typed: w and L = I_world w. */
 void body_set_angular_vel(body *b, vec3 w);

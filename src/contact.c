@@ -272,7 +272,7 @@ double contact_closing_speed(const body *a, const body *b, vec3 p, vec3 n)
 static double angular_term(const body *b, vec3 r, vec3 n)
 {
     if (body_is_static(b)) return 0;
-    vec3 t = m3_mulv(body_inertia_world_inv(b), v3_cross(r, n));
+    vec3 t = body_inertia_inv_mulv(b, v3_cross(r, n));
     return v3_dot(n, v3_cross(t, r));
 }
 

@@ -502,7 +502,7 @@ static vec3 point_accel(const world *w, const body *b, vec3 p)
     vec3 a = world_body_accel(w, b);
     if (v3_len2(b->w) == 0) return a;
     vec3 r = v3_sub(p, body_com(b));
-    vec3 dw = v3_neg(m3_mulv(body_inertia_world_inv(b), v3_cross(b->w, b->L)));
+    vec3 dw = v3_neg(body_inertia_inv_mulv(b, v3_cross(b->w, b->L)));
     return v3_add(a, v3_add(v3_cross(b->w, v3_cross(b->w, r)), v3_cross(dw, r)));
 }
 
