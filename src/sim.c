@@ -1008,6 +1008,10 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
     if (!pair_moves(w, p)) return HUGE_VAL;
     if (w->set.collision_heap && (slides_clear(w, p->a, p->b) || slides_clear(w, p->b, p->a)))
         return HUGE_VAL;
+    /* found touching in this step from the same flights (flight numbers are new
+     * each step), it touches still, and its first contact is known: no query, and
+     * no far bound (it is never later than that contact, within the step) */
+    bool known = p->toi_a == w->snap_id[p->a] && p->toi_b == w->snap_id[p->b];
     /* far apart: the bounding spheres' gap bounds the distance from below, and is
      * enough for a prediction beyond the frame (part of the schedule: without it
      * every pair gets its closest-feature check, as in the thesis's Table 5.3).
@@ -1015,7 +1019,7 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
      * from there holds through a collision later in the step that turns them
      * back, so that such a collision leaves the pair's time as it is. */
     p->far = false;
-    if (w->set.collision_heap) {
+    if (w->set.collision_heap && !known) {
         const body *a = at_start(w, p->a), *b = at_start(w, p->b);
         bool turn_a, turn_b;
         double from = flights_start(w, p), gap = bound_gap(a, b, &turn_a, &turn_b);
@@ -1037,9 +1041,6 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
     p->speed_a = v3_len(w->bodies[p->a]->v);
     p->speed_b = v3_len(w->bodies[p->b]->v);
     const body *a = w->bodies[p->a], *b = w->bodies[p->b];
-    /* found touching in this step from the same flights (flight numbers are new
-     * each step), it touches still, and its first contact is known: no query */
-    bool known = p->toi_a == w->snap_id[p->a] && p->toi_b == w->snap_id[p->b];
     closest_result r = {.status = CLOSEST_PENETRATING};
     if (!known) r = query_apart(w, p, a, b);
     if (r.status != CLOSEST_PENETRATING) {
