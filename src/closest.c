@@ -303,27 +303,6 @@ static double seg_seg_dist2(vec3 p0, vec3 p1, vec3 q0, vec3 q1)
     return v3_len2(v3_sub(v3_lerp(p0, p1, s), v3_lerp(q0, q1, t)));
 }
 
-/* Vertex of p furthest along d, by strict ascent over the vertex graph from j (on a
- * convex polyhedron a local maximum is global). */
-static int climb(const poly *p, vec3 d, int j)
-{
-    for (;;) {
-        double best = v3_dot(p->v[j], d);
-        int bj = -1;
-        for (int k = p->vert_first[j]; k < p->vert_first[j + 1]; k++) {
-            const poly_edge *e = &p->e[p->vert_edge[k]];
-            int o = e->v[0] == j ? e->v[1] : e->v[0];
-            double x = v3_dot(p->v[o], d);
-            if (x > best) {
-                best = x;
-                bj = o;
-            }
-        }
-        if (bj < 0) return j;
-        j = bj;
-    }
-}
-
 /* ---- the walk ---- */
 
 enum { W_CONTINUE, W_DONE, W_PENETRATION, W_FAULT };
@@ -899,7 +878,7 @@ static void walk_scratch(walk *w, const closest_object *a, const closest_object 
     if (!(v3_len2(d) > 0)) d = v3(1, 0, 0);
     for (int k = 0; k < 2; k++) {
         vec3 dk = m3_tmulv(&w->R[k], k == 0 ? d : v3_neg(d));
-        w->f[k] = feat(CLOSEST_VERTEX, w->p[k] ? climb(w->p[k], dk, 0) : 0);
+        w->f[k] = feat(CLOSEST_VERTEX, w->p[k] ? poly_climb(w->p[k], dk, 0) : 0);
     }
 }
 
@@ -969,7 +948,7 @@ static void sat_estimate(const walk *w, closest_result *r)
         const poly *ps = w->p[s], *po = w->p[o];
         for (int i = 0; i < ps->nf; i++) {
             int g = w->h[s]->face_order[i];
-            j = climb(po, dir_to(w, o, v3_neg(ps->f[g].n)), j);
+            j = poly_climb(po, dir_to(w, o, v3_neg(ps->f[g].n)), j);
             double ov = ps->f[g].d - v3_dot(ps->f[g].n, to(w, s, po->v[j]));
             if (ov < best) {
                 best = ov;
@@ -989,8 +968,8 @@ static void sat_estimate(const walk *w, closest_result *r)
             if (v3_len(c) < 1e-9) continue;
             for (int sg = 0; sg < 2; sg++) {
                 vec3 ax = sg ? v3_neg(v3_norm(c)) : v3_norm(c);
-                ja = climb(w->p[0], v3_neg(ax), ja);
-                jb = climb(w->p[1], dir_to(w, 1, ax), jb);
+                ja = poly_climb(w->p[0], v3_neg(ax), ja);
+                jb = poly_climb(w->p[1], dir_to(w, 1, ax), jb);
                 double ov = v3_dot(ax, to(w, 0, w->p[1]->v[jb])) - v3_dot(ax, w->p[0]->v[ja]);
                 if (ov < best) {
                     best = ov;

@@ -36,25 +36,13 @@ static int support_scan(const poly *h, vec3 dl, double tol, int *idx, int max)
 }
 
 /* The same for any hull, by a walk: the furthest vertex is reached along edges
- * that go further, as a linear function on a convex polyhedron has no other local
- * maximum; and each vertex within tol of it has an edge to one further on, so
- * they are all reached from it through such vertices.  0 when out of memory. */
+ * that go further (poly_climb); and each vertex within tol of it has an edge to
+ * one further on, so they are all reached from it through such vertices.  0 when
+ * out of memory. */
 static int support_walk(const poly *h, vec3 dl, double tol, int *idx, int max)
 {
-    int top = 0;
-    double best = v3_dot(h->v[0], dl);
-    for (int from = -1; from != top;) {
-        from = top;
-        for (int k = h->vert_first[from]; k < h->vert_first[from + 1]; k++) {
-            const poly_edge *e = &h->e[h->vert_edge[k]];
-            int o = e->v[0] == from ? e->v[1] : e->v[0];
-            double x = v3_dot(h->v[o], dl);
-            if (x > best) {
-                best = x;
-                top = o;
-            }
-        }
-    }
+    int top = poly_climb(h, dl, 0);
+    double best = v3_dot(h->v[top], dl);
     unsigned char *seen = calloc((size_t)h->nv / 8 + 1, 1);
     if (!seen) return 0;
     int n = 0;

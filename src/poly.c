@@ -55,6 +55,25 @@ static void set_err(char *err, size_t errlen, const char *fmt, ...)
 
 /* ---- allocation ---- */
 
+int poly_climb(const poly *p, vec3 d, int j)
+{
+    for (;;) {
+        double best = v3_dot(p->v[j], d);
+        int bj = -1;
+        for (int k = p->vert_first[j]; k < p->vert_first[j + 1]; k++) {
+            const poly_edge *e = &p->e[p->vert_edge[k]];
+            int o = e->v[0] == j ? e->v[1] : e->v[0];
+            double x = v3_dot(p->v[o], d);
+            if (x > best) {
+                best = x;
+                bj = o;
+            }
+        }
+        if (bj < 0) return j;
+        j = bj;
+    }
+}
+
 void poly_free(poly *p)
 {
     if (!p) return;

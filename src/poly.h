@@ -76,6 +76,10 @@ poly *poly_hull_merge(const vec3 *pts, int n, double angle, char *err, size_t er
 /* A deep copy (NULL on allocation failure). */
 poly *poly_copy(const poly *p);
 
+/* The vertex of p furthest along d, by strict ascent over the vertex graph from
+ * vertex j (on a convex polyhedron a local maximum is global). */
+int poly_climb(const poly *p, vec3 d, int j);
+
 void poly_free(poly *p);
 
 /* Volume, centre of mass and inertia tensor of the solid polyhedron at unit density
