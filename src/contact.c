@@ -144,8 +144,9 @@ static bool polygon_centroid(const p2 *p, int n, p2 *c)
     return true;
 }
 
-/* Part of segment s0-s1 inside convex polygon poly (ccw); false when none. */
-static bool clip_segment(p2 s0, p2 s1, const p2 *poly, int n, p2 *mid)
+/* Part of segment s0-s1 inside convex polygon poly (ccw): its two ends in out and
+ * its middle in mid; false when none. */
+static bool clip_segment(p2 s0, p2 s1, const p2 *poly, int n, p2 *out, p2 *mid)
 {
     double t0 = 0, t1 = 1;
     for (int i = 0; i < n; i++) {
@@ -156,14 +157,16 @@ static bool clip_segment(p2 s0, p2 s1, const p2 *poly, int n, p2 *mid)
         else if (d1 < 0) t1 = d_min(t1, d0 / (d0 - d1));
     }
     if (t0 > t1) return false;
+    out[0] = (p2){s0.x + t0 * (s1.x - s0.x), s0.y + t0 * (s1.y - s0.y)};
+    out[1] = (p2){s0.x + t1 * (s1.x - s0.x), s0.y + t1 * (s1.y - s0.y)};
     double t = 0.5 * (t0 + t1);
     *mid = (p2){s0.x + t * (s1.x - s0.x), s0.y + t * (s1.y - s0.y)};
     return true;
 }
 
-/* Overlap of two nearly parallel segments: its middle; false when not parallel or
- * apart. */
-static bool segment_overlap(const p2 *a, const p2 *b, double eps, p2 *mid)
+/* Overlap of two nearly parallel segments: its two ends in out and its middle in
+ * mid; false when not parallel or apart. */
+static bool segment_overlap(const p2 *a, const p2 *b, double eps, p2 *out, p2 *mid)
 {
     p2 d = {a[1].x - a[0].x, a[1].y - a[0].y};
     double l = sqrt(d.x * d.x + d.y * d.y);
@@ -179,50 +182,101 @@ static bool segment_overlap(const p2 *a, const p2 *b, double eps, p2 *mid)
     double t1 = d.x * (b[1].x - a[0].x) + d.y * (b[1].y - a[0].y);
     double lo = d_max(s0, d_min(t0, t1)), hi = d_min(s1, d_max(t0, t1));
     if (lo > hi) return false;
+    out[0] = (p2){a[0].x + d.x * lo, a[0].y + d.y * lo};
+    out[1] = (p2){a[0].x + d.x * hi, a[0].y + d.y * hi};
     double t = 0.5 * (lo + hi);
     *mid = (p2){a[0].x + d.x * t, a[0].y + d.y * t};
     return true;
 }
 
-vec3 contact_point(const body *a, const body *b, const closest_result *r, double tol)
+/* The contact region of a and b (see contact_point), in the contact plane's
+ * coordinates (u, v), the plane at height h along the normal. */
+typedef struct {
+    vec3 u, v;
+    double h;
+    int n;    /* corners: 2 a segment's ends, >= 3 a polygon's (ccw); 0 no overlap */
+    p2 *p;    /* the corners */
+    p2 c;     /* the centre */
+    p2 *heap; /* what to free */
+} region;
+
+/* Finds the region: false when out of memory.  n is 0 when the features do not
+ * overlap, or when one is a vertex or a sphere: the midpoint of the closest points
+ * is the contact point then. */
+static bool region_of(const body *a, const body *b, const closest_result *r, double tol,
+                      region *z)
 {
     vec3 n = r->normal;
-    vec3 mid = v3_scale(v3_add(r->pa, r->pb), 0.5);
+    z->n = 0;
+    z->heap = NULL;
     /* a sphere touches a convex object at one point */
-    if (a->sp.kind == SHAPE_SPHERE || b->sp.kind == SHAPE_SPHERE) return mid;
-    vec3 u = v3_norm(fabs(n.x) < 0.6 ? v3_cross(n, v3(1, 0, 0)) : v3_cross(n, v3(0, 1, 0)));
-    vec3 v = v3_cross(n, u);
-    p2 *sa = malloc(4 * CONTACT_MAX_SUPPORT * sizeof *sa);
-    if (!sa) return mid;
+    if (a->sp.kind == SHAPE_SPHERE || b->sp.kind == SHAPE_SPHERE) return true;
+    z->u = v3_norm(fabs(n.x) < 0.6 ? v3_cross(n, v3(1, 0, 0)) : v3_cross(n, v3(0, 1, 0)));
+    z->v = v3_cross(n, z->u);
+    z->h = 0.5 * v3_dot(v3_add(r->pa, r->pb), n);
+    p2 *sa = malloc(12 * CONTACT_MAX_SUPPORT * sizeof *sa);
+    if (!sa) return false;
+    z->heap = sa;
     p2 *sb = sa + 2 * CONTACT_MAX_SUPPORT;
+    p2 *buf[2] = {sb + 2 * CONTACT_MAX_SUPPORT, sb + 6 * CONTACT_MAX_SUPPORT};
+    z->p = buf[0];
     /* a's features facing b lie along -n; b's facing a along +n */
-    int na = support_set(a, v3_neg(n), u, v, tol, sa, CONTACT_MAX_SUPPORT);
-    int nb = support_set(b, n, u, v, tol, sb, CONTACT_MAX_SUPPORT);
+    int na = support_set(a, v3_neg(n), z->u, z->v, tol, sa, CONTACT_MAX_SUPPORT);
+    int nb = support_set(b, n, z->u, z->v, tol, sb, CONTACT_MAX_SUPPORT);
     double eps = 1e-12 * (a->shape.r_out + b->shape.r_out) * (a->shape.r_out + b->shape.r_out);
     na = hull2(sa, na, eps);
     nb = hull2(sb, nb, eps);
-    p2 c;
-    bool found = false;
     if (na >= 3 && nb >= 3) {
-        p2 buf[2][4 * CONTACT_MAX_SUPPORT];
-        int m = na;
+        int m = na, cur = 0;
         for (int i = 0; i < m; i++) buf[0][i] = sa[i];
-        int cur = 0;
         for (int i = 0; i < nb && m > 0; i++) {
             m = clip_poly(buf[cur], m, sb[i], sb[(i + 1) % nb], buf[1 - cur]);
             cur = 1 - cur;
         }
-        found = m >= 3 && polygon_centroid(buf[cur], m, &c);
+        z->p = buf[cur];
+        z->n = m >= 3 && polygon_centroid(z->p, m, &z->c) ? m : 0;
     } else if (na == 2 && nb >= 3) {
-        found = clip_segment(sa[0], sa[1], sb, nb, &c);
+        z->n = clip_segment(sa[0], sa[1], sb, nb, z->p, &z->c) ? 2 : 0;
     } else if (nb == 2 && na >= 3) {
-        found = clip_segment(sb[0], sb[1], sa, na, &c);
+        z->n = clip_segment(sb[0], sb[1], sa, na, z->p, &z->c) ? 2 : 0;
     } else if (na == 2 && nb == 2) {
-        found = segment_overlap(sa, sb, sqrt(eps) + tol, &c);
+        z->n = segment_overlap(sa, sb, sqrt(eps) + tol, z->p, &z->c) ? 2 : 0;
     }
-    free(sa);
-    if (!found) return mid;
-    return v3_add(v3_add(v3_scale(u, c.x), v3_scale(v, c.y)), v3_scale(n, v3_dot(mid, n)));
+    return true;
+}
+
+/* Point c of the region's plane, in world axes (n = u x v). */
+static vec3 region_world(const region *z, vec3 n, p2 c)
+{
+    return v3_add(v3_add(v3_scale(z->u, c.x), v3_scale(z->v, c.y)), v3_scale(n, z->h));
+}
+
+vec3 contact_point(const body *a, const body *b, const closest_result *r, double tol)
+{
+    region z;
+    vec3 p = v3_scale(v3_add(r->pa, r->pb), 0.5);
+    if (region_of(a, b, r, tol, &z) && z.n > 0) p = region_world(&z, r->normal, z.c);
+    free(z.heap);
+    return p;
+}
+
+vec3 contact_closing_corner(const body *a, const body *b, const closest_result *r, double tol,
+                            vec3 p)
+{
+    region z;
+    if (region_of(a, b, r, tol, &z)) {
+        double best = 0;
+        for (int i = 0; i < z.n; i++) {
+            vec3 c = region_world(&z, r->normal, z.p[i]);
+            double s = contact_closing_speed(a, b, c, r->normal);
+            if (s > best) {
+                best = s;
+                p = c;
+            }
+        }
+    }
+    free(z.heap);
+    return p;
 }
 
 bool contact_stable(const body *m, vec3 n, double tol)

@@ -24,6 +24,13 @@ typedef struct {
  * within tol of the contact plane, projected onto that plane. */
 vec3 contact_point(const body *a, const body *b, const closest_result *r, double tol);
 
+/* Of the corners of that contact region (the ends of a segment, the vertices of a
+ * polygon), the one where a and b close fastest along r->normal; p when none
+ * closes.  For a region whose centre moves apart while a corner of it closes: a
+ * box turning as it lands on an edge strikes with the edge's lower end. */
+vec3 contact_closing_corner(const body *a, const body *b, const closest_result *r, double tol,
+                            vec3 p);
+
 /* True when m can stand on a support below it, n pointing from the support to m:
  * m is a sphere, or its features facing the support form a polygon (tolerance tol)
  * that holds the projection of m's centre of mass. */

@@ -852,7 +852,12 @@ static void collide(world *w, pair *p)
     }
     if (r.status == CLOSEST_INVALID) return;
     double scale = a->shape.r_out + b->shape.r_out;
-    vec3 pt = contact_point(a, b, &r, 1e-6 * scale + d_max(0, -r.distance));
+    double tol = 1e-6 * scale + d_max(0, -r.distance);
+    vec3 pt = contact_point(a, b, &r, tol);
+    /* the centre of the region moves apart, but a corner of it closes (a box
+     * turning as it lands on an edge): that corner strikes, or nothing would stop
+     * it */
+    if (contact_closing_speed(a, b, pt, r.normal) <= 0) pt = contact_closing_corner(a, b, &r, tol, pt);
     double e = d_min(a->elasticity, b->elasticity);
     vec3 g = world_accel(w);
     vec3 up = v3_len2(g) > 0 ? v3_neg(v3_norm(g)) : v3(0, 0, 0);
