@@ -632,10 +632,13 @@ static void slider_leaves_the_table_at_its_edge(void **state)
     assert_int_equal(ball->slide, 0);
     double z = ball->x.z;
     assert_near(z, 0.15, 1e-6);
+    long checks = w.st.pair_checks;
     while (ball->x.x < 0.45) { /* its centre over the table */
         frames(&w, 1);
         assert_int_equal(ball->slide, 0);
         assert_true(ball->x.z == z);
+        /* over the face, the face is nearest: no query, up to the edge */
+        assert_int_equal(w.st.pair_checks, checks);
     }
     frames(&w, 10); /* half a second later it has left the table */
     print_message("slider: at x %.3f z %.3f after the edge, slide %d\n", ball->x.x, ball->x.z, ball->slide);
