@@ -506,6 +506,52 @@ static vec3 point_accel(const world *w, const body *b, vec3 p)
     return v3_add(a, v3_add(v3_cross(b->w, v3_cross(b->w, r)), v3_cross(dw, r)));
 }
 
+/* How body b moves at that instant in free flight, for the velocity and the
+ * acceleration of its points (see point_accel). */
+typedef struct {
+    vec3 c, v, w, a, dw; /* centre of mass, its velocity, spin, acceleration; dw/dt */
+} flight_motion;
+
+static flight_motion motion_of(const world *w, const body *b)
+{
+    flight_motion m = {body_com(b), v3(0, 0, 0), v3(0, 0, 0), v3(0, 0, 0), v3(0, 0, 0)};
+    if (body_is_static(b) || b->state == STATE_RESTING) return m;
+    m.v = b->v;
+    m.w = b->w;
+    if (b->state != STATE_DYNAMIC) return m;
+    m.a = world_body_accel(w, b);
+    if (v3_len2(b->w) != 0) m.dw = v3_neg(body_inertia_inv_mulv(b, v3_cross(b->w, b->L)));
+    return m;
+}
+
+/* The first time at which one of polyhedron m's vertices, closing on the plane
+ * through p with unit normal n (towards m) at its speed and acceleration along n
+ * now (m moving as mm, the other object as mo), would have come within 1 - f of
+ * its height above the plane (as the Newton step of time_of_impact, for every
+ * vertex); HUGE_VAL when none comes down.  A turning object that has just struck
+ * with one corner comes down next with another. */
+static double vertex_plane_time(const body *m, const flight_motion *mm, const flight_motion *mo,
+                                vec3 p, vec3 n, double f)
+{
+    const poly *h = m->shape.hull;
+    double best = HUGE_VAL;
+    for (int i = 0; i < h->nv; i++) {
+        vec3 x = v3_add(m->x, q_rotate(m->q, h->v[i]));
+        double height = v3_dot(v3_sub(x, p), n);
+        vec3 ra = v3_sub(x, mm->c), rb = v3_sub(x, mo->c);
+        vec3 va = v3_add(mm->v, v3_cross(mm->w, ra)), vb = v3_add(mo->v, v3_cross(mo->w, rb));
+        vec3 aa = v3_add(mm->a, v3_add(v3_cross(mm->w, v3_cross(mm->w, ra)), v3_cross(mm->dw, ra)));
+        vec3 ab = v3_add(mo->a, v3_add(v3_cross(mo->w, v3_cross(mo->w, rb)), v3_cross(mo->dw, rb)));
+        double s = -v3_dot(v3_sub(va, vb), n), c = -v3_dot(v3_sub(aa, ab), n);
+        double D = f * height;
+        if (f > 0.99) D = d_max(D, height - 0.25 * SIM_SEPARATION);
+        double disc = s * s + 2 * c * D;
+        if (disc < 0 || !(s + sqrt(disc) > 0)) continue;
+        best = d_min(best, 2 * D / (s + sqrt(disc)));
+    }
+    return best;
+}
+
 /* Body b (object i, flown) as it moves at that instant: a flight turns an object
  * at the angular momentum it starts with, and only its end is held to
  * max_angular, so the spin that moves it is the start's.  b itself, or scratch
@@ -570,6 +616,20 @@ static double time_of_impact(world *w, pair *p, double lo, double hi)
         double disc = s * s + 2 * c * D, t = 0.5 * (lo + hi);
         bool newton = !overshot && disc >= 0 && s + sqrt(disc) > 0;
         if (newton) t = lo + 2 * D / (s + sqrt(disc));
+        /* just set apart after their own collision, a small polyhedron on the
+         * other's face: the corner that comes down next, not only the closest */
+        if (!overshot && r.distance <= 2 * SIM_SEPARATION) {
+            double tv = HUGE_VAL;
+            flight_motion fa = motion_of(w, ma), fb = motion_of(w, mb);
+            if (r.fb.kind == CLOSEST_FACE && a->shape.hull && a->shape.hull->nv <= 32)
+                tv = vertex_plane_time(a, &fa, &fb, r.pb, r.normal, f);
+            else if (r.fa.kind == CLOSEST_FACE && b->shape.hull && b->shape.hull->nv <= 32)
+                tv = vertex_plane_time(b, &fb, &fa, r.pa, v3_neg(r.normal), f);
+            if (tv < HUGE_VAL && (!newton || lo + tv < t)) {
+                t = lo + tv;
+                newton = true;
+            }
+        }
         t = d_max(t, safe);
         if (!(t < hi)) {
             newton = false;
