@@ -63,6 +63,8 @@ typedef struct body {
     bool slide_steady; /* the slide is on a face of a still support, turning about
                         * its normal only (or not at all, or a ball): likely to
                         * last, so far predictions count its lesser acceleration */
+    double slide_foot; /* how far across slide_n its features on the support reach
+                        * from its centre of mass (contact_footprint) */
     long shifts;       /* how many times collisions set it apart (sim.c) */
     int pinned_by[2];  /* the last two still objects it struck (sim.c), or -1; */
     vec3 pinned_n[2];  /*   those contacts' normals, towards this body, */

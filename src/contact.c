@@ -298,6 +298,20 @@ bool contact_stable(const body *m, vec3 n, double tol)
     return inside;
 }
 
+double contact_footprint(const body *m, vec3 n, double tol)
+{
+    vec3 u = v3_norm(fabs(n.x) < 0.6 ? v3_cross(n, v3(1, 0, 0)) : v3_cross(n, v3(0, 1, 0)));
+    vec3 v = v3_cross(n, u);
+    p2 *s = malloc(CONTACT_MAX_SUPPORT * sizeof *s);
+    if (!s) return HUGE_VAL;
+    int k = support_set(m, v3_neg(n), u, v, tol, s, CONTACT_MAX_SUPPORT);
+    vec3 c = body_com(m);
+    double cu = v3_dot(c, u), cv = v3_dot(c, v), r = k > 0 ? 0 : HUGE_VAL;
+    for (int i = 0; i < k; i++) r = d_max(r, hypot(s[i].x - cu, s[i].y - cv));
+    free(s);
+    return r;
+}
+
 vec3 contact_point_velocity(const body *b, vec3 p)
 {
     if (body_is_static(b) || b->state == STATE_RESTING) return v3(0, 0, 0);

@@ -36,6 +36,11 @@ vec3 contact_closing_corner(const body *a, const body *b, const closest_result *
  * that holds the projection of m's centre of mass. */
 bool contact_stable(const body *m, vec3 n, double tol);
 
+/* How far across n the features of m facing along -n (within tol of the furthest)
+ * reach from its centre of mass: the radius of the circle about it that holds
+ * what m stands on, however it turns about n (0 for a ball). */
+double contact_footprint(const body *m, vec3 n, double tol);
+
 /* The pose in which m, a polyhedron touching a support below it (n from the support
  * to m), would come to lie on one of its faces: the face that m can stand on (its
  * centre of mass over the face) whose outward normal is nearest -n, within

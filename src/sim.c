@@ -755,6 +755,7 @@ static void stand(world *w, body *m, const body *s, int si, vec3 n, bool face, c
         if (vn > 0) m->v = v3_mad(m->v, n, -vn);
         m->slide_steady = face && s->state != STATE_DYNAMIC &&
                         (v3_len2(m->L) == 0 || spins_on_support(m) || turns_in_place(m));
+        m->slide_foot = contact_footprint(m, n, 1e-6 * (m->shape.r_out + s->shape.r_out));
     }
 }
 
@@ -996,9 +997,10 @@ static bool slides_clear(const world *w, int mi, int si)
 
 /* True when object i slides on a face of a still box in a way that keeps it
  * there: as slides_clear allows, along the face, the normal one of the box's
- * axes, and its bounding sphere within the face's sides (a ball: its centre, for
- * over the face the face is nearest).  Then the contact is as it was, and needs
- * no query. */
+ * axes, and what it stands on within the face's sides (the circle of its
+ * footprint, body.slide_foot, which no turn about the normal changes; a ball's
+ * is its centre, over the face the face is nearest).  Then the contact is as it
+ * was, and needs no query: the rest of it is further from the face's plane. */
 static bool on_the_face(const world *w, int i)
 {
     const body *m = w->bodies[i], *s = w->bodies[m->slide];
@@ -1006,7 +1008,7 @@ static bool on_the_face(const world *w, int i)
         v3_dot(m->v, m->slide_n) > 1e-12) /* rising off it */
         return false;
     vec3 n = q_unrotate(s->q, m->slide_n), p = q_unrotate(s->q, v3_sub(body_com(m), s->x));
-    double r = m->sp.kind == SHAPE_SPHERE ? 0 : m->shape.r_out;
+    double r = m->slide_foot;
     vec3 lo = s->shape.box_lo, hi = s->shape.box_hi;
     if (fabs(n.x) > 1 - 1e-9)
         return p.y - r >= lo.y && p.y + r <= hi.y && p.z - r >= lo.z && p.z + r <= hi.z;

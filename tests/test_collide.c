@@ -3,9 +3,9 @@
  * Head-on collisions of unequal masses, bounce heights e^2 h, conservation of
  * momentum, angular momentum and energy in a closed system, an off-centre hit,
  * nothing through a plate, a box landing flat, a drum's contact region, a box
- * turning onto an edge, a block rocking from corner to corner, Newton's cradle,
- * rest; settling, a rocking pillow and a stack, without storms of
- * micro-collisions. */
+ * turning onto an edge, a block rocking from corner to corner, sliders leaving a
+ * table, Newton's cradle, rest; settling, a rocking pillow and a stack, without
+ * storms of micro-collisions. */
 #include "check.h"
 
 #include <stdlib.h>
@@ -686,6 +686,39 @@ static void slider_leaves_the_table_at_its_edge(void **state)
     world_free(&w);
 }
 
+/* A box sliding flat, turning about the vertical, needs no query while what it
+ * stands on (its bottom face, within 0.1414 m of its centre however it turns)
+ * is over the table, though its bounding sphere (0.1732 m) passes the edge first;
+ * past the edge it tips and leaves. */
+static void box_slides_to_the_edge_without_queries(void **state)
+{
+    (void)state;
+    world w;
+    world_init(&w);
+    w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
+    w.set.time_step = 0.01;
+    add_static_box(&w, "table", v3(0.5, 0.5, 0.05)); /* top at z = 0.05, edge at x = 0.5 */
+    body *box = add_box(&w, "box", v3(0.1, 0.1, 0.1));
+    box->elasticity = 0;
+    box->x = v3(-0.3, 0, 0.15 + 1e-6);
+    box->v = v3(1, 0, 0);
+    body_set_angular_vel(box, v3(0, 0, 2));
+    frames(&w, 2);
+    assert_int_equal(box->slide, 0);
+    assert_near(box->slide_foot, 0.1 * sqrt(2), 1e-9);
+    long checks = w.st.pair_checks;
+    while (box->x.x < 0.345) { /* to x = 0.35: its footprint to 0.4914 */
+        frames(&w, 1);
+        assert_int_equal(box->slide, 0);
+        assert_near(box->x.z, 0.15, 1e-6);
+        assert_int_equal(w.st.pair_checks, checks);
+    }
+    frames(&w, 60);
+    assert_int_equal(box->slide, -1);
+    assert_true(box->x.z < 0);
+    world_free(&w);
+}
+
 /* No force: a box strikes a wall and stops there (restitution 0 between them);
  * 5 ms later a heavy ball strikes the box, pressing it back against the wall.
  * The wall takes the blow through the box, as a support takes a blow through a
@@ -859,6 +892,7 @@ int main(void)
         cmocka_unit_test(blow_on_a_stack_passes_to_the_floor),
         cmocka_unit_test(blow_on_a_slider_moves_it_along_the_floor),
         cmocka_unit_test(slider_leaves_the_table_at_its_edge),
+        cmocka_unit_test(box_slides_to_the_edge_without_queries),
         cmocka_unit_test(sandwich_against_a_wall_passes_the_blow_on),
         cmocka_unit_test(oblique_sandwich_passes_the_blow_on),
         cmocka_unit_test(ball_comes_to_rest_in_finite_time),
