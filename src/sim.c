@@ -493,21 +493,8 @@ static vec3 still_accel(const world *w, const body *b)
     return b->state == STATE_DYNAMIC ? world_body_accel(w, b) : v3(0, 0, 0);
 }
 
-/* The acceleration of body b's point p in free flight: its centre's, plus the
- * centripetal part w x (w x r) and the torque-free turn dw/dt x r, dw/dt =
- * -I^-1 (w x L) (Euler's equations). */
-static vec3 point_accel(const world *w, const body *b, vec3 p)
-{
-    if (b->state != STATE_DYNAMIC) return v3(0, 0, 0);
-    vec3 a = world_body_accel(w, b);
-    if (v3_len2(b->w) == 0) return a;
-    vec3 r = v3_sub(p, body_com(b));
-    vec3 dw = v3_neg(body_inertia_inv_mulv(b, v3_cross(b->w, b->L)));
-    return v3_add(a, v3_add(v3_cross(b->w, v3_cross(b->w, r)), v3_cross(dw, r)));
-}
-
 /* How body b moves at that instant in free flight, for the velocity and the
- * acceleration of its points (see point_accel). */
+ * acceleration of its points. */
 typedef struct {
     vec3 c, v, w, a, dw; /* centre of mass, its velocity, spin, acceleration; dw/dt */
 } flight_motion;
@@ -524,6 +511,32 @@ static flight_motion motion_of(const world *w, const body *b)
     return m;
 }
 
+static vec3 motion_velocity(const flight_motion *m, vec3 p)
+{
+    return v3_add(m->v, v3_cross(m->w, v3_sub(p, m->c)));
+}
+
+/* The centre's acceleration, plus the centripetal part w x (w x r) and the
+ * torque-free turn dw/dt x r, dw/dt = -I^-1 (w x L) (Euler's equations). */
+static vec3 motion_accel(const flight_motion *m, vec3 p)
+{
+    vec3 r = v3_sub(p, m->c);
+    return v3_add(m->a, v3_add(v3_cross(m->w, v3_cross(m->w, r)), v3_cross(m->dw, r)));
+}
+
+/* The acceleration of body b's point p in free flight. */
+static vec3 point_accel(const world *w, const body *b, vec3 p)
+{
+    if (b->state != STATE_DYNAMIC) return v3(0, 0, 0);
+    if (v3_len2(b->w) == 0) return world_body_accel(w, b);
+    flight_motion m = motion_of(w, b);
+    return motion_accel(&m, p);
+}
+
+/* A polyhedron of at most this many vertices is tried vertex by vertex by the
+ * search after a strike (vertex_plane_time). */
+#define SIM_PLANE_VERTICES 32
+
 /* The first time at which one of polyhedron m's vertices, closing on the plane
  * through p with unit normal n (towards m) at its speed and acceleration along n
  * now (m moving as mm, the other object as mo), would have come within 1 - f of
@@ -538,11 +551,8 @@ static double vertex_plane_time(const body *m, const flight_motion *mm, const fl
     for (int i = 0; i < h->nv; i++) {
         vec3 x = v3_add(m->x, q_rotate(m->q, h->v[i]));
         double height = v3_dot(v3_sub(x, p), n);
-        vec3 ra = v3_sub(x, mm->c), rb = v3_sub(x, mo->c);
-        vec3 va = v3_add(mm->v, v3_cross(mm->w, ra)), vb = v3_add(mo->v, v3_cross(mo->w, rb));
-        vec3 aa = v3_add(mm->a, v3_add(v3_cross(mm->w, v3_cross(mm->w, ra)), v3_cross(mm->dw, ra)));
-        vec3 ab = v3_add(mo->a, v3_add(v3_cross(mo->w, v3_cross(mo->w, rb)), v3_cross(mo->dw, rb)));
-        double s = -v3_dot(v3_sub(va, vb), n), c = -v3_dot(v3_sub(aa, ab), n);
+        double s = -v3_dot(v3_sub(motion_velocity(mm, x), motion_velocity(mo, x)), n);
+        double c = -v3_dot(v3_sub(motion_accel(mm, x), motion_accel(mo, x)), n);
         double D = f * height;
         if (f > 0.99) D = d_max(D, height - 0.25 * SIM_SEPARATION);
         double disc = s * s + 2 * c * D;
@@ -621,9 +631,10 @@ static double time_of_impact(world *w, pair *p, double lo, double hi)
         if (!overshot && r.distance <= 2 * SIM_SEPARATION) {
             double tv = HUGE_VAL;
             flight_motion fa = motion_of(w, ma), fb = motion_of(w, mb);
-            if (r.fb.kind == CLOSEST_FACE && a->shape.hull && a->shape.hull->nv <= 32)
+            if (r.fb.kind == CLOSEST_FACE && a->shape.hull && a->shape.hull->nv <= SIM_PLANE_VERTICES)
                 tv = vertex_plane_time(a, &fa, &fb, r.pb, r.normal, f);
-            else if (r.fa.kind == CLOSEST_FACE && b->shape.hull && b->shape.hull->nv <= 32)
+            else if (r.fa.kind == CLOSEST_FACE && b->shape.hull &&
+                     b->shape.hull->nv <= SIM_PLANE_VERTICES)
                 tv = vertex_plane_time(b, &fb, &fa, r.pa, v3_neg(r.normal), f);
             if (tv < HUGE_VAL && (!newton || lo + tv < t)) {
                 t = lo + tv;

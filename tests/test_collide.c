@@ -652,6 +652,19 @@ static void blow_on_a_slider_moves_it_along_the_floor(void **state)
     world_free(&w);
 }
 
+/* Frames until slider b (on body 0, the table) is past x_until: it slides on at
+ * height z (within tol), and no pair is checked. */
+static void slides_without_queries(world *w, const body *b, double x_until, double z, double tol)
+{
+    long checks = w->st.pair_checks;
+    while (b->x.x < x_until) {
+        frames(w, 1);
+        assert_int_equal(b->slide, 0);
+        assert_true(fabs(b->x.z - z) <= tol);
+        assert_int_equal(w->st.pair_checks, checks);
+    }
+}
+
 /* A ball slides along a table at 1 m/s: flat while it is over the table (its
  * contact needs no check there), and off the edge it falls. */
 static void slider_leaves_the_table_at_its_edge(void **state)
@@ -670,14 +683,8 @@ static void slider_leaves_the_table_at_its_edge(void **state)
     assert_int_equal(ball->slide, 0);
     double z = ball->x.z;
     assert_near(z, 0.15, 1e-6);
-    long checks = w.st.pair_checks;
-    while (ball->x.x < 0.45) { /* its centre over the table */
-        frames(&w, 1);
-        assert_int_equal(ball->slide, 0);
-        assert_true(ball->x.z == z);
-        /* over the face, the face is nearest: no query, up to the edge */
-        assert_int_equal(w.st.pair_checks, checks);
-    }
+    /* its centre over the table, where the face is nearest */
+    slides_without_queries(&w, ball, 0.45, z, 0);
     frames(&w, 10); /* half a second later it has left the table */
     print_message("slider: at x %.3f z %.3f after the edge, slide %d\n", ball->x.x, ball->x.z, ball->slide);
     assert_int_equal(ball->slide, -1);
@@ -706,13 +713,7 @@ static void box_slides_to_the_edge_without_queries(void **state)
     frames(&w, 2);
     assert_int_equal(box->slide, 0);
     assert_near(box->slide_foot, 0.1 * sqrt(2), 1e-9);
-    long checks = w.st.pair_checks;
-    while (box->x.x < 0.345) { /* to x = 0.35: its footprint to 0.4914 */
-        frames(&w, 1);
-        assert_int_equal(box->slide, 0);
-        assert_near(box->x.z, 0.15, 1e-6);
-        assert_int_equal(w.st.pair_checks, checks);
-    }
+    slides_without_queries(&w, box, 0.345, 0.15, 1e-6); /* to x = 0.35: its footprint to 0.4914 */
     frames(&w, 60);
     assert_int_equal(box->slide, -1);
     assert_true(box->x.z < 0);
