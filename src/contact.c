@@ -82,6 +82,13 @@ static int support_set(const body *b, vec3 d, vec3 u, vec3 v, double tol, p2 *ou
     return n;
 }
 
+/* Unit axes u, v of the plane across unit vector n, with u x v = n. */
+static void plane_axes(vec3 n, vec3 *u, vec3 *v)
+{
+    *u = v3_norm(fabs(n.x) < 0.6 ? v3_cross(n, v3(1, 0, 0)) : v3_cross(n, v3(0, 1, 0)));
+    *v = v3_cross(n, *u);
+}
+
 static double cross2(p2 o, p2 a, p2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
 
 static int cmp_p2(const void *a, const void *b)
@@ -211,8 +218,7 @@ static bool region_of(const body *a, const body *b, const closest_result *r, dou
     z->heap = NULL;
     /* a sphere touches a convex object at one point */
     if (a->sp.kind == SHAPE_SPHERE || b->sp.kind == SHAPE_SPHERE) return true;
-    z->u = v3_norm(fabs(n.x) < 0.6 ? v3_cross(n, v3(1, 0, 0)) : v3_cross(n, v3(0, 1, 0)));
-    z->v = v3_cross(n, z->u);
+    plane_axes(n, &z->u, &z->v);
     z->h = 0.5 * v3_dot(v3_add(r->pa, r->pb), n);
     p2 *sa = malloc(12 * CONTACT_MAX_SUPPORT * sizeof *sa);
     if (!sa) return false;
@@ -282,8 +288,8 @@ vec3 contact_closing_corner(const body *a, const body *b, const closest_result *
 bool contact_stable(const body *m, vec3 n, double tol)
 {
     if (m->sp.kind == SHAPE_SPHERE) return true;
-    vec3 u = v3_norm(fabs(n.x) < 0.6 ? v3_cross(n, v3(1, 0, 0)) : v3_cross(n, v3(0, 1, 0)));
-    vec3 v = v3_cross(n, u);
+    vec3 u, v;
+    plane_axes(n, &u, &v);
     p2 *s = malloc(2 * CONTACT_MAX_SUPPORT * sizeof *s);
     if (!s) return false;
     int k = support_set(m, v3_neg(n), u, v, tol, s, CONTACT_MAX_SUPPORT);
@@ -300,8 +306,8 @@ bool contact_stable(const body *m, vec3 n, double tol)
 
 double contact_footprint(const body *m, vec3 n, double tol)
 {
-    vec3 u = v3_norm(fabs(n.x) < 0.6 ? v3_cross(n, v3(1, 0, 0)) : v3_cross(n, v3(0, 1, 0)));
-    vec3 v = v3_cross(n, u);
+    vec3 u, v;
+    plane_axes(n, &u, &v);
     p2 *s = malloc(CONTACT_MAX_SUPPORT * sizeof *s);
     if (!s) return HUGE_VAL;
     int k = support_set(m, v3_neg(n), u, v, tol, s, CONTACT_MAX_SUPPORT);

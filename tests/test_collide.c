@@ -652,6 +652,16 @@ static void blow_on_a_slider_moves_it_along_the_floor(void **state)
     world_free(&w);
 }
 
+/* A world under gravity, frames of time_step, and a table (body 0) with its top
+ * at z = 0.05 and its edge at x = 0.5. */
+static void slider_world(world *w, double time_step)
+{
+    world_init(w);
+    w->set.force = (dir_amount){v3(0, 0, -1), 9.8};
+    w->set.time_step = time_step;
+    add_static_box(w, "table", v3(0.5, 0.5, 0.05));
+}
+
 /* Frames until slider b (on body 0, the table) is past x_until: it slides on at
  * height z (within tol), and no pair is checked. */
 static void slides_without_queries(world *w, const body *b, double x_until, double z, double tol)
@@ -671,10 +681,7 @@ static void slider_leaves_the_table_at_its_edge(void **state)
 {
     (void)state;
     world w;
-    world_init(&w);
-    w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
-    w.set.time_step = 0.05;
-    add_static_box(&w, "table", v3(0.5, 0.5, 0.05)); /* top at z = 0.05, edge at x = 0.5 */
+    slider_world(&w, 0.05);
     body *ball = add_ball(&w, "ball", 0.1);
     ball->elasticity = 0;
     ball->x = v3(-0.45, 0, 0.15 + 1e-6);
@@ -701,10 +708,7 @@ static void box_slides_to_the_edge_without_queries(void **state)
 {
     (void)state;
     world w;
-    world_init(&w);
-    w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
-    w.set.time_step = 0.01;
-    add_static_box(&w, "table", v3(0.5, 0.5, 0.05)); /* top at z = 0.05, edge at x = 0.5 */
+    slider_world(&w, 0.01);
     body *box = add_box(&w, "box", v3(0.1, 0.1, 0.1));
     box->elasticity = 0;
     box->x = v3(-0.3, 0, 0.15 + 1e-6);
