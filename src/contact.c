@@ -19,6 +19,10 @@ typedef struct {
 
 #define CONTACT_MAX_SUPPORT 256
 
+/* Supporting points of hulls of up to this many vertices (every box and die) are
+ * worked on in arrays on the stack; a larger hull's are allocated. */
+#define LOCAL_SUPPORT 32
+
 /* A hull of at most this many vertices is read in turn; a larger one (a
  * superquadric's) is walked. */
 #define SUPPORT_SCAN 32
@@ -80,6 +84,27 @@ static int support_set(const body *b, vec3 d, vec3 u, vec3 v, double tol, p2 *ou
         out[i] = (p2){v3_dot(p, u), v3_dot(p, v)};
     }
     return n;
+}
+
+/* How many supporting points b can have: one for a sphere, else its vertices, up
+ * to CONTACT_MAX_SUPPORT. */
+static int support_room(const body *b)
+{
+    if (b->sp.kind == SHAPE_SPHERE) return 1;
+    int nv = b->shape.hull->nv;
+    return nv < CONTACT_MAX_SUPPORT ? nv : CONTACT_MAX_SUPPORT;
+}
+
+/* Room for n points: local (nlocal of them) when they fit, else allocated (NULL
+ * when out of memory); release it with free_points. */
+static p2 *room_for(p2 *local, int nlocal, int n)
+{
+    return n <= nlocal ? local : malloc((size_t)n * sizeof *local);
+}
+
+static void free_points(p2 *p, const p2 *local)
+{
+    if (p != local) free(p);
 }
 
 /* Unit axes u, v of the plane across unit vector n, with u x v = n. */
@@ -204,7 +229,8 @@ typedef struct {
     int n;    /* corners: 2 a segment's ends, >= 3 a polygon's (ccw); 0 no overlap */
     p2 *p;    /* the corners */
     p2 c;     /* the centre */
-    p2 *heap; /* what to free */
+    p2 *pts;  /* where the points are worked on: local, or allocated */
+    p2 local[12 * LOCAL_SUPPORT];
 } region;
 
 /* Finds the region: false when out of memory.  n is 0 when the features do not
@@ -215,20 +241,22 @@ static bool region_of(const body *a, const body *b, const closest_result *r, dou
 {
     vec3 n = r->normal;
     z->n = 0;
-    z->heap = NULL;
+    z->pts = z->local;
     /* a sphere touches a convex object at one point */
     if (a->sp.kind == SHAPE_SPHERE || b->sp.kind == SHAPE_SPHERE) return true;
     plane_axes(n, &z->u, &z->v);
     z->h = 0.5 * v3_dot(v3_add(r->pa, r->pb), n);
-    p2 *sa = malloc(12 * CONTACT_MAX_SUPPORT * sizeof *sa);
+    /* each set, and room for its hull (hull2); two buffers for the clipping, which
+     * adds at most one corner per edge it clips by */
+    int ka = support_room(a), kb = support_room(b), clip = 2 * (ka + kb);
+    p2 *sa = z->pts = room_for(z->local, 12 * LOCAL_SUPPORT, 2 * ka + 2 * kb + 2 * clip);
     if (!sa) return false;
-    z->heap = sa;
-    p2 *sb = sa + 2 * CONTACT_MAX_SUPPORT;
-    p2 *buf[2] = {sb + 2 * CONTACT_MAX_SUPPORT, sb + 6 * CONTACT_MAX_SUPPORT};
+    p2 *sb = sa + 2 * ka;
+    p2 *buf[2] = {sb + 2 * kb, sb + 2 * kb + clip};
     z->p = buf[0];
     /* a's features facing b lie along -n; b's facing a along +n */
-    int na = support_set(a, v3_neg(n), z->u, z->v, tol, sa, CONTACT_MAX_SUPPORT);
-    int nb = support_set(b, n, z->u, z->v, tol, sb, CONTACT_MAX_SUPPORT);
+    int na = support_set(a, v3_neg(n), z->u, z->v, tol, sa, ka);
+    int nb = support_set(b, n, z->u, z->v, tol, sb, kb);
     double eps = 1e-12 * (a->shape.r_out + b->shape.r_out) * (a->shape.r_out + b->shape.r_out);
     na = hull2(sa, na, eps);
     nb = hull2(sb, nb, eps);
@@ -262,7 +290,7 @@ vec3 contact_point(const body *a, const body *b, const closest_result *r, double
     region z;
     vec3 p = v3_scale(v3_add(r->pa, r->pb), 0.5);
     if (region_of(a, b, r, tol, &z) && z.n > 0) p = region_world(&z, r->normal, z.c);
-    free(z.heap);
+    free_points(z.pts, z.local);
     return p;
 }
 
@@ -281,7 +309,7 @@ vec3 contact_closing_corner(const body *a, const body *b, const closest_result *
             }
         }
     }
-    free(z.heap);
+    free_points(z.pts, z.local);
     return p;
 }
 
@@ -290,9 +318,11 @@ bool contact_stable(const body *m, vec3 n, double tol)
     if (m->sp.kind == SHAPE_SPHERE) return true;
     vec3 u, v;
     plane_axes(n, &u, &v);
-    p2 *s = malloc(2 * CONTACT_MAX_SUPPORT * sizeof *s);
+    p2 local[2 * LOCAL_SUPPORT];
+    int room = support_room(m);
+    p2 *s = room_for(local, 2 * LOCAL_SUPPORT, 2 * room); /* and room for its hull */
     if (!s) return false;
-    int k = support_set(m, v3_neg(n), u, v, tol, s, CONTACT_MAX_SUPPORT);
+    int k = support_set(m, v3_neg(n), u, v, tol, s, room);
     double r = m->shape.r_out;
     k = hull2(s, k, 1e-12 * r * r);
     vec3 c = body_com(m);
@@ -300,7 +330,7 @@ bool contact_stable(const body *m, vec3 n, double tol)
     bool inside = k >= 3;
     for (int i = 0; i < k && inside; i++)
         if (cross2(s[i], s[(i + 1) % k], cp) < 1e-9 * r * r) inside = false;
-    free(s);
+    free_points(s, local);
     return inside;
 }
 
@@ -308,13 +338,15 @@ double contact_footprint(const body *m, vec3 n, double tol)
 {
     vec3 u, v;
     plane_axes(n, &u, &v);
-    p2 *s = malloc(CONTACT_MAX_SUPPORT * sizeof *s);
+    p2 local[LOCAL_SUPPORT];
+    int room = support_room(m);
+    p2 *s = room_for(local, LOCAL_SUPPORT, room);
     if (!s) return HUGE_VAL;
-    int k = support_set(m, v3_neg(n), u, v, tol, s, CONTACT_MAX_SUPPORT);
+    int k = support_set(m, v3_neg(n), u, v, tol, s, room);
     vec3 c = body_com(m);
     double cu = v3_dot(c, u), cv = v3_dot(c, v), r = k > 0 ? 0 : HUGE_VAL;
     for (int i = 0; i < k; i++) r = d_max(r, hypot(s[i].x - cu, s[i].y - cv));
-    free(s);
+    free_points(s, local);
     return r;
 }
 
