@@ -65,7 +65,8 @@ typedef struct body {
                         * last, so far predictions count its lesser acceleration */
     double slide_foot; /* how far across slide_n its features on the support reach
                         * from its centre of mass (contact_footprint) */
-    long shifts;       /* how many times collisions set it apart (sim.c) */
+    double jumped;     /* how far its centre of mass was moved at once in all, by
+                        * collisions that set it apart or settled it (sim.c) */
     int pinned_by[2];  /* the last two still objects it struck (sim.c), or -1; */
     vec3 pinned_n[2];  /*   those contacts' normals, towards this body, */
     double pinned_t[2];/*   and when */

@@ -179,12 +179,12 @@ double sched_predict_bodies(const world *w, const body *a, const body *b, double
     return predict(w, a, b, d, false, both, none, NULL);
 }
 
-double sched_predict_far(const world *w, const body *a, const body *b, double d, double sep,
-                         bool turn_a, bool turn_b)
+double sched_predict_far(const world *w, const body *a, const body *b, double d, bool turn_a,
+                         bool turn_b)
 {
     static const double slack[2] = {SCHED_SLACK, SCHED_SLACK};
     const bool turn[2] = {turn_a, turn_b};
-    return predict(w, a, b, d - SCHED_SHIFTS * sep, true, turn, slack, NULL);
+    return predict(w, a, b, d - SCHED_JUMP, true, turn, slack, NULL);
 }
 
 double sched_predict_kept(const world *w, const body *a, const body *b, double d, double slack_a,

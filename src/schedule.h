@@ -24,9 +24,10 @@ double sched_predict(const world *w, const pair *p, double d);
 /* The same for objects a and b in the states given (not necessarily the world's). */
 double sched_predict_bodies(const world *w, const body *a, const body *b, double d);
 
-/* Shifts a pair's prediction from sched_predict_far allows: collisions may set its
- * objects apart by up to sep this many times in all before it must be made again. */
-#define SCHED_SHIFTS 16
+/* How far (m), in all, collisions may move a far pair's objects at once (setting
+ * them apart, settling them onto a face: body.jumped) before the pair's time from
+ * sched_predict_far must be found again. */
+#define SCHED_JUMP 5e-3
 
 /* Speed (m/s) a far pair's bound gives each moving object beyond its own. */
 #define SCHED_SLACK 0.1
@@ -36,15 +37,15 @@ double sched_predict_bodies(const world *w, const body *a, const body *b, double
  * they are in those states plus what the force adds, whatever their directions
  * (the whole force, whether or not the object slides, unless its slide is steady:
  * body.slide_steady; so a slide that ends leaves the time as it was), and
- * through SCHED_SHIFTS shifts of up to sep each: so that a collision that
- * turns an object back, spins it faster, speeds it up a little or sets it a hair
- * apart leaves the pair's time as it was.  turn_a and turn_b say whether a turn of
+ * through moves at once of up to SCHED_JUMP in all: so that a collision that
+ * turns an object back, spins it faster, speeds it up a little, sets it a hair
+ * apart or lays it on a face leaves the pair's time as it was.  turn_a and turn_b say whether a turn of
  * that object can close the gap; each that can turns its surface by all of its
  * R - r at once.  (A gap between spheres about the centres of mass that hold the
  * objects, or from such a sphere to a still object, no turn changes.)  It is
  * earlier than sched_predict's by little when d is large. */
-double sched_predict_far(const world *w, const body *a, const body *b, double d, double sep,
-                         bool turn_a, bool turn_b);
+double sched_predict_far(const world *w, const body *a, const body *b, double d, bool turn_a,
+                         bool turn_b);
 
 /* One moving object's part of a bound, as a function of the time t since it was
  * found: its centre goes at most s t + acc t^2 / 2 until t_lin, then vmax t; its

@@ -733,8 +733,6 @@ static void separate(body *a, body *b, vec3 n, double gap, double sep)
     double s = need / (ia + ib);
     a->x = v3_mad(a->x, n, s * ia);
     b->x = v3_mad(b->x, n, -s * ib);
-    a->shifts += ia > 0;
-    b->shifts += ib > 0;
     if (ia > 0 && ib > 0) {
         vec3 half = v3_scale(v3_cross(n, v3_sub(a->v, b->v)), 0.5 * s);
         a->L = v3_sub(a->L, half);
@@ -1102,15 +1100,14 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
         const body *a = at_start(w, p->a), *b = at_start(w, p->b);
         bool turn_a, turn_b;
         double from = flights_start(w, p), gap = bound_gap(a, b, &turn_a, &turn_b);
-        double next =
-            gap > 0 ? from + sched_predict_far(w, a, b, gap, SIM_SEPARATION, turn_a, turn_b) : from;
+        double next = gap > 0 ? from + sched_predict_far(w, a, b, gap, turn_a, turn_b) : from;
         if (next - t_end >= w->set.time_step) {
             p->far = true;
             p->far_slide_a = a->slide >= 0 && a->slide_steady;
             p->far_slide_b = b->slide >= 0 && b->slide_steady;
             p->checked = from;
-            p->shifts_a = a->shifts;
-            p->shifts_b = b->shifts;
+            p->jumped_a = a->jumped;
+            p->jumped_b = b->jumped;
             p->speed_a = v3_len(a->v) + SCHED_SLACK;
             p->speed_b = v3_len(b->v) + SCHED_SLACK;
             return next;
@@ -1238,20 +1235,23 @@ static void repredict(world *w, long k, int i, const body *pre, double moved, do
  * b, that its new motion may bring together before their time.  A pair's time
  * came from a bound on its objects' motion from its check on: each no faster than
  * its speed then (speed_a, speed_b) plus what the force adds since, turning no
- * faster than then (or by all of R - r at once, for a far pair), and, for a far
- * pair, set apart at most SCHED_SHIFTS times by a separation; or, for a near pair
- * whose time came along the normal (pair.along), from exactly the motions then.
- * Where b keeps within that, the pair keeps its time; a near pair that does not
- * gets a new one from its kept bound (repredict). */
+ * faster than then; or, for a far pair, turning any way at all (its bound takes
+ * all of R - r at once, or a sphere that no turn changes) and moved at once by up
+ * to SCHED_JUMP in all (body.jumped); or, for a near pair whose time came along
+ * the normal (pair.along), from exactly the motions then.  Where b keeps within
+ * that, the pair keeps its time.  A near pair that does not gets a new one from
+ * its kept bound (repredict), unless the collision turned the object or moved it
+ * more than a separation: it is due then. */
 static void reschedule(world *w, int i, const body *a, const body *b, double t)
 {
     double acc = v3_len(world_body_accel(w, a)), moved = v3_len(v3_sub(a->x, b->x));
     bool turned = a->q.w != b->q.w || a->q.x != b->q.x || a->q.y != b->q.y || a->q.z != b->q.z;
-    if (a->state != STATE_DYNAMIC || turned || moved > SIM_SEPARATION ||
+    if (a->state != STATE_DYNAMIC ||
         (b->state == STATE_DYNAMIC && v3_len(world_body_accel(w, b)) > acc)) {
         sched_object_due(w, i, t);
         return;
     }
+    bool jolted = turned || moved > SIM_SEPARATION; /* beyond what a near bound keeps */
     double v = v3_len(b->v);
     bool spun = v3_len(b->L) > v3_len(a->L);
     for (long j = w->obj_first[i]; j < w->obj_first[i + 1]; j++) {
@@ -1260,12 +1260,12 @@ static void reschedule(world *w, int i, const body *a, const body *b, double t)
         bool keep = q->checked <= t; /* found from speeds at an earlier instant */
         if (keep) keep = v <= (q->a == i ? q->speed_a : q->speed_b) + acc * (t - q->checked);
         if (keep && q->far)
-            keep = w->bodies[q->a]->shifts - q->shifts_a + w->bodies[q->b]->shifts - q->shifts_b <=
-                   SCHED_SHIFTS;
+            keep = w->bodies[q->a]->jumped - q->jumped_a + w->bodies[q->b]->jumped - q->jumped_b <=
+                   SCHED_JUMP;
         else if (keep)
             keep = moved == 0 && !spun && !q->along;
         if (keep || q->next <= t) continue;
-        if (!q->far && q->checked < HUGE_VAL) repredict(w, k, i, a, moved, t);
+        if (!q->far && !jolted && q->checked < HUGE_VAL) repredict(w, k, i, a, moved, t);
         else sched_set(w, k, t);
     }
 }
@@ -1295,6 +1295,8 @@ static void answer(world *w, pair *p, double t, double t_end)
             if (w->snap[i].state == STATE_DYNAMIC) fly_into(w, i, t_end, w->bodies[i]);
             continue;
         }
+        /* what the collision moved it by at once (setting it apart, settling it) */
+        w->bodies[i]->jumped += v3_len(v3_sub(body_com(w->bodies[i]), body_com(&w->pre[i])));
         renew_flight(w, i, t);
         /* its motion changed: its pairs are due again, unless their times hold */
         reschedule(w, i, &w->pre[i], w->bodies[i], t);

@@ -87,7 +87,7 @@ typedef struct {
     bool along;           /* next came from sched_predict_along: it holds only while
                            * both objects fly as they flew when it was found */
     bool far;             /* next came from sched_predict_far, when its objects had */
-    long shifts_a, shifts_b; /*  been set apart so many times, */
+    double jumped_a, jumped_b; /* been moved at once so far (body.jumped), */
     bool far_slide_a, far_slide_b; /* counting that object's slide's lesser
                            * acceleration (only a steady slide's: body.slide_steady) */
     double speed_a, speed_b; /* the speeds next was found from (slack included) */

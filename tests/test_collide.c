@@ -13,6 +13,7 @@
 
 #include "closest.h"
 #include "contact.h"
+#include "schedule.h"
 #include "sim.h"
 #include "world.h"
 #include "worlds.h"
@@ -315,6 +316,55 @@ static void tilted_box_settles_keeping_what_contact_keeps(void **state)
     frames(&w, 10);
     assert_int_equal(w.st.collisions, hits);
     assert_near(box->L.z, lz, 1e-9 * fabs(lz));
+    world_free(&w);
+}
+
+/* Far pairs keep their times through the collisions that lay a box on its face:
+ * the settling turns it and moves it at once (a few millimetres at most, within
+ * SCHED_JUMP), and a far pair's bound takes any turn.  A tilted box falls onto a
+ * table and rocks until it lies flat; four posts stand metres away.  In every
+ * frame with a collision that moved the box at once, the box's pairs with the
+ * posts keep the times they had, unless those came within the frame. */
+static void far_pairs_keep_their_times_when_a_box_settles(void **state)
+{
+    (void)state;
+    world w;
+    world_init(&w);
+    w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
+    add_static_box(&w, "table", v3(3, 3, 0.1));
+    body *box = add_box(&w, "box", v3(0.15, 0.1, 0.1));
+    box->elasticity = 0.5;
+    body_set_rotation(box, v3(1, 0.3, 0), 0.12);
+    box->x = v3(0, 0, 0.1 + 0.125 + 0.1);
+    const vec3 at[4] = {{6, 0, 1}, {-6, 0, 1}, {0, 6, 1}, {0, -6, 1}};
+    for (int k = 0; k < 4; k++) {
+        char name[16];
+        snprintf(name, sizeof name, "post%d", k);
+        add_static_box(&w, name, v3(0.2, 0.2, 1))->x = at[k];
+    }
+    assert_int_equal(sim_prepare(&w), 0);
+    long posts[4];
+    int n = 0;
+    for (long k = 0; k < w.npairs; k++) /* the box is body 1, the posts 2 to 5 */
+        if (w.pairs[k].a == 1 && w.pairs[k].b >= 2) posts[n++] = k;
+    assert_int_equal(n, 4);
+    int jolts = 0;
+    for (int f = 0; f < 30; f++) {
+        double next[4], jumped = box->jumped;
+        long hits = w.st.collisions;
+        for (int k = 0; k < 4; k++) next[k] = w.pairs[posts[k]].next;
+        frames(&w, 1);
+        if (w.st.collisions == hits || box->jumped <= jumped + SIM_SEPARATION) continue;
+        jolts++;
+        for (int k = 0; k < 4; k++)
+            if (next[k] > w.time) assert_true(w.pairs[posts[k]].next == next[k]);
+    }
+    print_message("settling box: %d frames with a jump, %.3g m in all; resting %d\n", jolts,
+                  box->jumped, box->state == STATE_RESTING);
+    assert_true(jolts > 0);
+    assert_true(box->jumped < SCHED_JUMP);
+    vec3 up = q_rotate(box->q, v3(0, 0, 1));
+    assert_true(fabs(up.z) > 1 - 1e-9); /* it lies on a face */
     world_free(&w);
 }
 
@@ -889,6 +939,7 @@ int main(void)
         cmocka_unit_test(box_dropped_flat_rests_flat),
         cmocka_unit_test(box_dropped_on_its_corner_settles),
         cmocka_unit_test(tilted_box_settles_keeping_what_contact_keeps),
+        cmocka_unit_test(far_pairs_keep_their_times_when_a_box_settles),
         cmocka_unit_test(pillow_rocks_to_a_stop),
         cmocka_unit_test(drum_contact_region),
         cmocka_unit_test(box_turning_onto_its_edge_strikes_with_the_lower_end),

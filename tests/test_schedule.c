@@ -167,15 +167,15 @@ static void predictions_are_never_late(void **state)
         double d = random_pair(&w, &s, k, ob);
         if (d == 0) continue;
         double predicted = sched_predict(&w, &w.pairs[0], d);
-        /* the bound that allows any spin and a few shifts is earlier still */
-        double far = sched_predict_far(&w, ob[0], ob[1], d, 1e-7, true, true);
+        /* the bound that allows any spin and a few jumps is earlier still */
+        double far = sched_predict_far(&w, ob[0], ob[1], d, true, true);
         if (far > predicted) fail_msg("trial %d: far bound %.9g s after %.9g s", k, far, predicted);
         if (far >= 0.5 * predicted) far_useful++;
         /* from the gap of the spheres about the centres of mass that hold them,
          * which no turn changes: no turn counted */
         double balls = v3_len(v3_sub(body_com(ob[0]), body_com(ob[1]))) - ob[0]->shape.r_out -
                        ob[1]->shape.r_out;
-        double unturned = balls > 0 ? sched_predict_far(&w, ob[0], ob[1], balls, 1e-7, false, false) : 0;
+        double unturned = balls > 0 ? sched_predict_far(&w, ob[0], ob[1], balls, false, false) : 0;
         double truth = first_contact(&w, ob[0], ob[1], urand(&s, 0.001, 0.02), 3);
         if (truth < HUGE_VAL) collided++;
         if (predicted > truth)
@@ -231,9 +231,9 @@ static void far_times_hold_when_a_slide_ends(void **state)
         m->slide = 1 - i;
         m->slide_n = n;
         m->slide_steady = false;
-        double far = sched_predict_far(&w, ob[0], ob[1], d, 1e-7, true, true);
+        double far = sched_predict_far(&w, ob[0], ob[1], d, true, true);
         m->slide_steady = true;
-        double steady = sched_predict_far(&w, ob[0], ob[1], d, 1e-7, true, true);
+        double steady = sched_predict_far(&w, ob[0], ob[1], d, true, true);
         if (steady > far) steadier++;
         if (steady < far) fail_msg("trial %d: a steady slide's far time %.9g s before %.9g s", k, steady, far);
         /* it slides until tau, and falls under the whole force from there */
