@@ -279,6 +279,21 @@ static void box_dropped_on_its_corner_settles(void **state)
     world_free(&w);
 }
 
+/* A world under gravity with a table (its top at z = 0.1) and, tilted 0.12 rad
+ * over it with its centre at height z, a 0.3 x 0.2 x 0.2 m box of restitution 0.5
+ * (body 1). */
+static body *tilted_box_world(world *w, double z)
+{
+    world_init(w);
+    w->set.force = (dir_amount){v3(0, 0, -1), 9.8};
+    add_static_box(w, "table", v3(3, 3, 0.1));
+    body *box = add_box(w, "box", v3(0.15, 0.1, 0.1));
+    box->elasticity = 0.5;
+    body_set_rotation(box, v3(1, 0.3, 0), 0.12);
+    box->x = v3(0, 0, z);
+    return box;
+}
+
 /* A frictionless contact pushes along the vertical only: it changes neither the
  * horizontal momentum nor the angular momentum about the vertical.  A box that
  * lands slightly tilted, sliding and spinning, rocks and settles on its face
@@ -287,13 +302,7 @@ static void tilted_box_settles_keeping_what_contact_keeps(void **state)
 {
     (void)state;
     world w;
-    world_init(&w);
-    w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
-    add_static_box(&w, "table", v3(3, 3, 0.1));
-    body *box = add_box(&w, "box", v3(0.15, 0.1, 0.1));
-    box->elasticity = 0.5;
-    body_set_rotation(box, v3(1, 0.3, 0), 0.12);
-    box->x = v3(0, 0, 0.1 + 0.125);
+    body *box = tilted_box_world(&w, 0.1 + 0.125);
     box->v = v3(0.3, -0.1, 0);
     body_set_angular_vel(box, v3(0, 0, 1));
     w.set.max_angular = 100; /* the clamp would scale L down as the box rocks */
@@ -329,13 +338,7 @@ static void far_pairs_keep_their_times_when_a_box_settles(void **state)
 {
     (void)state;
     world w;
-    world_init(&w);
-    w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
-    add_static_box(&w, "table", v3(3, 3, 0.1));
-    body *box = add_box(&w, "box", v3(0.15, 0.1, 0.1));
-    box->elasticity = 0.5;
-    body_set_rotation(box, v3(1, 0.3, 0), 0.12);
-    box->x = v3(0, 0, 0.1 + 0.125 + 0.1);
+    body *box = tilted_box_world(&w, 0.1 + 0.125 + 0.1);
     const vec3 at[4] = {{6, 0, 1}, {-6, 0, 1}, {0, 6, 1}, {0, -6, 1}};
     for (int k = 0; k < 4; k++) {
         char name[16];
