@@ -232,17 +232,29 @@ static void nothing_passes_through_a_plate(void **state)
     assert_int_equal(through, 0);
 }
 
+/* A world under gravity with a still box, the table (body 0, half-sizes table,
+ * its top at z = table.z), and over it a box (body 1, half-sizes size) of
+ * restitution e, turned by angle about axis, its centre at x. */
+static body *box_over_table(world *w, vec3 table, vec3 size, double e, vec3 axis, double angle,
+                            vec3 x)
+{
+    world_init(w);
+    w->set.force = (dir_amount){v3(0, 0, -1), 9.8};
+    add_static_box(w, "table", table);
+    body *box = add_box(w, "box", size);
+    box->elasticity = e;
+    body_set_rotation(box, axis, angle);
+    box->x = x;
+    return box;
+}
+
 static void box_dropped_flat_rests_flat(void **state)
 {
     (void)state;
     world w;
-    world_init(&w);
-    w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
-    add_static_box(&w, "table", v3(2, 2, 0.1));
-    body *box = add_box(&w, "box", v3(0.3, 0.2, 0.1));
-    box->elasticity = 0.5;
-    body_set_rotation(box, v3(0, 0, 1), 0.4); /* turned about the vertical: still flat */
-    box->x = v3(0.2, -0.3, 1.5);
+    /* turned about the vertical: still flat */
+    body *box = box_over_table(&w, v3(2, 2, 0.1), v3(0.3, 0.2, 0.1), 0.5, v3(0, 0, 1), 0.4,
+                               v3(0.2, -0.3, 1.5));
     quat q0 = box->q;
     int f = 0;
     while (box->state != STATE_RESTING && f < 100) {
@@ -265,33 +277,14 @@ static void box_dropped_on_its_corner_settles(void **state)
 {
     (void)state;
     world w;
-    world_init(&w);
-    w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
-    add_static_box(&w, "table", v3(3, 3, 0.1));
-    body *box = add_box(&w, "box", v3(0.2, 0.2, 0.2));
-    box->elasticity = 0.4;
-    body_set_rotation(box, v3(1, 0.4, 0.1), 0.8); /* a corner down, off balance */
-    box->x = v3(0, 0, 1.5);
+    /* a corner down, off balance */
+    body *box = box_over_table(&w, v3(3, 3, 0.1), v3(0.2, 0.2, 0.2), 0.4, v3(1, 0.4, 0.1), 0.8,
+                               v3(0, 0, 1.5));
     frames(&w, 150);
     assert_int_equal(box->state, STATE_RESTING);
     /* it rests on a face: its lowest point is on the table, its centre a half side up */
     assert_near(box->x.z, 0.1 + 0.2, 2e-3);
     world_free(&w);
-}
-
-/* A world under gravity with a table (its top at z = 0.1) and, tilted 0.12 rad
- * over it with its centre at height z, a 0.3 x 0.2 x 0.2 m box of restitution 0.5
- * (body 1). */
-static body *tilted_box_world(world *w, double z)
-{
-    world_init(w);
-    w->set.force = (dir_amount){v3(0, 0, -1), 9.8};
-    add_static_box(w, "table", v3(3, 3, 0.1));
-    body *box = add_box(w, "box", v3(0.15, 0.1, 0.1));
-    box->elasticity = 0.5;
-    body_set_rotation(box, v3(1, 0.3, 0), 0.12);
-    box->x = v3(0, 0, z);
-    return box;
 }
 
 /* A frictionless contact pushes along the vertical only: it changes neither the
@@ -302,7 +295,8 @@ static void tilted_box_settles_keeping_what_contact_keeps(void **state)
 {
     (void)state;
     world w;
-    body *box = tilted_box_world(&w, 0.1 + 0.125);
+    body *box = box_over_table(&w, v3(3, 3, 0.1), v3(0.15, 0.1, 0.1), 0.5, v3(1, 0.3, 0), 0.12,
+                               v3(0, 0, 0.1 + 0.125));
     box->v = v3(0.3, -0.1, 0);
     body_set_angular_vel(box, v3(0, 0, 1));
     w.set.max_angular = 100; /* the clamp would scale L down as the box rocks */
@@ -338,7 +332,8 @@ static void far_pairs_keep_their_times_when_a_box_settles(void **state)
 {
     (void)state;
     world w;
-    body *box = tilted_box_world(&w, 0.1 + 0.125 + 0.1);
+    body *box = box_over_table(&w, v3(3, 3, 0.1), v3(0.15, 0.1, 0.1), 0.5, v3(1, 0.3, 0), 0.12,
+                               v3(0, 0, 0.1 + 0.125 + 0.1));
     const vec3 at[4] = {{6, 0, 1}, {-6, 0, 1}, {0, 6, 1}, {0, -6, 1}};
     for (int k = 0; k < 4; k++) {
         char name[16];
@@ -548,13 +543,8 @@ static void rocking_block_finds_its_next_corner(void **state)
     long collisions = 0, checks = 0;
     for (int k = 0; k < 4; k++) {
         world w;
-        world_init(&w);
-        w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
-        add_static_box(&w, "table", v3(1, 1, 0.1));
-        body *box = add_box(&w, "block", v3(0.08, 0.06, 0.05));
-        box->elasticity = 0.5;
-        body_set_rotation(box, v3(1, 0.4 + 0.1 * k, 0.1), 0.8);
-        box->x = v3(0, 0, 0.5);
+        body *box = box_over_table(&w, v3(1, 1, 0.1), v3(0.08, 0.06, 0.05), 0.5,
+                                   v3(1, 0.4 + 0.1 * k, 0.1), 0.8, v3(0, 0, 0.5));
         body_set_angular_vel(box, v3(1, 2, 0.5));
         for (int f = 0; f < 30; f++) {
             frames(&w, 1);
