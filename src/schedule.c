@@ -328,7 +328,7 @@ static void sift_up(world *w, long pos)
 
 static void sift_down(world *w, long pos)
 {
-    long n = w->npairs;
+    long n = w->nheap;
     sched_entry e = w->heap[pos];
     for (;;) {
         long c = 2 * pos + 1;
@@ -345,18 +345,20 @@ static void sift_down(world *w, long pos)
 
 int sched_build(world *w, double t)
 {
-    long np = w->npairs;
-    sched_entry *heap = malloc((size_t)(np + 1) * sizeof *heap); /* and an end mark */
-    long *pos = malloc((size_t)(np ? np : 1) * sizeof *pos);
+    long np = w->npairs, nh = np + w->n;
+    sched_entry *heap = malloc((size_t)(nh + 1) * sizeof *heap); /* and an end mark */
+    long *pos = malloc((size_t)(nh ? nh : 1) * sizeof *pos);
     sched_bound *bound = malloc((size_t)(np ? np : 1) * sizeof *bound);
     long *first = malloc((size_t)(w->n + 1) * sizeof *first);
     long *list = malloc((size_t)(2 * np + 1) * sizeof *list);
-    if (!heap || !pos || !bound || !first || !list) {
+    sched_box *box = malloc((size_t)(w->n ? w->n : 1) * sizeof *box);
+    if (!heap || !pos || !bound || !first || !list || !box) {
         free(heap);
         free(pos);
         free(bound);
         free(first);
         free(list);
+        free(box);
         return -1;
     }
     free(w->heap);
@@ -364,11 +366,14 @@ int sched_build(world *w, double t)
     free(w->bound);
     free(w->obj_first);
     free(w->obj_pairs);
+    free(w->box);
     w->heap = heap;
     w->heap_pos = pos;
     w->bound = bound;
     w->obj_first = first;
     w->obj_pairs = list;
+    w->box = box;
+    w->nheap = nh;
     for (int k = 0; k <= w->n; k++) first[k] = 0;
     for (long i = 0; i < np; i++) {
         first[w->pairs[i].a + 1]++;
@@ -385,18 +390,27 @@ int sched_build(world *w, double t)
     free(fill);
     for (long i = 0; i < np; i++) {
         w->pairs[i].next = t;
+        w->pairs[i].parked = false;
         place(w, i, (sched_entry){t, i}); /* all equal: already a heap */
         bound[i] = (sched_bound){.dist = 0}; /* none kept yet */
     }
-    heap[np] = (sched_entry){HUGE_VAL, -1}; /* no pair comes after it */
+    for (int k = 0; k < w->n; k++) {
+        box[k] = (sched_box){.lo = v3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL),
+                             .hi = v3(HUGE_VAL, HUGE_VAL, HUGE_VAL), .from = t, .until = t};
+        place(w, np + k, (sched_entry){t, np + k});
+    }
+    heap[nh] = (sched_entry){HUGE_VAL, -1}; /* nothing comes after it */
     return 0;
 }
 
 void sched_set(world *w, long i, double next)
 {
-    double old = w->pairs[i].next;
     long pos = w->heap_pos[i];
-    w->pairs[i].next = next;
+    double old = w->heap[pos].next;
+    if (i < w->npairs) {
+        w->pairs[i].next = next;
+        if (next < HUGE_VAL) w->pairs[i].parked = false;
+    }
     w->heap[pos].next = next;
     if (next < old) sift_up(w, pos);
     else if (next > old) sift_down(w, pos);
@@ -404,18 +418,117 @@ void sched_set(world *w, long i, double next)
 
 long sched_top(const world *w, double *next)
 {
-    if (w->npairs == 0) return -1;
+    if (w->nheap == 0) return -1;
     *next = w->heap[0].next;
     return w->heap[0].pair;
+}
+
+/* ---- the boxes ---- */
+
+/* Object k's box ends at t: until it is made again it meets every other. */
+static void box_ends(world *w, int k, double t)
+{
+    sched_box *x = &w->box[k];
+    x->lo = v3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL);
+    x->hi = v3(HUGE_VAL, HUGE_VAL, HUGE_VAL);
+    x->until = t;
+    if (w->heap[w->heap_pos[w->npairs + k]].next > t) sched_set(w, w->npairs + k, t);
+}
+
+/* The box that holds still object o where it is: its own box turned into the
+ * world's axes, within the one about its bounding sphere. */
+static void still_box(const body *o, sched_box *x)
+{
+    vec3 mid = v3_scale(v3_add(o->shape.box_lo, o->shape.box_hi), 0.5);
+    vec3 half = v3_scale(v3_sub(o->shape.box_hi, o->shape.box_lo), 0.5);
+    mat3 r = m3_from_quat(o->q);
+    vec3 c = v3_add(o->x, m3_mulv(r, mid)), e;
+    e.x = fabs(r.m[0][0]) * half.x + fabs(r.m[0][1]) * half.y + fabs(r.m[0][2]) * half.z;
+    e.y = fabs(r.m[1][0]) * half.x + fabs(r.m[1][1]) * half.y + fabs(r.m[1][2]) * half.z;
+    e.z = fabs(r.m[2][0]) * half.x + fabs(r.m[2][1]) * half.y + fabs(r.m[2][2]) * half.z;
+    vec3 com = body_com(o), s = v3(o->shape.r_out, o->shape.r_out, o->shape.r_out);
+    double m = 1e-9 * (1 + o->shape.r_out); /* for rounding */
+    vec3 pad = v3(m, m, m);
+    x->lo = v3_sub(v3_max(v3_sub(c, e), v3_sub(com, s)), pad);
+    x->hi = v3_add(v3_min(v3_add(c, e), v3_add(com, s)), pad);
+}
+
+void sched_box_renew(world *w, int k, const body *o, double from, double t, double t_end)
+{
+    sched_box *x = &w->box[k];
+    x->from = from;
+    x->jumped = o->jumped;
+    if (o->state != STATE_DYNAMIC) {
+        still_box(o, x);
+        x->until = HUGE_VAL;
+        x->speed = x->acc = 0;
+    } else {
+        /* the far bound's reach with no turn: its centre, as sched_predict_far
+         * lets it go (the whole force unless it slides steadily) */
+        bool whole = !(o->slide >= 0 && o->slide_steady);
+        double acc = v3_len(whole ? world_accel(w) : world_body_accel(w, o));
+        sched_reach r = terms_of(o, acc, w->set.max_linear, SCHED_SLACK, true, false);
+        /* long enough to reach SCHED_BOX_REACH, and past the step's end */
+        double span, left = SCHED_BOX_REACH;
+        if (r.s >= r.vmax) span = left / r.vmax;
+        else {
+            span = r.acc > 0 ? 2 * left / (r.s + sqrt(r.s * r.s + 2 * r.acc * left)) : left / r.s;
+            if (span > r.t_lin) span = left / r.vmax;
+        }
+        x->until = from + span;
+        if (!(x->until > t_end)) x->until = nextafter(t_end, HUGE_VAL);
+        double reach = eval(&r, 1, x->until - from) + o->shape.r_out + SCHED_JUMP;
+        reach += 1e-9 * (1 + reach); /* for rounding */
+        vec3 c = body_com(o), e = v3(reach, reach, reach);
+        x->lo = v3_sub(c, e);
+        x->hi = v3_add(c, e);
+        x->speed = r.s;
+        x->acc = acc;
+    }
+    sched_set(w, w->npairs + k, x->until);
+    for (long j = w->obj_first[k]; j < w->obj_first[k + 1]; j++) {
+        long i = w->obj_pairs[j];
+        pair *q = &w->pairs[i];
+        if (w->bodies[q->a]->state != STATE_DYNAMIC && w->bodies[q->b]->state != STATE_DYNAMIC)
+            continue; /* neither moves: never checked */
+        if (sched_boxes_apart(w, q->a, q->b)) {
+            if (!q->parked) {
+                sched_set(w, i, HUGE_VAL);
+                q->parked = true;
+            }
+        } else if (q->parked) {
+            sched_set(w, i, t);
+        }
+    }
+}
+
+bool sched_box_holds(const world *w, int k, const body *b, double t)
+{
+    const sched_box *x = &w->box[k];
+    if (b->state != STATE_DYNAMIC) return true; /* it stopped within */
+    return v3_len(b->v) <= x->speed + x->acc * (t - x->from) &&
+           v3_len(world_body_accel(w, b)) <= x->acc && b->jumped - x->jumped <= SCHED_JUMP;
+}
+
+bool sched_boxes_apart(const world *w, int a, int b)
+{
+    const sched_box *x = &w->box[a], *y = &w->box[b];
+    return x->hi.x < y->lo.x || y->hi.x < x->lo.x || x->hi.y < y->lo.y || y->hi.y < x->lo.y ||
+           x->hi.z < y->lo.z || y->hi.z < x->lo.z;
 }
 
 void sched_slide_ends(world *w, int k, double t)
 {
     if (!w->obj_first) return;
+    /* a box that counted the slide's lesser acceleration ends, and its parked
+     * pairs are due with the rest */
+    bool box_ends_now = w->box[k].acc < v3_len(world_accel(w)) && w->bodies[k]->state == STATE_DYNAMIC;
+    if (box_ends_now) box_ends(w, k, t);
     for (long j = w->obj_first[k]; j < w->obj_first[k + 1]; j++) {
         long i = w->obj_pairs[j];
         const pair *p = &w->pairs[i];
-        bool holds = p->far && !(p->a == k ? p->far_slide_a : p->far_slide_b);
+        if (p->parked && !box_ends_now) continue;
+        bool holds = !p->parked && p->far && !(p->a == k ? p->far_slide_a : p->far_slide_b);
         if (!holds && p->next > t) sched_set(w, i, t);
     }
 }
@@ -423,6 +536,7 @@ void sched_slide_ends(world *w, int k, double t)
 void sched_object_due(world *w, int k, double t)
 {
     if (!w->obj_first) return;
+    box_ends(w, k, t);
     for (long j = w->obj_first[k]; j < w->obj_first[k + 1]; j++) {
         long i = w->obj_pairs[j];
         if (w->pairs[i].next > t) sched_set(w, i, t);
@@ -431,10 +545,13 @@ void sched_object_due(world *w, int k, double t)
 
 int sched_check(const world *w)
 {
-    if (w->heap[w->npairs].next != HUGE_VAL) return -1; /* the end mark */
-    for (long pos = 0; pos < w->npairs; pos++) {
+    if (w->nheap != w->npairs + w->n || w->heap[w->nheap].next != HUGE_VAL) return -1; /* the end mark */
+    for (long pos = 0; pos < w->nheap; pos++) {
         long i = w->heap[pos].pair;
-        if (w->heap_pos[i] != pos || w->pairs[i].next != w->heap[pos].next) return -1;
+        if (i < 0 || i >= w->nheap || w->heap_pos[i] != pos) return -1;
+        if (i < w->npairs && (w->pairs[i].next != w->heap[pos].next ||
+                              (w->pairs[i].parked && w->pairs[i].next != HUGE_VAL)))
+            return -1;
         if (pos > 0 && w->heap[pos].next < w->heap[(pos - 1) / 2].next) return -1;
     }
     return 0;

@@ -92,24 +92,63 @@ double sched_left(const sched_bound *k, double t);
 double sched_predict_along(const world *w, const body *a, const body *b, double d, vec3 n, vec3 pa,
                            vec3 pb);
 
-/* Builds the heap over every pair, all due at time t, and the lists of each
- * object's pairs.  Returns 0, or -1 when out of memory. */
+/* The broad phase in front of the far pairs: each object's box, fixed in the
+ * world, holds the object from time `from` until `until`.  A still object's holds
+ * it where it is, until it moves (until is +inf).  A moving object's holds the
+ * sphere about its centre of mass that holds it, turned any way, wherever the
+ * bound of sched_predict_far lets the centre go: no faster than speed plus acc
+ * for each second since from, and moved at once by collisions by up to
+ * SCHED_JUMP in all (body.jumped since jumped).  While two objects' boxes do not
+ * meet they cannot touch, and their pair is parked: its time is +inf, and it is
+ * not checked, until one of the boxes is made again.  A box is made again when it
+ * ends (its entry in the heap comes due), or when its object leaves the bound:
+ * a collision beyond it (sched_box_holds), a slide whose lesser acceleration it
+ * counted that ends, a wake, a command. */
+typedef struct sched_box {
+    vec3 lo, hi;
+    double from, until;
+    double speed, acc, jumped;
+} sched_box;
+
+/* How far (m) a moving object's box reaches beyond the sphere that holds it:
+ * larger boxes last longer, smaller ones meet fewer others. */
+#define SCHED_BOX_REACH 0.25
+
+/* Builds the heap over every pair, all due at time t, and over every object's
+ * box, none made yet (they meet every box) and all ending at t; and the lists of
+ * each object's pairs.  Returns 0, or -1 when out of memory. */
 int sched_build(world *w, double t);
 
-/* Sets pair i's time to next and restores the heap. */
+/* Sets entry i's time to next and restores the heap: pair i's, or, for i >=
+ * npairs, the end of object i - npairs's box.  A pair given a time is parked no
+ * more. */
 void sched_set(world *w, long i, double next);
 
-/* The pair due first, or -1 for none; its time in *next. */
+/* The entry due first (pair, or npairs + k for object k's box), or -1 for none;
+ * its time in *next. */
 long sched_top(const world *w, double *next);
 
+/* Makes object k's box anew from o, object k at time from (where its flight
+ * starts), to last beyond t_end: parks its pairs whose boxes no longer meet, and
+ * makes due at t its parked pairs whose boxes meet now. */
+void sched_box_renew(world *w, int k, const body *o, double from, double t, double t_end);
+
+/* True when object k's box still holds it as b, its state since time t. */
+bool sched_box_holds(const world *w, int k, const body *b, double t);
+
+/* True when the boxes of objects a and b do not meet. */
+bool sched_boxes_apart(const world *w, int a, int b);
+
 /* Makes every pair of object k due at time t (sooner only: a pair already due
- * earlier keeps its time). */
+ * earlier keeps its time), and its box end at t (it meets every box until it is
+ * made again). */
 void sched_object_due(world *w, int k, double t);
 
 /* The same when object k's slide ends, and with it the part of the force its
  * support took: for its near pairs, and for the far ones whose times counted that
  * slide's lesser acceleration (pair.far_slide_a, far_slide_b); the other far ones
- * counted the whole force, and keep their times. */
+ * counted the whole force, and keep their times.  Its box ends, as its pairs
+ * come due, when it counted that acceleration; else its parked pairs stay so. */
 void sched_slide_ends(world *w, int k, double t);
 
 /* Checks the heap's invariants (for tests): 0 when they hold. */

@@ -1082,6 +1082,7 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
     pair *p = &w->pairs[i];
     p->checked = HUGE_VAL;
     p->along = false;
+    p->parked = false;
     if (!pair_moves(w, p)) return HUGE_VAL;
     if (w->set.collision_heap && (slides_clear(w, p->a, p->b) || slides_clear(w, p->b, p->a)))
         return HUGE_VAL;
@@ -1097,6 +1098,10 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
      * back, so that such a collision leaves the pair's time as it is. */
     p->far = false;
     if (w->set.collision_heap && !known) {
+        if (sched_boxes_apart(w, p->a, p->b)) { /* parked until a box is made again */
+            p->parked = true;
+            return HUGE_VAL;
+        }
         const body *a = at_start(w, p->a), *b = at_start(w, p->b);
         bool turn_a, turn_b;
         double from = flights_start(w, p), gap = bound_gap(a, b, &turn_a, &turn_b);
@@ -1162,6 +1167,12 @@ static pair *check_due(world *w, double now, double t_end, double *when)
     long aside = 0, i;
     double next;
     while ((i = sched_top(w, &next)) >= 0 && next <= t_end) {
+        if (i >= w->npairs) { /* an object's box ends: made again from its flight */
+            int k = (int)(i - w->npairs);
+            bool moves = w->snap[k].state == STATE_DYNAMIC;
+            sched_box_renew(w, k, at_start(w, k), moves ? w->snap_t[k] : next, next, t_end);
+            continue;
+        }
         w->st.heap_pops++;
         next = check_pair(w, i, now, t_end, &first, when);
         if (next <= t_end) {
@@ -1242,7 +1253,7 @@ static void repredict(world *w, long k, int i, const body *pre, double moved, do
  * that, the pair keeps its time.  A near pair that does not gets a new one from
  * its kept bound (repredict), unless the collision turned the object or moved it
  * more than a separation: it is due then. */
-static void reschedule(world *w, int i, const body *a, const body *b, double t)
+static void reschedule(world *w, int i, const body *a, const body *b, double t, double t_end)
 {
     double acc = v3_len(world_body_accel(w, a)), moved = v3_len(v3_sub(a->x, b->x));
     bool turned = a->q.w != b->q.w || a->q.x != b->q.x || a->q.y != b->q.y || a->q.z != b->q.z;
@@ -1251,12 +1262,15 @@ static void reschedule(world *w, int i, const body *a, const body *b, double t)
         sched_object_due(w, i, t);
         return;
     }
+    /* its box holds, or is made again from here (its parked pairs wait on) */
+    if (w->set.collision_heap && !sched_box_holds(w, i, b, t)) sched_box_renew(w, i, b, t, t, t_end);
     bool jolted = turned || moved > SIM_SEPARATION; /* beyond what a near bound keeps */
     double v = v3_len(b->v);
     bool spun = v3_len(b->L) > v3_len(a->L);
     for (long j = w->obj_first[i]; j < w->obj_first[i + 1]; j++) {
         long k = w->obj_pairs[j];
         const pair *q = &w->pairs[k];
+        if (q->parked) continue;
         bool keep = q->checked <= t; /* found from speeds at an earlier instant */
         if (keep) keep = v <= (q->a == i ? q->speed_a : q->speed_b) + acc * (t - q->checked);
         if (keep && q->far)
@@ -1299,7 +1313,7 @@ static void answer(world *w, pair *p, double t, double t_end)
         w->bodies[i]->jumped += v3_len(v3_sub(body_com(w->bodies[i]), body_com(&w->pre[i])));
         renew_flight(w, i, t);
         /* its motion changed: its pairs are due again, unless their times hold */
-        reschedule(w, i, &w->pre[i], w->bodies[i], t);
+        reschedule(w, i, &w->pre[i], w->bodies[i], t, t_end);
     }
     for (int i = 0; i < w->n; i++) {
         if (!w->touched[i]) continue;

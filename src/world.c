@@ -73,6 +73,9 @@ void world_free(world *w)
     free(w->bound);
     free(w->obj_first);
     free(w->obj_pairs);
+    free(w->box);
+    w->box = NULL;
+    w->nheap = 0;
     w->heap = NULL;
     w->heap_pos = NULL;
     w->bound = NULL;

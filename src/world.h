@@ -91,6 +91,9 @@ typedef struct {
     bool far_slide_a, far_slide_b; /* counting that object's slide's lesser
                            * acceleration (only a steady slide's: body.slide_steady) */
     double speed_a, speed_b; /* the speeds next was found from (slack included) */
+    bool parked;          /* its time is +inf because its objects' boxes do not
+                           * meet (schedule.h, sched_box): it waits until one of
+                           * them is made again */
 } pair;
 
 /* A pair's first contact as its time of impact found it (sim.c): the pair at
@@ -103,10 +106,10 @@ typedef struct {
 } pair_hit;
 
 /* An entry of the schedule's heap: a pair's time, kept next to its index so that
- * sifting reads no pair. */
+ * sifting reads no pair; or the time an object's box ends. */
 typedef struct {
     double next;
-    long pair;
+    long pair;            /* a pair, or npairs + k for object k's box */
 } sched_entry;
 
 typedef struct world {
@@ -128,10 +131,13 @@ typedef struct world {
     pair_hit *hits;       /* each pair's last first contact found */
     long npairs, cappairs;
     bool pairs_dirty;     /* objects were added, deleted or changed mass */
-    sched_entry *heap;    /* the schedule: a binary min-heap of (next, pair), and
+    sched_entry *heap;    /* the schedule: a binary min-heap of (next, pair) over
+                           * the pairs and the objects' boxes (nheap entries), and
                            * after the last an end mark that no time precedes */
-    long *heap_pos;       /* each pair's place in it (apart from the pairs, so that
+    long *heap_pos;       /* each entry's place in it (apart from the pairs, so that
                            * sifting writes no pair) */
+    long nheap;
+    struct sched_box *box; /* each object's box (schedule.h) */
     struct sched_bound *bound; /* each near pair's bound, as its time was found */
     long *obj_first;      /* the pairs of object k: obj_pairs[obj_first[k] .. */
     long *obj_pairs;      /*   obj_first[k + 1] - 1] */

@@ -492,6 +492,90 @@ static void heap_on_and_off_agree(void **state)
     world_free(&ws[1]);
 }
 
+/* Runs w (heap on) for n frames, and fails unless after every one each moving
+ * object's bounding sphere lies within its box (sched_box) and every parked pair
+ * waits at +inf with boxes that do not meet: so no parked pair can touch.
+ * Returns the parked pairs seen, frame by frame. */
+static long frames_in_boxes(world *w, int n)
+{
+    char err[256];
+    long parked = 0;
+    for (int f = 0; f < n; f++) {
+        assert_int_equal(sim_frame(w, err, sizeof err), 0);
+        assert_int_equal(sched_check(w), 0);
+        for (int k = 0; k < w->n; k++) {
+            const body *b = w->bodies[k];
+            const sched_box *x = &w->box[k];
+            if (b->state != STATE_DYNAMIC) continue;
+            vec3 c = body_com(b), r = v3(b->shape.r_out, b->shape.r_out, b->shape.r_out);
+            vec3 lo = v3_sub(c, r), hi = v3_add(c, r);
+            if (lo.x < x->lo.x || lo.y < x->lo.y || lo.z < x->lo.z || hi.x > x->hi.x ||
+                hi.y > x->hi.y || hi.z > x->hi.z)
+                fail_msg("frame %ld: %s is out of its box", w->frame, b->name);
+        }
+        for (long i = 0; i < w->npairs; i++) {
+            const pair *p = &w->pairs[i];
+            if (!p->parked) continue;
+            parked++;
+            assert_true(p->next == HUGE_VAL);
+            assert_true(sched_boxes_apart(w, p->a, p->b));
+        }
+    }
+    return parked;
+}
+
+/* The broad phase in a pile of thrown objects: boxes made again when they end,
+ * and after collisions beyond them. */
+static void boxes_hold_a_pile(void **state)
+{
+    (void)state;
+    world w;
+    pile(&w, true);
+    w.set.time_step = 0.02; /* a look after every internal step or two */
+    long parked = frames_in_boxes(&w, 200);
+    print_message("%ld parked pairs seen in 200 frames; %ld collisions\n", parked, w.st.collisions);
+    assert_true(w.st.collisions > 50);
+    assert_true(parked > 200 * w.npairs / 4); /* a quarter of the pairs, or more */
+    world_free(&w);
+}
+
+/* The broad phase when motion leaves a box's bound without a collision beyond
+ * it: a box that slides slowly on a high table (its box counts the slide's lesser
+ * acceleration) goes over the edge and falls; a ball slides along the floor into
+ * a box at rest there (its box holds it where it is) and sets it moving. */
+static void boxes_end_when_a_slide_ends_or_a_rest(void **state)
+{
+    (void)state;
+    world w;
+    world_init(&w);
+    w.set.collision_heap = true;
+    w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
+    w.set.time_step = 0.02;
+    add_static_box(&w, "floor", v3(4, 4, 0.1))->x = v3(0, 0, -0.1);
+    add_static_box(&w, "table", v3(0.5, 0.5, 0.05))->x = v3(-1, 0, 2);
+    body *slider = add_box(&w, "slider", v3(0.1, 0.1, 0.1));
+    slider->x = v3(-1.3, 0, 2.151);
+    slider->v = v3(0.2, 0, 0);
+    body *still = add_box(&w, "still", v3(0.1, 0.1, 0.1));
+    still->x = v3(1, 0, 0.101);
+    body *ball = add_ball(&w, "ball", 0.1);
+    ball->x = v3(-0.3, 0, 0.101);
+    ball->v = v3(1, 0, 0);
+    slider->elasticity = still->elasticity = ball->elasticity = 0;
+    bool rested = false;
+    long parked = 0;
+    for (int f = 0; f < 300; f++) {
+        parked += frames_in_boxes(&w, 1);
+        rested = rested || still->state == STATE_RESTING;
+    }
+    print_message("slider at z %.3f, still box at x %.3f (rested first: %s); %ld parked pairs\n",
+                  slider->x.z, still->x.x, rested ? "yes" : "no", parked);
+    assert_true(slider->x.z < 0.5); /* fell off */
+    assert_true(rested && still->x.x > 1.05); /* rested, then struck */
+    assert_true(parked > 0);
+    world_free(&w);
+}
+
 /* sim_prepare (what `start` does before time runs) leaves the schedule built and
  * the scratch of the steps in place, and changes no trajectory. */
 static void prepared_worlds_move_the_same(void **state)
@@ -526,6 +610,8 @@ int main(void)
         cmocka_unit_test(along_predictions_are_never_late),
         cmocka_unit_test(along_stops_at_the_speed_limit),
         cmocka_unit_test(heap_on_and_off_agree),
+        cmocka_unit_test(boxes_hold_a_pile),
+        cmocka_unit_test(boxes_end_when_a_slide_ends_or_a_rest),
         cmocka_unit_test(prepared_worlds_move_the_same),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
