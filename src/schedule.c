@@ -351,13 +351,15 @@ int sched_build(world *w, double t)
     sched_bound *bound = malloc((size_t)(np ? np : 1) * sizeof *bound);
     long *first = malloc((size_t)(w->n + 1) * sizeof *first);
     long *list = malloc((size_t)(2 * np + 1) * sizeof *list);
+    int *other = malloc((size_t)(2 * np + 1) * sizeof *other);
     sched_box *box = malloc((size_t)(w->n ? w->n : 1) * sizeof *box);
-    if (!heap || !pos || !bound || !first || !list || !box) {
+    if (!heap || !pos || !bound || !first || !list || !other || !box) {
         free(heap);
         free(pos);
         free(bound);
         free(first);
         free(list);
+        free(other);
         free(box);
         return -1;
     }
@@ -366,12 +368,14 @@ int sched_build(world *w, double t)
     free(w->bound);
     free(w->obj_first);
     free(w->obj_pairs);
+    free(w->obj_other);
     free(w->box);
     w->heap = heap;
     w->heap_pos = pos;
     w->bound = bound;
     w->obj_first = first;
     w->obj_pairs = list;
+    w->obj_other = other;
     w->box = box;
     w->nheap = nh;
     for (int k = 0; k <= w->n; k++) first[k] = 0;
@@ -384,8 +388,11 @@ int sched_build(world *w, double t)
     if (!fill) return -1;
     for (int k = 0; k <= w->n; k++) fill[k] = first[k];
     for (long i = 0; i < np; i++) {
-        list[fill[w->pairs[i].a]++] = i;
-        list[fill[w->pairs[i].b]++] = i;
+        int a = w->pairs[i].a, b = w->pairs[i].b;
+        other[fill[a]] = b;
+        list[fill[a]++] = i;
+        other[fill[b]] = a;
+        list[fill[b]++] = i;
     }
     free(fill);
     for (long i = 0; i < np; i++) {
@@ -424,6 +431,13 @@ long sched_top(const world *w, double *next)
 }
 
 /* ---- the boxes ---- */
+
+/* True when boxes x and y do not meet. */
+static bool apart(const sched_box *x, const sched_box *y)
+{
+    return x->hi.x < y->lo.x || y->hi.x < x->lo.x || x->hi.y < y->lo.y || y->hi.y < x->lo.y ||
+           x->hi.z < y->lo.z || y->hi.z < x->lo.z;
+}
 
 /* Object k's box ends at t: until it is made again it meets every other. */
 static void box_ends(world *w, int k, double t)
@@ -486,12 +500,13 @@ void sched_box_renew(world *w, int k, const body *o, double from, double t, doub
         x->acc = acc;
     }
     sched_set(w, w->npairs + k, x->until);
+    /* a still object's box lies within the one it had (which held it): its
+     * parked pairs stay so, and the others are left to the moving objects' boxes */
+    if (o->state != STATE_DYNAMIC) return;
     for (long j = w->obj_first[k]; j < w->obj_first[k + 1]; j++) {
         long i = w->obj_pairs[j];
         pair *q = &w->pairs[i];
-        if (w->bodies[q->a]->state != STATE_DYNAMIC && w->bodies[q->b]->state != STATE_DYNAMIC)
-            continue; /* neither moves: never checked */
-        if (sched_boxes_apart(w, q->a, q->b)) {
+        if (apart(x, &w->box[w->obj_other[j]])) {
             if (!q->parked) {
                 sched_set(w, i, HUGE_VAL);
                 q->parked = true;
@@ -512,9 +527,7 @@ bool sched_box_holds(const world *w, int k, const body *b, double t)
 
 bool sched_boxes_apart(const world *w, int a, int b)
 {
-    const sched_box *x = &w->box[a], *y = &w->box[b];
-    return x->hi.x < y->lo.x || y->hi.x < x->lo.x || x->hi.y < y->lo.y || y->hi.y < x->lo.y ||
-           x->hi.z < y->lo.z || y->hi.z < x->lo.z;
+    return apart(&w->box[a], &w->box[b]);
 }
 
 void sched_slide_ends(world *w, int k, double t)

@@ -73,7 +73,9 @@ void world_free(world *w)
     free(w->bound);
     free(w->obj_first);
     free(w->obj_pairs);
+    free(w->obj_other);
     free(w->box);
+    w->obj_other = NULL;
     w->box = NULL;
     w->nheap = 0;
     w->heap = NULL;

@@ -140,7 +140,8 @@ typedef struct world {
     struct sched_box *box; /* each object's box (schedule.h) */
     struct sched_bound *bound; /* each near pair's bound, as its time was found */
     long *obj_first;      /* the pairs of object k: obj_pairs[obj_first[k] .. */
-    long *obj_pairs;      /*   obj_first[k + 1] - 1] */
+    long *obj_pairs;      /*   obj_first[k + 1] - 1], */
+    int *obj_other;       /*   and the other object of each */
     bool sched_dirty;     /* a command changed something: every pair is due, and
                            * the simulation copies its bodies afresh (set it after
                            * changing a body other than by its state, x to the end) */
