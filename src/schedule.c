@@ -353,7 +353,8 @@ int sched_build(world *w, double t)
     long *list = malloc((size_t)(2 * np + 1) * sizeof *list);
     int *other = malloc((size_t)(2 * np + 1) * sizeof *other);
     sched_box *box = malloc((size_t)(w->n ? w->n : 1) * sizeof *box);
-    if (!heap || !pos || !bound || !first || !list || !other || !box) {
+    bool *parked = malloc((size_t)(np ? np : 1) * sizeof *parked);
+    if (!heap || !pos || !bound || !first || !list || !other || !box || !parked) {
         free(heap);
         free(pos);
         free(bound);
@@ -361,6 +362,7 @@ int sched_build(world *w, double t)
         free(list);
         free(other);
         free(box);
+        free(parked);
         return -1;
     }
     free(w->heap);
@@ -370,6 +372,7 @@ int sched_build(world *w, double t)
     free(w->obj_pairs);
     free(w->obj_other);
     free(w->box);
+    free(w->parked);
     w->heap = heap;
     w->heap_pos = pos;
     w->bound = bound;
@@ -377,6 +380,7 @@ int sched_build(world *w, double t)
     w->obj_pairs = list;
     w->obj_other = other;
     w->box = box;
+    w->parked = parked;
     w->nheap = nh;
     for (int k = 0; k <= w->n; k++) first[k] = 0;
     for (long i = 0; i < np; i++) {
@@ -397,7 +401,7 @@ int sched_build(world *w, double t)
     free(fill);
     for (long i = 0; i < np; i++) {
         w->pairs[i].next = t;
-        w->pairs[i].parked = false;
+        parked[i] = false;
         place(w, i, (sched_entry){t, i}); /* all equal: already a heap */
         bound[i] = (sched_bound){.dist = 0}; /* none kept yet */
     }
@@ -416,7 +420,7 @@ void sched_set(world *w, long i, double next)
     double old = w->heap[pos].next;
     if (i < w->npairs) {
         w->pairs[i].next = next;
-        if (next < HUGE_VAL) w->pairs[i].parked = false;
+        if (next < HUGE_VAL) w->parked[i] = false;
     }
     w->heap[pos].next = next;
     if (next < old) sift_up(w, pos);
@@ -505,13 +509,12 @@ void sched_box_renew(world *w, int k, const body *o, double from, double t, doub
     if (o->state != STATE_DYNAMIC) return;
     for (long j = w->obj_first[k]; j < w->obj_first[k + 1]; j++) {
         long i = w->obj_pairs[j];
-        pair *q = &w->pairs[i];
         if (apart(x, &w->box[w->obj_other[j]])) {
-            if (!q->parked) {
+            if (!w->parked[i]) {
                 sched_set(w, i, HUGE_VAL);
-                q->parked = true;
+                w->parked[i] = true;
             }
-        } else if (q->parked) {
+        } else if (w->parked[i]) {
             sched_set(w, i, t);
         }
     }
@@ -540,8 +543,8 @@ void sched_slide_ends(world *w, int k, double t)
     for (long j = w->obj_first[k]; j < w->obj_first[k + 1]; j++) {
         long i = w->obj_pairs[j];
         const pair *p = &w->pairs[i];
-        if (p->parked && !box_ends_now) continue;
-        bool holds = !p->parked && p->far && !(p->a == k ? p->far_slide_a : p->far_slide_b);
+        if (w->parked[i] && !box_ends_now) continue;
+        bool holds = !w->parked[i] && p->far && !(p->a == k ? p->far_slide_a : p->far_slide_b);
         if (!holds && p->next > t) sched_set(w, i, t);
     }
 }
@@ -563,7 +566,7 @@ int sched_check(const world *w)
         long i = w->heap[pos].pair;
         if (i < 0 || i >= w->nheap || w->heap_pos[i] != pos) return -1;
         if (i < w->npairs && (w->pairs[i].next != w->heap[pos].next ||
-                              (w->pairs[i].parked && w->pairs[i].next != HUGE_VAL)))
+                              (w->parked[i] && w->pairs[i].next != HUGE_VAL)))
             return -1;
         if (pos > 0 && w->heap[pos].next < w->heap[(pos - 1) / 2].next) return -1;
     }

@@ -1082,7 +1082,7 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
     pair *p = &w->pairs[i];
     p->checked = HUGE_VAL;
     p->along = false;
-    p->parked = false;
+    w->parked[i] = false;
     if (!pair_moves(w, p)) return HUGE_VAL;
     if (w->set.collision_heap && (slides_clear(w, p->a, p->b) || slides_clear(w, p->b, p->a)))
         return HUGE_VAL;
@@ -1099,7 +1099,7 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
     p->far = false;
     if (w->set.collision_heap && !known) {
         if (sched_boxes_apart(w, p->a, p->b)) { /* parked until a box is made again */
-            p->parked = true;
+            w->parked[i] = true;
             return HUGE_VAL;
         }
         const body *a = at_start(w, p->a), *b = at_start(w, p->b);
@@ -1270,7 +1270,7 @@ static void reschedule(world *w, int i, const body *a, const body *b, double t, 
     for (long j = w->obj_first[i]; j < w->obj_first[i + 1]; j++) {
         long k = w->obj_pairs[j];
         const pair *q = &w->pairs[k];
-        if (q->parked) continue;
+        if (w->parked[k]) continue;
         bool keep = q->checked <= t; /* found from speeds at an earlier instant */
         if (keep) keep = v <= (q->a == i ? q->speed_a : q->speed_b) + acc * (t - q->checked);
         if (keep && q->far)

@@ -75,8 +75,10 @@ void world_free(world *w)
     free(w->obj_pairs);
     free(w->obj_other);
     free(w->box);
+    free(w->parked);
     w->obj_other = NULL;
     w->box = NULL;
+    w->parked = NULL;
     w->nheap = 0;
     w->heap = NULL;
     w->heap_pos = NULL;

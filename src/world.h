@@ -91,9 +91,6 @@ typedef struct {
     bool far_slide_a, far_slide_b; /* counting that object's slide's lesser
                            * acceleration (only a steady slide's: body.slide_steady) */
     double speed_a, speed_b; /* the speeds next was found from (slack included) */
-    bool parked;          /* its time is +inf because its objects' boxes do not
-                           * meet (schedule.h, sched_box): it waits until one of
-                           * them is made again */
 } pair;
 
 /* A pair's first contact as its time of impact found it (sim.c): the pair at
@@ -138,6 +135,10 @@ typedef struct world {
                            * sifting writes no pair) */
     long nheap;
     struct sched_box *box; /* each object's box (schedule.h) */
+    bool *parked;         /* each pair's: its time is +inf because its objects'
+                           * boxes do not meet; it waits until one of them is
+                           * made again (apart from the pairs, so that a box's
+                           * renewal reads no pair) */
     struct sched_bound *bound; /* each near pair's bound, as its time was found */
     long *obj_first;      /* the pairs of object k: obj_pairs[obj_first[k] .. */
     long *obj_pairs;      /*   obj_first[k + 1] - 1], */

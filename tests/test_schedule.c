@@ -515,7 +515,7 @@ static long frames_in_boxes(world *w, int n)
         }
         for (long i = 0; i < w->npairs; i++) {
             const pair *p = &w->pairs[i];
-            if (!p->parked) continue;
+            if (!w->parked[i]) continue;
             parked++;
             assert_true(p->next == HUGE_VAL);
             assert_true(sched_boxes_apart(w, p->a, p->b));
