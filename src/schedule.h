@@ -10,7 +10,10 @@
  * (sched_predict_along), later where the objects do not come on straight; such a
  * time holds only while both fly on as they did.  A collision that changes
  * an object's motion gives its near pairs new times from the bounds they were
- * found with (sched_bound), or makes them due (sim.c, reschedule).
+ * found with (sched_bound), or makes them due (sim.c, reschedule).  In front of
+ * the far pairs, a broad phase: each object has a box that holds it for a while
+ * (sched_box), and a pair whose boxes do not meet waits outside the heap's order
+ * until one of them is made again.
  */
 #ifndef VROC_SCHEDULE_H
 #define VROC_SCHEDULE_H

@@ -1252,7 +1252,9 @@ static void repredict(world *w, long k, int i, const body *pre, double moved, do
  * the normal (pair.along), from exactly the motions then.  Where b keeps within
  * that, the pair keeps its time.  A near pair that does not gets a new one from
  * its kept bound (repredict), unless the collision turned the object or moved it
- * more than a separation: it is due then. */
+ * more than a separation: it is due then.  Parked pairs wait on: the object's
+ * box still holds it (sched_box_holds), or is made again from t, which parks
+ * them or makes them due. */
 static void reschedule(world *w, int i, const body *a, const body *b, double t, double t_end)
 {
     double acc = v3_len(world_body_accel(w, a)), moved = v3_len(v3_sub(a->x, b->x));
