@@ -82,6 +82,16 @@ double sched_predict(const world *w, const pair *p, double d)
     return sched_predict_bodies(w, w->bodies[p->a], w->bodies[p->b], d);
 }
 
+/* When the centre of an object whose bound is r has gone left (> 0) at most;
+ * HUGE_VAL when it never does. */
+static double centre_time(const sched_reach *r, double left)
+{
+    if (r->s >= r->vmax) return left / r->vmax;
+    double t = r->acc > 0 ? 2 * left / (r->s + sqrt(r->s * r->s + 2 * r->acc * left))
+                          : (r->s > 0 ? left / r->s : HUGE_VAL);
+    return t > r->t_lin ? left / r->vmax : t; /* at the speed limit by then */
+}
+
 /* The root above lo of the quadratic a + b t + c t^2 = target (b, c >= 0), or
  * HUGE_VAL when it never gets there. */
 static double piece_root(double a, double b, double c, double target)
@@ -127,15 +137,9 @@ static double predict(const world *w, const body *a, const body *b, double d, bo
     if (target <= 0) return 0;
     if (n == 1 && r[0].t_rot == 0) { /* one object, its turn all at once: in closed form */
         const sched_reach *o = &r[0];
-        double left = target - o->cap, t;
+        double left = target - o->cap;
         if (left <= 0) return 0;
-        if (o->s >= o->vmax) {
-            t = left / o->vmax;
-        } else {
-            t = o->acc > 0 ? 2 * left / (o->s + sqrt(o->s * o->s + 2 * o->acc * left))
-                           : (o->s > 0 ? left / o->s : HUGE_VAL);
-            if (t > o->t_lin) t = left / o->vmax; /* at the speed limit by then */
-        }
+        double t = centre_time(o, left);
         if (t == HUGE_VAL) return HUGE_VAL;
         t *= 1 - 1e-12;
         while (t > 0 && eval(r, 1, t) >= target) t *= 1 - 1e-9; /* never late */
@@ -487,13 +491,7 @@ void sched_box_renew(world *w, int k, const body *o, double from, double t, doub
         double acc = v3_len(whole ? world_accel(w) : world_body_accel(w, o));
         sched_reach r = terms_of(o, acc, w->set.max_linear, SCHED_SLACK, true, false);
         /* long enough to reach SCHED_BOX_REACH, and past the step's end */
-        double span, left = SCHED_BOX_REACH;
-        if (r.s >= r.vmax) span = left / r.vmax;
-        else {
-            span = r.acc > 0 ? 2 * left / (r.s + sqrt(r.s * r.s + 2 * r.acc * left)) : left / r.s;
-            if (span > r.t_lin) span = left / r.vmax;
-        }
-        x->until = from + span;
+        x->until = from + centre_time(&r, SCHED_BOX_REACH);
         if (!(x->until > t_end)) x->until = nextafter(t_end, HUGE_VAL);
         double reach = eval(&r, 1, x->until - from) + o->shape.r_out + SCHED_JUMP;
         reach += 1e-9 * (1 + reach); /* for rounding */
