@@ -369,14 +369,7 @@ int sched_build(world *w, double t)
         free(parked);
         return -1;
     }
-    free(w->heap);
-    free(w->heap_pos);
-    free(w->bound);
-    free(w->obj_first);
-    free(w->obj_pairs);
-    free(w->obj_other);
-    free(w->box);
-    free(w->parked);
+    world_free_schedule(w);
     w->heap = heap;
     w->heap_pos = pos;
     w->bound = bound;

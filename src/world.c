@@ -49,6 +49,26 @@ void world_init(world *w)
     w->set = settings_defaults();
 }
 
+void world_free_schedule(world *w)
+{
+    free(w->heap);
+    free(w->heap_pos);
+    free(w->bound);
+    free(w->obj_first);
+    free(w->obj_pairs);
+    free(w->obj_other);
+    free(w->box);
+    free(w->parked);
+    w->heap = NULL;
+    w->heap_pos = NULL;
+    w->bound = NULL;
+    w->obj_first = w->obj_pairs = NULL;
+    w->obj_other = NULL;
+    w->box = NULL;
+    w->parked = NULL;
+    w->nheap = 0;
+}
+
 void world_free(world *w)
 {
     for (int i = 0; i < w->n; i++) {
@@ -68,22 +88,7 @@ void world_free(world *w)
     free(w->end_id);
     free(w->touched);
     free(w->movers);
-    free(w->heap);
-    free(w->heap_pos);
-    free(w->bound);
-    free(w->obj_first);
-    free(w->obj_pairs);
-    free(w->obj_other);
-    free(w->box);
-    free(w->parked);
-    w->obj_other = NULL;
-    w->box = NULL;
-    w->parked = NULL;
-    w->nheap = 0;
-    w->heap = NULL;
-    w->heap_pos = NULL;
-    w->bound = NULL;
-    w->obj_first = w->obj_pairs = NULL;
+    world_free_schedule(w);
     free(w->due);
     free(w->due_next);
     w->due = NULL;

@@ -169,6 +169,10 @@ void world_init(world *w);
  * world_init). */
 void world_free(world *w);
 
+/* Frees the schedule's arrays (schedule.c builds them: heap to parked), leaving
+ * none. */
+void world_free_schedule(world *w);
+
 /* Index of the object named name, or -1. */
 int world_find(const world *w, const char *name);
 
