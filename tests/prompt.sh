@@ -70,12 +70,16 @@ type_ C-d
 check_screen "Ctrl-D leaves with status 0" "EXIT=0"
 if grep -q "^stereo = anaglyph *$" "$TMP/.vroc_history" 2>/dev/null; then ok "history kept in ~/.vroc_history"
 else notok "history kept in ~/.vroc_history" "$(cat "$TMP/.vroc_history" 2>&1)"; fi
-tmux kill-session -t "$SES" 2>/dev/null
 
-# a second session recalls the first one's history
+# a second session recalls the first one's history.  It starts before the first one is
+# killed: killing a server's last session makes the server exit, and a new-session sent
+# while it exits can fail ("server exited unexpectedly").
+FIRST=$SES
+SES=vroc$$b
 tmux -f /dev/null new-session -d -s "$SES" -x 120 -y 40 \
     "cd '$TMP' && HOME='$TMP' ASAN_OPTIONS='$ASAN_OPTIONS' '$VROC' -q; echo EXIT=\$?; sleep 30"
-wait_for "vroc>" >/dev/null
+tmux kill-session -t "$FIRST" 2>/dev/null
+check_screen "a second session starts" "vroc>"
 type_ Up
 check_screen "history survives between sessions" "vroc> list"
 type_ C-u "quit" Enter
