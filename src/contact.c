@@ -65,34 +65,40 @@ static int support_walk(const poly *h, vec3 dl, double tol, int *idx, int max)
     return n;
 }
 
-/* Supporting points of b in direction d (world): those within tol of the furthest,
- * in plane coordinates (u, v).  Returns the count (at most max, itself at most
- * CONTACT_MAX_SUPPORT; 0 when out of memory). */
-static int support_set(const body *b, vec3 d, vec3 u, vec3 v, double tol, p2 *out, int max)
+/* The supporting set of b in direction d (world): the hull's vertices within tol
+ * of the furthest, their indices in idx (room for CONTACT_MAX_SUPPORT).  Returns
+ * the count (0 when out of memory); a sphere's is its one point (idx unused). */
+typedef struct {
+    int n;
+    int idx[CONTACT_MAX_SUPPORT];
+} support;
+
+static void support_find(const body *b, vec3 d, double tol, support *s)
+{
+    if (b->sp.kind == SHAPE_SPHERE) {
+        s->n = 1;
+        return;
+    }
+    const poly *h = b->shape.hull;
+    vec3 dl = q_unrotate(b->q, d);
+    int max = h->nv < CONTACT_MAX_SUPPORT ? h->nv : CONTACT_MAX_SUPPORT;
+    s->n = h->nv <= SUPPORT_SCAN ? support_scan(h, dl, tol, s->idx, max)
+                                 : support_walk(h, dl, tol, s->idx, max);
+}
+
+/* Those points (found in direction d) in plane coordinates (u, v), in out. */
+static void support_place(const body *b, vec3 d, const support *s, vec3 u, vec3 v, p2 *out)
 {
     if (b->sp.kind == SHAPE_SPHERE) {
         vec3 p = v3_mad(body_com(b), v3_norm(d), b->sp.radius);
         out[0] = (p2){v3_dot(p, u), v3_dot(p, v)};
-        return 1;
+        return;
     }
     const poly *h = b->shape.hull;
-    vec3 dl = q_unrotate(b->q, d);
-    int idx[CONTACT_MAX_SUPPORT];
-    int n = h->nv <= SUPPORT_SCAN ? support_scan(h, dl, tol, idx, max) : support_walk(h, dl, tol, idx, max);
-    for (int i = 0; i < n; i++) {
-        vec3 p = v3_add(b->x, q_rotate(b->q, h->v[idx[i]]));
+    for (int i = 0; i < s->n; i++) {
+        vec3 p = v3_add(b->x, q_rotate(b->q, h->v[s->idx[i]]));
         out[i] = (p2){v3_dot(p, u), v3_dot(p, v)};
     }
-    return n;
-}
-
-/* How many supporting points b can have: one for a sphere, else its vertices, up
- * to CONTACT_MAX_SUPPORT. */
-static int support_room(const body *b)
-{
-    if (b->sp.kind == SHAPE_SPHERE) return 1;
-    int nv = b->shape.hull->nv;
-    return nv < CONTACT_MAX_SUPPORT ? nv : CONTACT_MAX_SUPPORT;
 }
 
 /* Room for n points: local (nlocal of them) when they fit, else allocated (NULL
@@ -123,12 +129,32 @@ static int cmp_p2(const void *a, const void *b)
     return p->y < q->y ? -1 : p->y > q->y;
 }
 
+/* True when p comes before q: by x, then by y. */
+static bool before_p2(p2 p, p2 q) { return p.x < q.x || (p.x == q.x && p.y < q.y); }
+
+/* Sorts the n points by x, then by y.  A few corners, as most sets are, by
+ * insertion: qsort's calls cost more than such a sort. */
+static void sort_p2(p2 *pts, int n)
+{
+    if (n > 16) {
+        qsort(pts, (size_t)n, sizeof *pts, cmp_p2);
+        return;
+    }
+    for (int i = 1; i < n; i++) {
+        p2 x = pts[i];
+        int j = i;
+        for (; j > 0 && before_p2(x, pts[j - 1]); j--) pts[j] = pts[j - 1];
+        pts[j] = x;
+    }
+}
+
 /* Convex hull in place, counter-clockwise (Andrew's monotone chain); returns the
- * count: 1 a point, 2 a segment, >= 3 a polygon.  pts needs room for 2n points. */
+ * count: 1 a point, 2 a segment, >= 3 a polygon.  pts needs room for 2n + 1 points
+ * (the chain closes on its first point). */
 static int hull2(p2 *pts, int n, double eps)
 {
     if (n <= 1) return n;
-    qsort(pts, (size_t)n, sizeof *pts, cmp_p2);
+    sort_p2(pts, n);
     p2 *h = pts + n;
     int k = 0;
     for (int i = 0; i < n; i++) {
@@ -145,11 +171,12 @@ static int hull2(p2 *pts, int n, double eps)
     return k;
 }
 
-/* Clips polygon (n points, ccw) by the half-plane left of a->b; returns the count. */
-static int clip_poly(const p2 *in, int n, p2 a, p2 b, p2 *out)
+/* Clips polygon (n points, ccw) by the half-plane left of a->b into out, which has
+ * room for room points (a convex one gains at most one corner); returns the count. */
+static int clip_poly(const p2 *in, int n, p2 a, p2 b, p2 *out, int room)
 {
     int m = 0;
-    for (int i = 0; i < n; i++) {
+    for (int i = 0; i < n && m + 2 <= room; i++) {
         p2 p = in[i], q = in[(i + 1) % n];
         double dp = cross2(a, b, p), dq = cross2(a, b, q);
         if (dp >= 0) out[m++] = p;
@@ -231,6 +258,7 @@ typedef struct {
     p2 c;     /* the centre */
     p2 *pts;  /* where the points are worked on: local, or allocated */
     p2 local[12 * LOCAL_SUPPORT];
+    support sa, sb; /* the supporting sets of the two objects */
 } region;
 
 /* Finds the region: false when out of memory.  n is 0 when the features do not
@@ -246,17 +274,21 @@ static bool region_of(const body *a, const body *b, const closest_result *r, dou
     if (a->sp.kind == SHAPE_SPHERE || b->sp.kind == SHAPE_SPHERE) return true;
     plane_axes(n, &z->u, &z->v);
     z->h = 0.5 * v3_dot(v3_add(r->pa, r->pb), n);
+    /* a's features facing b lie along -n; b's facing a along +n */
+    support *fa = &z->sa, *fb = &z->sb;
+    support_find(a, v3_neg(n), tol, fa);
+    support_find(b, n, tol, fb);
     /* each set, and room for its hull (hull2); two buffers for the clipping, which
      * adds at most one corner per edge it clips by */
-    int ka = support_room(a), kb = support_room(b), clip = 2 * (ka + kb);
-    p2 *sa = z->pts = room_for(z->local, 12 * LOCAL_SUPPORT, 2 * ka + 2 * kb + 2 * clip);
-    if (!sa) return false;
-    p2 *sb = sa + 2 * ka;
-    p2 *buf[2] = {sb + 2 * kb, sb + 2 * kb + clip};
+    int ka = fa->n, kb = fb->n, clip = 2 * (ka + kb);
+    p2 *sa = z->pts = room_for(z->local, 12 * LOCAL_SUPPORT, 2 * ka + 2 * kb + 2 + 2 * clip);
+    if (!sa || ka == 0 || kb == 0) return false;
+    p2 *sb = sa + 2 * ka + 1;
+    p2 *buf[2] = {sb + 2 * kb + 1, sb + 2 * kb + 1 + clip};
     z->p = buf[0];
-    /* a's features facing b lie along -n; b's facing a along +n */
-    int na = support_set(a, v3_neg(n), z->u, z->v, tol, sa, ka);
-    int nb = support_set(b, n, z->u, z->v, tol, sb, kb);
+    support_place(a, v3_neg(n), fa, z->u, z->v, sa);
+    support_place(b, n, fb, z->u, z->v, sb);
+    int na = ka, nb = kb;
     double eps = 1e-12 * (a->shape.r_out + b->shape.r_out) * (a->shape.r_out + b->shape.r_out);
     na = hull2(sa, na, eps);
     nb = hull2(sb, nb, eps);
@@ -264,7 +296,7 @@ static bool region_of(const body *a, const body *b, const closest_result *r, dou
         int m = na, cur = 0;
         for (int i = 0; i < m; i++) buf[0][i] = sa[i];
         for (int i = 0; i < nb && m > 0; i++) {
-            m = clip_poly(buf[cur], m, sb[i], sb[(i + 1) % nb], buf[1 - cur]);
+            m = clip_poly(buf[cur], m, sb[i], sb[(i + 1) % nb], buf[1 - cur], clip);
             cur = 1 - cur;
         }
         z->p = buf[cur];
@@ -318,11 +350,13 @@ bool contact_stable(const body *m, vec3 n, double tol)
     if (m->sp.kind == SHAPE_SPHERE) return true;
     vec3 u, v;
     plane_axes(n, &u, &v);
+    support f;
+    support_find(m, v3_neg(n), tol, &f);
     p2 local[2 * LOCAL_SUPPORT];
-    int room = support_room(m);
-    p2 *s = room_for(local, 2 * LOCAL_SUPPORT, 2 * room); /* and room for its hull */
+    p2 *s = room_for(local, 2 * LOCAL_SUPPORT, 2 * f.n + 1); /* and room for its hull */
     if (!s) return false;
-    int k = support_set(m, v3_neg(n), u, v, tol, s, room);
+    support_place(m, v3_neg(n), &f, u, v, s);
+    int k = f.n;
     double r = m->shape.r_out;
     k = hull2(s, k, 1e-12 * r * r);
     vec3 c = body_com(m);
@@ -338,11 +372,13 @@ double contact_footprint(const body *m, vec3 n, double tol)
 {
     vec3 u, v;
     plane_axes(n, &u, &v);
+    support f;
+    support_find(m, v3_neg(n), tol, &f);
     p2 local[LOCAL_SUPPORT];
-    int room = support_room(m);
-    p2 *s = room_for(local, LOCAL_SUPPORT, room);
+    p2 *s = room_for(local, LOCAL_SUPPORT, f.n);
     if (!s) return HUGE_VAL;
-    int k = support_set(m, v3_neg(n), u, v, tol, s, room);
+    support_place(m, v3_neg(n), &f, u, v, s);
+    int k = f.n;
     vec3 c = body_com(m);
     double cu = v3_dot(c, u), cv = v3_dot(c, v), r = k > 0 ? 0 : HUGE_VAL;
     for (int i = 0; i < k; i++) r = d_max(r, hypot(s[i].x - cu, s[i].y - cv));
