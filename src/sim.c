@@ -408,7 +408,9 @@ static int frame_states(world *w, bool changed)
             w->snap[i] = w->pre[i] = *w->bodies[i];
             for (int k = 0; k < SCRATCH; k++) w->scratch[SCRATCH * i + k] = *w->bodies[i];
         } else {
-            /* a static object flies from nowhere before any step */
+            /* a static object flies from nowhere before any step; its pre copy
+             * is written here, not first in the middle of a frame (answer) */
+            w->pre[i] = *w->bodies[i];
             w->snap[i].state = w->bodies[i]->state;
             w->snap_t[i] = -HUGE_VAL;
             w->snap_id[i] = w->flight_count++;
