@@ -356,6 +356,10 @@ static void *resized(void *p, size_t elem, int n, bool *ok)
     return q ? q : p;
 }
 
+/* end_id of an object that is where its flight starts (save_states made the
+ * flight from it): the first flight to the end of the step needs no copy. */
+#define END_AT_START (-2)
+
 /* Within an internal step each object flies from its own starting state: snap[i]
  * at time snap_t[i], the start of the step, or the instant of the last collision
  * that changed it.  An object's place at time t is always one flight from there,
@@ -371,7 +375,7 @@ static void save_states(world *w, double t)
         else w->snap[i].state = w->bodies[i]->state;
         w->snap_t[i] = t;
         w->snap_id[i] = w->flight_count++;
-        w->end_id[i] = -1;
+        w->end_id[i] = END_AT_START;
     }
 }
 
@@ -484,7 +488,13 @@ static void fly_to_end(world *w, double t_end)
     for (int k = 0; k < w->nmovers; k++) {
         int i = w->movers[k];
         if (w->snap[i].state != STATE_DYNAMIC || w->end_id[i] == w->snap_id[i]) continue;
-        fly_into(w, i, t_end, w->bodies[i]);
+        body *b = w->bodies[i];
+        if (w->end_id[i] == END_AT_START) { /* b is its flight's start: flown in place */
+            double dt = t_end - w->snap_t[i];
+            if (dt > 0) sim_flight(b, dt, world_body_accel(w, b), w->set.max_linear, w->set.max_angular);
+        } else {
+            fly_into(w, i, t_end, b);
+        }
         w->end_id[i] = w->snap_id[i];
     }
 }
