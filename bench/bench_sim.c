@@ -20,6 +20,13 @@
  *   --min-time S    after R runs, go on with more runs (up to 101) until the timed
  *                   runs add up to S seconds: steadier medians for fast scenes
  *   --heap on|off   collision_heap (default: as the scene leaves it)
+ *   --heap both     runs with the heap on and off in turn (on, off, on, off, ...),
+ *                   each on a fresh scene, so that both meet the same state of the
+ *                   machine: the heap's ratio compares medians of paired runs.
+ *                   --runs, --min-time and --max-time count rounds of two runs:
+ *                   R rounds, then more until either side's timed runs add up to
+ *                   S seconds; no round starts once both sides' add up to
+ *                   --max-time.  Prints two lines, heap=on then heap=off.
  *   --max-time S    no further run once the timed runs add up to S seconds (at
  *                   least one run): bounds the time a slow scene takes
  *   --render        render both eyes into memory after every frame
@@ -38,7 +45,7 @@
  * close the box so the objects keep colliding (--walls off leaves it open); each
  * adds N pairs, and pairs= reports the pairs as the world counts them.
  *
- * Output: one line of name=value fields on stdout, e.g.
+ * Output: one line of name=value fields on stdout (two with --heap both), e.g.
  *   scene=simple objects=4 pairs=6 subframes=6 heap=on render=no frames=100 runs=5
  *   frames_per_s=... subframes_per_s=... pair_checks_per_frame=... ...
  */
@@ -58,6 +65,9 @@
 
 #define MAX_RUNS 101
 
+/* options.heap: runs with the heap on and off in turn */
+#define HEAP_BOTH 2
+
 typedef struct {
     const char *scene;   /* path, or NULL with random > 0 */
     long random;         /* N random objects */
@@ -66,7 +76,7 @@ typedef struct {
     bool walls;
     long frames;
     int runs;
-    int heap;            /* -1 as the scene says, 0 off, 1 on */
+    int heap;            /* -1 as the scene says, 0 off, 1 on, HEAP_BOTH in turn */
     bool render;
     double budget;       /* s per run, 0 none */
     double min_time;     /* s of timed runs wanted in all, 0 none */
@@ -99,7 +109,7 @@ static void usage(void)
 {
     fprintf(stderr,
             "usage: bench_sim SCENE.vroc [--frames N] [--runs R] [--min-time S] [--max-time S]\n"
-            "                 [--heap on|off] [--render] [--budget S] [--name NAME]\n"
+            "                 [--heap on|off|both] [--render] [--budget S] [--name NAME]\n"
             "       bench_sim --random N [--seed S] [--thick A] [--walls on|off] [...]\n");
 }
 
@@ -289,6 +299,8 @@ static int parse(int argc, char **argv, options *o)
             o->budget = strtod(val, NULL);
         } else if (!strcmp(a, "--name")) {
             snprintf(o->name, sizeof o->name, "%s", val);
+        } else if (!strcmp(a, "--heap") && !strcmp(val, "both")) {
+            o->heap = HEAP_BOTH;
         } else if (!strcmp(a, "--heap") || !strcmp(a, "--walls")) {
             int on = !strcmp(val, "on") ? 1 : !strcmp(val, "off") ? 0 : -1;
             if (on < 0) return -1;
@@ -317,6 +329,58 @@ static int parse(int argc, char **argv, options *o)
     return 0;
 }
 
+/* The runs of one measurement: each figure of each run, for the medians. */
+typedef struct {
+    double fps[MAX_RUNS], sfps[MAX_RUNS], checks[MAX_RUNS], pops[MAX_RUNS], colls[MAX_RUNS],
+        restarts[MAX_RUNS], first[MAX_RUNS], frames[MAX_RUNS];
+    int runs;
+    double spent; /* s of timed runs */
+    bool truncated, heap_on;
+} series;
+
+static void add_run(series *x, const run_result *res)
+{
+    int r = x->runs++;
+    x->fps[r] = res->fps;
+    x->sfps[r] = res->sfps;
+    x->checks[r] = res->checks;
+    x->pops[r] = res->pops;
+    x->colls[r] = res->colls;
+    x->restarts[r] = res->restarts;
+    x->first[r] = res->first_ms;
+    x->frames[r] = (double)res->frames;
+    x->truncated = x->truncated || res->truncated;
+    x->spent += res->seconds;
+}
+
+/* Prints the measurement's line (the medians sort the series' arrays). */
+static void print_series(const options *o, series *x, long objects, long pairs, long subframes)
+{
+    int n = x->runs;
+    double fps_min = x->fps[0], fps_max = x->fps[0];
+    for (int r = 1; r < n; r++) {
+        fps_min = fmin(fps_min, x->fps[r]);
+        fps_max = fmax(fps_max, x->fps[r]);
+    }
+    printf("scene=%s objects=%ld pairs=%ld subframes=%ld heap=%s render=%s frames=%.0f runs=%d",
+           o->name, objects, pairs, subframes, x->heap_on ? "on" : "off", o->render ? "yes" : "no",
+           median(x->frames, n), n);
+    put_rate("frames_per_s", median(x->fps, n));
+    put_rate("subframes_per_s", median(x->sfps, n));
+    put_rate("fps_min", fps_min);
+    put_rate("fps_max", fps_max);
+    printf(" pair_checks_per_frame=%.1f heap_pops_per_frame=%.1f collisions_per_frame=%.2f"
+           " restarts_per_frame=%.2f first_frame_ms=%.3g truncated=%d",
+           median(x->checks, n), median(x->pops, n), median(x->colls, n), median(x->restarts, n),
+           median(x->first, n), x->truncated ? 1 : 0);
+    if (o->heap == HEAP_BOTH) printf(" order=alternate");
+    if (o->random > 0) {
+        double h = random_half(o);
+        printf(" random_box=%.4g,%.4g,%.4g walls=%s", h, h, o->thick, o->walls ? "6" : "0");
+    }
+    printf("\n");
+}
+
 int main(int argc, char **argv)
 {
     options o;
@@ -324,54 +388,27 @@ int main(int argc, char **argv)
         usage();
         return 2;
     }
-    static double fps[MAX_RUNS], sfps[MAX_RUNS], checks[MAX_RUNS], pops[MAX_RUNS],
-        colls[MAX_RUNS], restarts[MAX_RUNS], first[MAX_RUNS], frames[MAX_RUNS];
+    /* one series, or with --heap both one per side: [0] on, [1] off */
+    static series x[2];
+    bool both = o.heap == HEAP_BOTH;
+    int sides = both ? 2 : 1;
     long objects = 0, pairs = 0, subframes = 0;
-    bool heap_on = true, truncated = false;
     view *v = NULL;
-    double spent = 0;
-    int runs = 0;
-    for (int r = 0; r < o.runs || (spent < o.min_time && r < MAX_RUNS); r++) {
-        if (r > 0 && o.max_time > 0 && spent >= o.max_time) break;
-        run_result res;
-        if (one_run(&o, &v, &res, &objects, &pairs, &subframes, &heap_on) != 0) {
-            view_free(v);
-            return 1;
+    for (int r = 0; r < o.runs || (fmax(x[0].spent, x[1].spent) < o.min_time && r < MAX_RUNS);
+         r++) {
+        if (r > 0 && o.max_time > 0 && x[0].spent + x[1].spent >= o.max_time) break;
+        for (int k = 0; k < sides; k++) {
+            options ok = o;
+            if (both) ok.heap = k == 0 ? 1 : 0;
+            run_result res;
+            if (one_run(&ok, &v, &res, &objects, &pairs, &subframes, &x[k].heap_on) != 0) {
+                view_free(v);
+                return 1;
+            }
+            add_run(&x[k], &res);
         }
-        fps[r] = res.fps;
-        sfps[r] = res.sfps;
-        checks[r] = res.checks;
-        pops[r] = res.pops;
-        colls[r] = res.colls;
-        restarts[r] = res.restarts;
-        first[r] = res.first_ms;
-        frames[r] = (double)res.frames;
-        truncated = truncated || res.truncated;
-        spent += res.seconds;
-        runs = r + 1;
     }
-    o.runs = runs;
     view_free(v);
-    double fps_min = fps[0], fps_max = fps[0];
-    for (int r = 1; r < o.runs; r++) {
-        fps_min = fmin(fps_min, fps[r]);
-        fps_max = fmax(fps_max, fps[r]);
-    }
-    printf("scene=%s objects=%ld pairs=%ld subframes=%ld heap=%s render=%s frames=%.0f runs=%d",
-           o.name, objects, pairs, subframes, heap_on ? "on" : "off", o.render ? "yes" : "no",
-           median(frames, o.runs), o.runs);
-    put_rate("frames_per_s", median(fps, o.runs));
-    put_rate("subframes_per_s", median(sfps, o.runs));
-    put_rate("fps_min", fps_min);
-    put_rate("fps_max", fps_max);
-    printf(" pair_checks_per_frame=%.1f heap_pops_per_frame=%.1f collisions_per_frame=%.2f"
-           " restarts_per_frame=%.2f first_frame_ms=%.3g truncated=%d",
-           median(checks, o.runs), median(pops, o.runs), median(colls, o.runs),
-           median(restarts, o.runs), median(first, o.runs), truncated ? 1 : 0);
-    if (o.random > 0) {
-        double x = random_half(&o);
-        printf(" random_box=%.4g,%.4g,%.4g walls=%s", x, x, o.thick, o.walls ? "6" : "0");
-    }
-    printf("\n");
+    for (int k = 0; k < sides; k++) print_series(&o, &x[k], objects, pairs, subframes);
     return 0;
 }

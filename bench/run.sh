@@ -7,9 +7,10 @@
 #   - the thesis scenes (Table 5.1): simulation only with the collision heap on and
 #     off, and with both eyes rendered into memory at 640x512 after every frame;
 #     100 frames (10 s of simulated time at 0.1 s, as the thesis's "average over
-#     approximately 10 seconds"), median of 5 runs or more, and of at least 2 s of
-#     runs with the heap on or off, so that the heap's ratio compares medians of
-#     alike samples (3 runs or more for the rendered runs);
+#     approximately 10 seconds"), median of 5 runs or more; the heap on and off
+#     in turn, run for run (bench_sim --heap both), until the slower side has 2 s
+#     of runs (up to 101 each), so that the two sides of the heap's ratio meet the
+#     same state of the machine (3 runs or more for the rendered runs);
 #   - the random environment (Table 5.6) for 20 to 100 objects, and 200, 500 and
 #     1000 for scaling (fewer runs and frames there, as printed);
 # then prints build/bench/bench_view and build/bench/bench_closest.
@@ -86,11 +87,22 @@ measure() {
     fi
     if "$SIM" "$@" >"$TMP/$tag" 2>"$TMP/$tag.err"; then
         cat "$TMP/$tag" >>"$RAW"
-        printf ' %3ss  %s fps\n' "$(($(date +%s) - t0))" "$(num "$(field "$(cat "$TMP/$tag")" frames_per_s)")" >&2
+        printf ' %3ss  %s fps\n' "$(($(date +%s) - t0))" "$(num "$(field "$(head -n 1 "$TMP/$tag")" frames_per_s)")" >&2
     else
         : >"$TMP/$tag"
         printf ' failed: %s\n' "$(head -n 1 "$TMP/$tag.err")" >&2
     fi
+}
+
+# measure_pair ID ARGS...: measures with the heap on and off in turn (bench_sim
+# --heap both: alike machine states for both sides of the heap's ratio), kept as
+# ID.on and ID.off.
+measure_pair() {
+    id_=$1
+    shift
+    measure "$id_.both" "$@" --heap both
+    head -n 1 "$TMP/$id_.both" >"$TMP/$id_.on"
+    sed -n 2p "$TMP/$id_.both" >"$TMP/$id_.off"
 }
 
 # get TAG KEY: a field of a measurement ('' when it was not made).
@@ -140,8 +152,7 @@ printf '%s\n' "$THESIS" | while IFS='|' read -r id name file rest; do
         echo "bench: $file is missing: $name skipped" >&2
         continue
     fi
-    measure "$id.on" "$file" --frames "$F" --runs "$R" --min-time "$MT" --heap on
-    measure "$id.off" "$file" --frames "$F" --runs "$R3" --min-time "$MT" --heap off
+    measure_pair "$id" "$file" --frames "$F" --runs "$R" --min-time "$MT"
     measure "$id.render" "$file" --frames "$F" --runs "$R3" --heap on --render
 done
 for id in $(printf '%s\n' "$THESIS" | cut -d'|' -f1); do
@@ -252,6 +263,7 @@ printf '%s\n' "$THESIS" | while IFS='|' read -r id name file to tp ts hf hs nf n
     printf '%-20s %-12s %8s | %-20s %-20s %9s %6s | %-17s\n' "$name" "$nf ($ns)" "$tr_" "$off" "$on" "$r" "$g" "$pc"
 done
 echo "thesis on/off = Table 5.2 / Table 5.3 (HP750).  goal: design.md, heap on >= 10x heap off."
+echo "vroc's heap on and off runs are made in turn, each on a fresh scene (medians of each side)."
 
 echo
 echo "Where the frames go (simulation only, heap on; per frame of 0.1 s unless said)"
