@@ -65,14 +65,15 @@ static int support_walk(const poly *h, vec3 dl, double tol, int *idx, int max)
     return n;
 }
 
-/* The supporting set of b in direction d (world): the hull's vertices within tol
- * of the furthest, their indices in idx (room for CONTACT_MAX_SUPPORT).  Returns
- * the count (0 when out of memory); a sphere's is its one point (idx unused). */
+/* A supporting set: the indices of n of a hull's vertices; a sphere's set is its
+ * one point (n 1, no index). */
 typedef struct {
     int n;
     int idx[CONTACT_MAX_SUPPORT];
 } support;
 
+/* The supporting set of b in direction d (world): the vertices within tol of the
+ * furthest (n 0 when out of memory). */
 static void support_find(const body *b, vec3 d, double tol, support *s)
 {
     if (b->sp.kind == SHAPE_SPHERE) {
@@ -288,10 +289,8 @@ static bool region_of(const body *a, const body *b, const closest_result *r, dou
     z->p = buf[0];
     support_place(a, v3_neg(n), fa, z->u, z->v, sa);
     support_place(b, n, fb, z->u, z->v, sb);
-    int na = ka, nb = kb;
     double eps = 1e-12 * (a->shape.r_out + b->shape.r_out) * (a->shape.r_out + b->shape.r_out);
-    na = hull2(sa, na, eps);
-    nb = hull2(sb, nb, eps);
+    int na = hull2(sa, ka, eps), nb = hull2(sb, kb, eps);
     if (na >= 3 && nb >= 3) {
         int m = na, cur = 0;
         for (int i = 0; i < m; i++) buf[0][i] = sa[i];
@@ -356,9 +355,8 @@ bool contact_stable(const body *m, vec3 n, double tol)
     p2 *s = room_for(local, 2 * LOCAL_SUPPORT, 2 * f.n + 1); /* and room for its hull */
     if (!s) return false;
     support_place(m, v3_neg(n), &f, u, v, s);
-    int k = f.n;
     double r = m->shape.r_out;
-    k = hull2(s, k, 1e-12 * r * r);
+    int k = hull2(s, f.n, 1e-12 * r * r);
     vec3 c = body_com(m);
     p2 cp = {v3_dot(c, u), v3_dot(c, v)};
     bool inside = k >= 3;

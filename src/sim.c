@@ -424,12 +424,18 @@ static int frame_states(world *w, bool changed)
     return 0;
 }
 
+/* Flies out, a copy of moving body i where its flight starts, on to time t. */
+static void fly_on(const world *w, int i, double t, body *out)
+{
+    double dt = t - w->snap_t[i];
+    if (dt > 0) sim_flight(out, dt, world_body_accel(w, out), w->set.max_linear, w->set.max_angular);
+}
+
 /* Puts moving body i's state at time t in out, a copy of body i. */
 static void fly_into(const world *w, int i, double t, body *out)
 {
     body_copy_state(out, &w->snap[i]);
-    double dt = t - w->snap_t[i];
-    if (dt > 0) sim_flight(out, dt, world_body_accel(w, out), w->set.max_linear, w->set.max_angular);
+    fly_on(w, i, t, out);
 }
 
 /* Puts body i's state at time t in out, a copy of body i (what does not move is
@@ -488,13 +494,9 @@ static void fly_to_end(world *w, double t_end)
     for (int k = 0; k < w->nmovers; k++) {
         int i = w->movers[k];
         if (w->snap[i].state != STATE_DYNAMIC || w->end_id[i] == w->snap_id[i]) continue;
-        body *b = w->bodies[i];
-        if (w->end_id[i] == END_AT_START) { /* b is its flight's start: flown in place */
-            double dt = t_end - w->snap_t[i];
-            if (dt > 0) sim_flight(b, dt, world_body_accel(w, b), w->set.max_linear, w->set.max_angular);
-        } else {
-            fly_into(w, i, t_end, b);
-        }
+        /* where its flight starts, as save_states left it, it flies on in place */
+        if (w->end_id[i] != END_AT_START) body_copy_state(w->bodies[i], &w->snap[i]);
+        fly_on(w, i, t_end, w->bodies[i]);
         w->end_id[i] = w->snap_id[i];
     }
 }
