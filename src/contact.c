@@ -19,8 +19,9 @@ typedef struct {
 
 #define CONTACT_MAX_SUPPORT 256
 
-/* Supporting points of hulls of up to this many vertices (every box and die) are
- * worked on in arrays on the stack; a larger hull's are allocated. */
+/* Supporting sets of up to this many points (a box's or a die's face, and nearly
+ * every superquadric's) are worked on in arrays on the stack; larger ones are
+ * allocated. */
 #define LOCAL_SUPPORT 32
 
 /* A hull of at most this many vertices is read in turn; a larger one (a
