@@ -93,6 +93,7 @@ void sh_info(shell *sh, const char *fmt, ...)
 cmd_status shell_run_program(shell *sh, const program *p)
 {
     for (int i = 0; i < p->n; i++) {
+        sh->found_apart = false; /* the statement may move anything */
         cmd_status r = p->s[i].cmd->run(sh, &p->s[i]);
         /* whatever a statement changed, the schedule's predictions start afresh */
         sh->w.sched_dirty = true;
@@ -166,13 +167,14 @@ cmd_status shell_check_start(shell *sh, const stmt *st)
         sh_error(sh, st, "out of memory");
         return CMD_ERROR;
     }
+    sh->found_apart = true;
     return CMD_OK;
 }
 
 cmd_status shell_advance(shell *sh, const stmt *st, long n)
 {
     char err[1024];
-    if (n > 0 && shell_check_start(sh, st) != CMD_OK) return CMD_ERROR;
+    if (n > 0 && !sh->found_apart && shell_check_start(sh, st) != CMD_OK) return CMD_ERROR;
     double t0 = now();
     cmd_status r = CMD_OK;
     for (long k = 0; k < n; k++) {

@@ -34,6 +34,8 @@ typedef struct shell {
     struct view *view;     /* off-screen context, created on first need */
     int read_depth;        /* files being run */
     unsigned long long rng; /* state of `random`, reset by seed */
+    bool found_apart;      /* shell_check_start found no overlap since the last
+                            * statement began: time may run on unchecked */
 } shell;
 
 /* Set by the SIGINT handler; long operations (run, start) stop when it is set. */
@@ -54,7 +56,9 @@ cmd_status shell_run_file(shell *sh, const char *path);
 cmd_status shell_run_program(shell *sh, const program *p);
 
 /* Refuses to let time run while objects interpenetrate (thesis 3.4.2, step 1):
- * names every such pair with its depth. */
+ * names every such pair with its depth.  The check queries every pair, so it is
+ * made once per statement: the frames start advances in real time between
+ * statements are not checked again (nothing but the simulation moved). */
 cmd_status shell_check_start(shell *sh, const stmt *st);
 
 /* Advances n frames (honouring Ctrl-C); records frames when record is on. */

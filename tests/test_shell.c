@@ -303,6 +303,41 @@ static void time_cannot_run_through_objects(void **state)
     assert_int_equal(run("b.translate = (2.5, 0, 0); run 1\n"), CMD_OK);
 }
 
+/* The frames start advances in real time (shell_advance without a statement, as
+ * the prompt's loop calls it) are not checked for overlap one by one: the one
+ * check start made holds until a statement runs.  Ten ticks query exactly the
+ * pairs that run 10 queries, and reach the same states.  A statement between
+ * ticks is checked again: one that moves an object into another stops time. */
+static void real_time_checks_overlap_once(void **state)
+{
+    (void)state;
+    const char *scene = "restart; seed = 7; random 30; gravity\n";
+    assert_int_equal(run(scene), CMD_OK);
+    assert_int_equal(run("start\n"), CMD_OK);
+    assert_true(g_sh.w.running);
+    long pairs = g_sh.w.npairs;
+    assert_true(pairs >= 30 * 29 / 2);
+    for (int k = 0; k < 10; k++) assert_int_equal(shell_advance(&g_sh, NULL, 1), CMD_OK);
+    long ticks = g_sh.w.st.pair_checks;
+    char *by_ticks = snapshot();
+    assert_int_equal(run(scene), CMD_OK);
+    assert_int_equal(run("run 10\n"), CMD_OK);
+    assert_int_equal(g_sh.w.st.pair_checks, ticks);
+    assert_true(ticks >= pairs); /* the one check, at least */
+    char *by_run = snapshot();
+    assert_string_equal(by_ticks, by_run);
+    free(by_ticks);
+    free(by_run);
+    /* an object put into another between ticks */
+    const body *r1 = g_sh.w.bodies[world_find(&g_sh.w, "random1")];
+    char move[160];
+    snprintf(move, sizeof move, "start; random2.translate = (%.17g, %.17g, %.17g)\n", r1->x.x,
+             r1->x.y, r1->x.z);
+    assert_int_equal(run(move), CMD_OK);
+    assert_int_equal(shell_advance(&g_sh, NULL, 1), CMD_ERROR);
+    assert_non_null(strstr(g_errbuf, "'random1' and 'random2' interpenetrate"));
+}
+
 static void time_and_stats(void **state)
 {
     (void)state;
@@ -389,6 +424,7 @@ int main(void)
         cmocka_unit_test(restart_returns_every_setting),
         cmocka_unit_test(show_lists_every_setting),
         cmocka_unit_test(time_cannot_run_through_objects),
+        cmocka_unit_test(real_time_checks_overlap_once),
         cmocka_unit_test(time_and_stats),
         cmocka_unit_test(failed_record_stops_a_batch_run),
         cmocka_unit_test(trace_writes_a_row_per_object_per_frame),
