@@ -172,6 +172,19 @@ void sim_flight(body *b, double h, vec3 a, double max_linear, double max_angular
 
 /* ------------------------------------------------------------ pairs */
 
+/* The index of the pair of objects a < b, or -1 when they have none. */
+static long pair_index(const world *w, int a, int b)
+{
+    long lo = 0, hi = w->npairs;
+    while (lo < hi) {
+        long mid = lo + (hi - lo) / 2;
+        const pair *p = &w->pairs[mid];
+        if (p->a < a || (p->a == a && p->b < b)) lo = mid + 1;
+        else hi = mid;
+    }
+    return lo < w->npairs && w->pairs[lo].a == a && w->pairs[lo].b == b ? lo : -1;
+}
+
 int sim_update_pairs(world *w)
 {
     if (!w->pairs_dirty) return 0;
@@ -195,7 +208,18 @@ int sim_update_pairs(world *w)
     w->npairs = k;
     w->pairs_dirty = false;
     w->sched_dirty = true; /* the heap holds the old pairs */
-    for (int i = 0; i < w->n; i++) w->bodies[i]->slide = -1; /* slide_pair is stale */
+    /* an object added or deleted elsewhere leaves a slide on a still support as
+     * it was: its pair is found again (the pairs are in the order of a, then b).
+     * A slide on a support that moves itself ends, as the schedule starts afresh. */
+    for (int i = 0; i < w->n; i++) {
+        body *m = w->bodies[i];
+        if (m->slide < 0) continue;
+        long at = -1;
+        if (m->state == STATE_DYNAMIC && w->bodies[m->slide]->state != STATE_DYNAMIC)
+            at = pair_index(w, i < m->slide ? i : m->slide, i < m->slide ? m->slide : i);
+        m->slide = at >= 0 ? m->slide : -1;
+        m->slide_pair = at;
+    }
     return 0;
 }
 

@@ -146,7 +146,8 @@ void world_delete(world *w, int i)
         body *b = w->bodies[k];
         if (b->support == i) b->support = -1;
         else if (b->support > i) b->support--;
-        if (b->slide >= i) b->slide = -1; /* the pairs are rebuilt anyway */
+        if (b->slide == i) b->slide = -1;
+        else if (b->slide > i) b->slide--; /* its pair is found again (sim_update_pairs) */
         for (int k = 0; k < 2; k++) {
             if (b->pinned_by[k] == i) b->pinned_by[k] = -1;
             else if (b->pinned_by[k] > i) b->pinned_by[k]--;

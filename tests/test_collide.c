@@ -4,7 +4,7 @@
  * momentum, angular momentum and energy in a closed system, an off-centre hit,
  * nothing through a plate, a box landing flat, a drum's contact region, a box
  * turning onto an edge, a block rocking from corner to corner, sliders leaving a
- * table, Newton's cradle, rest; settling, a rocking pillow and a stack, without
+ * table and outlasting objects added and deleted elsewhere, Newton's cradle, rest; settling, a rocking pillow and a stack, without
  * storms of micro-collisions; far pairs that keep their times while a box settles. */
 #include "check.h"
 
@@ -767,6 +767,45 @@ static void box_slides_to_the_edge_without_queries(void **state)
     world_free(&w);
 }
 
+/* Objects added and deleted elsewhere leave a slide as it was: a box sliding and
+ * turning on a table goes on sliding, with no collision, at the same height, its
+ * support's index moved down when an object before it is deleted. */
+static void slides_outlast_other_objects_coming_and_going(void **state)
+{
+    (void)state;
+    world w;
+    world_init(&w);
+    w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
+    w.set.time_step = 0.01;
+    body *post = add_static_box(&w, "post", v3(0.1, 0.1, 1));
+    post->x = v3(0, 5, 0);
+    add_static_box(&w, "table", v3(0.5, 0.5, 0.05));
+    body *box = add_box(&w, "box", v3(0.1, 0.1, 0.1));
+    box->elasticity = 0;
+    box->x = v3(-0.3, 0, 0.15 + 1e-6);
+    box->v = v3(1, 0, 0);
+    body_set_angular_vel(box, v3(0, 0, 2));
+    frames(&w, 2);
+    assert_int_equal(box->slide, 1);
+    long hits = w.st.collisions;
+    body *ball = add_ball(&w, "ball", 0.1); /* falling, far away */
+    ball->x = v3(0, -5, 1);
+    for (int k = 0; k < 5; k++) {
+        frames(&w, 1);
+        assert_int_equal(box->slide, 1);
+        assert_near(box->x.z, 0.15, 1e-6);
+    }
+    world_delete(&w, 0); /* the post: the table is object 0 now */
+    for (int k = 0; k < 5; k++) {
+        frames(&w, 1);
+        assert_int_equal(box->slide, 0);
+        assert_near(box->x.z, 0.15, 1e-6);
+    }
+    assert_int_equal(w.st.collisions, hits);
+    assert_true(box->x.x > -0.3 + 0.11);
+    world_free(&w);
+}
+
 /* No force: a box strikes a wall and stops there (restitution 0 between them);
  * 5 ms later a heavy ball strikes the box, pressing it back against the wall.
  * The wall takes the blow through the box, as a support takes a blow through a
@@ -942,6 +981,7 @@ int main(void)
         cmocka_unit_test(blow_on_a_slider_moves_it_along_the_floor),
         cmocka_unit_test(slider_leaves_the_table_at_its_edge),
         cmocka_unit_test(box_slides_to_the_edge_without_queries),
+        cmocka_unit_test(slides_outlast_other_objects_coming_and_going),
         cmocka_unit_test(sandwich_against_a_wall_passes_the_blow_on),
         cmocka_unit_test(oblique_sandwich_passes_the_blow_on),
         cmocka_unit_test(ball_comes_to_rest_in_finite_time),
