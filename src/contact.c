@@ -12,6 +12,7 @@
 #include "contact.h"
 
 #include <stdlib.h>
+#include <string.h>
 
 typedef struct {
     double x, y;
@@ -27,6 +28,11 @@ typedef struct {
 /* A hull of at most this many vertices is read in turn; a larger one (a
  * superquadric's) is walked. */
 #define SUPPORT_SCAN 32
+
+/* The walk marks the vertices it has seen in a bit set of this many bytes on the
+ * stack: hulls of up to 4,096 vertices (a superquadric of 64 x 64 divisions) are
+ * walked without allocating; larger ones allocate theirs. */
+#define WALK_SEEN_LOCAL 512
 
 /* The vertices of h (at most SUPPORT_SCAN) within tol of the furthest along dl
  * (body axes), read in turn: their indices in idx, at most max; returns the count. */
@@ -48,7 +54,9 @@ static int support_walk(const poly *h, vec3 dl, double tol, int *idx, int max)
 {
     int top = poly_climb(h, dl, 0);
     double best = v3_dot(h->v[top], dl);
-    unsigned char *seen = calloc((size_t)h->nv / 8 + 1, 1);
+    unsigned char local[WALK_SEEN_LOCAL];
+    size_t bytes = (size_t)h->nv / 8 + 1;
+    unsigned char *seen = bytes <= sizeof local ? memset(local, 0, bytes) : calloc(bytes, 1);
     if (!seen) return 0;
     int n = 0;
     idx[n++] = top;
@@ -62,7 +70,7 @@ static int support_walk(const poly *h, vec3 dl, double tol, int *idx, int max)
             idx[n++] = o;
         }
     }
-    free(seen);
+    if (seen != local) free(seen);
     return n;
 }
 
