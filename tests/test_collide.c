@@ -755,6 +755,18 @@ static void slider_leaves_the_table_at_its_edge(void **state)
     world_free(&w);
 }
 
+/* A box of half-edge 0.1 m, restitution 0, just over a table top at z = 0.05:
+ * at x = -0.3, sliding at 1 m/s along x and turning at 2 rad/s about the vertical. */
+static body *add_turning_slider(world *w)
+{
+    body *box = add_box(w, "box", v3(0.1, 0.1, 0.1));
+    box->elasticity = 0;
+    box->x = v3(-0.3, 0, 0.15 + 1e-6);
+    box->v = v3(1, 0, 0);
+    body_set_angular_vel(box, v3(0, 0, 2));
+    return box;
+}
+
 /* A box sliding flat, turning about the vertical, needs no query while what it
  * stands on (its bottom face, within 0.1414 m of its centre however it turns)
  * is over the table, though its bounding sphere (0.1732 m) passes the edge first;
@@ -764,11 +776,7 @@ static void box_slides_to_the_edge_without_queries(void **state)
     (void)state;
     world w;
     slider_world(&w, 0.01);
-    body *box = add_box(&w, "box", v3(0.1, 0.1, 0.1));
-    box->elasticity = 0;
-    box->x = v3(-0.3, 0, 0.15 + 1e-6);
-    box->v = v3(1, 0, 0);
-    body_set_angular_vel(box, v3(0, 0, 2));
+    body *box = add_turning_slider(&w);
     frames(&w, 2);
     assert_int_equal(box->slide, 0);
     assert_near(box->slide_foot, 0.1 * sqrt(2), 1e-9);
@@ -792,11 +800,7 @@ static void slides_outlast_other_objects_coming_and_going(void **state)
     body *post = add_static_box(&w, "post", v3(0.1, 0.1, 1));
     post->x = v3(0, 5, 0);
     add_static_box(&w, "table", v3(0.5, 0.5, 0.05));
-    body *box = add_box(&w, "box", v3(0.1, 0.1, 0.1));
-    box->elasticity = 0;
-    box->x = v3(-0.3, 0, 0.15 + 1e-6);
-    box->v = v3(1, 0, 0);
-    body_set_angular_vel(box, v3(0, 0, 2));
+    body *box = add_turning_slider(&w);
     frames(&w, 2);
     assert_int_equal(box->slide, 1);
     long hits = w.st.collisions;
