@@ -172,9 +172,15 @@ void sim_flight(body *b, double h, vec3 a, double max_linear, double max_angular
 
 /* ------------------------------------------------------------ pairs */
 
-/* The index of the pair of objects a < b, or -1 when they have none. */
+/* The index of the pair of objects a and b (either order), or -1 when they have
+ * none. */
 static long pair_index(const world *w, int a, int b)
 {
+    if (a > b) {
+        int t = a;
+        a = b;
+        b = t;
+    }
     long lo = 0, hi = w->npairs;
     while (lo < hi) {
         long mid = lo + (hi - lo) / 2;
@@ -216,7 +222,7 @@ int sim_update_pairs(world *w)
         if (m->slide < 0) continue;
         long at = -1;
         if (m->state == STATE_DYNAMIC && w->bodies[m->slide]->state != STATE_DYNAMIC)
-            at = pair_index(w, i < m->slide ? i : m->slide, i < m->slide ? m->slide : i);
+            at = pair_index(w, i, m->slide);
         m->slide = at >= 0 ? m->slide : -1;
         m->slide_pair = at;
     }

@@ -135,6 +135,12 @@ int world_add(world *w, body *b)
     return w->n++;
 }
 
+/* An object's index k after object i is deleted: -1 for i itself. */
+static int index_after(int k, int i)
+{
+    return k == i ? -1 : k > i ? k - 1 : k;
+}
+
 void world_delete(world *w, int i)
 {
     body_free(w->bodies[i]);
@@ -144,14 +150,9 @@ void world_delete(world *w, int i)
     w->pairs_dirty = true;
     for (int k = 0; k < w->n; k++) {
         body *b = w->bodies[k];
-        if (b->support == i) b->support = -1;
-        else if (b->support > i) b->support--;
-        if (b->slide == i) b->slide = -1;
-        else if (b->slide > i) b->slide--; /* its pair is found again (sim_update_pairs) */
-        for (int k = 0; k < 2; k++) {
-            if (b->pinned_by[k] == i) b->pinned_by[k] = -1;
-            else if (b->pinned_by[k] > i) b->pinned_by[k]--;
-        }
+        b->support = index_after(b->support, i);
+        b->slide = index_after(b->slide, i); /* its pair is found again (sim_update_pairs) */
+        for (int s = 0; s < 2; s++) b->pinned_by[s] = index_after(b->pinned_by[s], i);
     }
 }
 
