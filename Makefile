@@ -1,15 +1,22 @@
 # vroc: hand-written Makefile.
 #
-#   make            build ./vroc
-#   make check      build and run every test, normal build and ASan+UBSan build
-#   make bench      build and run the benchmarks
-#   make demo       the main job: run a thesis scene and write its stereo frames
-#   make deps       install the missing Debian packages (apt-get, sudo when not root)
-#   make install    binary, man page and scenes under $(DESTDIR)$(PREFIX)
-#   make clean      remove what make built
+#   make               build ./vroc
+#   make check         build and run every test: normal, ASan+UBSan and validation builds
+#   make bench         build and run the benchmarks
+#   make demo          the main job: run a thesis scene and write its stereo frames
+#   make deps          install the missing Debian packages (apt-get, sudo when not root)
+#   make record-hashes record the scenes' trace hashes anew (after an intended change)
+#   make install       binary, man page and scenes under $(DESTDIR)$(PREFIX)
+#   make clean         remove what make built
 #
-# Objects go to build/ (normal) and build-san/ (sanitizers); headers are tracked
-# with -MMD.
+# The layers are libraries, each linked only with what it may use:
+#   build/libvroc-core.a   src/core/: the simulation (libc, libm and qhull only; its
+#                          objects see no header outside src/core/)
+#   build/libvroc.a        src/shell/ (but main.c) and src/view/, on top of the core
+# The core's unit tests link the core library alone, so a call from the core into
+# a higher layer fails to link.  Objects go to build/ (normal), build-san/
+# (sanitizers) and build-val/ (validation: the schedule's and the polyhedra's
+# invariants checked after every internal step); headers are tracked with -MMD.
 
 PREFIX  ?= /usr/local
 DESTDIR ?=
@@ -18,40 +25,51 @@ MANDIR   = $(PREFIX)/share/man/man1
 SCENEDIR = $(PREFIX)/share/vroc/scenes
 
 VERSION  = 0.1.0
+CORE_PKGS = qhull_r
 PKGS     = readline osmesa libpng qhull_r sndfile
 CC      ?= cc
-WARN     = -Wall -Wextra -Wpedantic -Werror
+WARN     = -Wall -Wextra -Wpedantic -Werror -Wshadow -Wmissing-prototypes
 CSTD     = -std=c17 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
 # no code reads errno after sqrt, sin and the like: they compile to the bare
 # instruction, with no call kept for setting errno (about 2% of the simulation's
 # instructions, 6% of its code)
 MATH     = -fno-math-errno
 OPT     ?= -O2 -g
-PKG_CFLAGS := $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
-PKG_LIBS   := $(shell pkg-config --libs $(PKGS) 2>/dev/null)
-CFLAGS_ALL = $(CSTD) $(MATH) $(WARN) $(OPT) $(PKG_CFLAGS) -Isrc -Ibuild/gen \
-             -DVROC_VERSION='"$(VERSION)"' -DVROC_SCENEDIR='"$(SCENEDIR)"' $(CFLAGS)
+CORE_CFLAGS := $(shell pkg-config --cflags $(CORE_PKGS) 2>/dev/null)
+CORE_LIBS   := $(shell pkg-config --libs $(CORE_PKGS) 2>/dev/null) -lm
+PKG_CFLAGS  := $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
+PKG_LIBS    := $(shell pkg-config --libs $(PKGS) 2>/dev/null)
+BASE       = $(CSTD) $(MATH) $(WARN) $(OPT) $(CFLAGS)
+# the core: no include path into the project (its headers sit beside its sources)
+CFLAGS_CORE = $(BASE) $(CORE_CFLAGS)
+# the shell, the views, the tests and the benchmarks: "core/world.h", "view/view.h"
+CFLAGS_ALL = $(BASE) $(PKG_CFLAGS) -Isrc -Ibuild/gen \
+             -DVROC_VERSION='"$(VERSION)"' -DVROC_SCENEDIR='"$(SCENEDIR)"'
 LIBS       = $(PKG_LIBS) -lm
 TEST_LIBS  = $(shell pkg-config --libs cmocka 2>/dev/null)
 SAN        = -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
+VAL        = -DVROC_VALIDATE
 
-# The core and shell: every src/*.c but main.c goes into a library the tests link.
-SRC      = $(filter-out src/main.c,$(wildcard src/*.c))
-COMMANDS = $(sort $(wildcard commands/*))
-TESTS    = $(patsubst tests/%.c,%,$(wildcard tests/test_*.c))
+CORE_SRC  = $(sort $(wildcard src/core/*.c))
+UPPER_SRC = $(sort $(filter-out src/shell/main.c,$(wildcard src/shell/*.c)) $(wildcard src/view/*.c))
+COMMANDS  = $(sort $(wildcard commands/*))
+# the core's own tests link libvroc-core.a alone; the others the whole program
+CORE_TESTS  = test_closest test_collide test_flight test_geometry test_schedule
+UPPER_TESTS = $(filter-out $(CORE_TESTS),$(patsubst tests/%.c,%,$(wildcard tests/test_*.c)))
 BENCHES  = $(patsubst bench/%.c,%,$(wildcard bench/bench_*.c))
 
-OBJ      = $(patsubst src/%.c,build/%.o,$(SRC)) build/help_data.o
-SAN_OBJ  = $(patsubst src/%.c,build-san/%.o,$(SRC)) build-san/help_data.o
+# objects of build dir $(1)
+core_obj  = $(patsubst src/%.c,$(1)/%.o,$(CORE_SRC))
+upper_obj = $(patsubst src/%.c,$(1)/%.o,$(UPPER_SRC)) $(1)/help_data.o
 
-.PHONY: all check check-normal check-san bench demo deps install uninstall clean man
+.PHONY: all check check-build bench demo deps install uninstall clean record-hashes
 .DELETE_ON_ERROR:
 
 all: vroc man/vroc.1
 
 # every object is rebuilt when the compiler or its flags change: build/flags
 # holds them, rewritten (and so newer) only when they differ
-FLAGS_NOW := $(CC) $(CFLAGS_ALL) | $(OPT) | $(SAN)
+FLAGS_NOW := $(CC) $(CFLAGS_ALL) | $(CFLAGS_CORE) | $(SAN) | $(VAL)
 ifneq ($(file < build/flags),$(FLAGS_NOW))
 $(shell mkdir -p build)
 $(file > build/flags,$(FLAGS_NOW))
@@ -61,66 +79,81 @@ endif
 build/prefix: FORCE
 	@mkdir -p build
 	@echo '$(SCENEDIR)' | cmp -s - $@ || echo '$(SCENEDIR)' > $@
-build/main.o build-san/main.o: build/prefix
+build/shell/main.o build-san/shell/main.o build-val/shell/main.o: build/prefix
 .PHONY: FORCE
 FORCE:
 
-vroc: build/main.o build/libvroc.a
-	$(CC) $(OPT) -o $@ $^ $(LIBS) $(LDFLAGS)
-
-build/libvroc.a: $(OBJ)
-	ar rcs $@ $^
-
-build/%.o: src/%.c build/flags | build/gen/help_data.c
-	@mkdir -p build
-	$(CC) $(CFLAGS_ALL) -MMD -MP -c -o $@ $<
-
-build/help_data.o: build/gen/help_data.c build/flags
-	$(CC) $(CFLAGS_ALL) -c -o $@ $<
-
-build/gen/help_data.c: $(COMMANDS) src/mkhelp.awk
+build/gen/help_data.c: $(COMMANDS) tools/mkhelp.awk
 	@mkdir -p build/gen
-	awk -f src/mkhelp.awk -v mode=c $(COMMANDS) > $@
+	awk -f tools/mkhelp.awk -v mode=c $(COMMANDS) > $@
 
 # The man page's command reference is built from commands/ like help is.
-man/vroc.1: man/vroc.1.in $(COMMANDS) src/mkhelp.awk
-	awk -f src/mkhelp.awk -v mode=man -v template=man/vroc.1.in $(COMMANDS) > $@
+man/vroc.1: man/vroc.1.in $(COMMANDS) tools/mkhelp.awk
+	awk -f tools/mkhelp.awk -v mode=man -v template=man/vroc.1.in $(COMMANDS) > $@
 
-# ---- sanitizer build ----
-build-san/%.o: src/%.c build/flags | build/gen/help_data.c
-	@mkdir -p build-san
-	$(CC) $(CFLAGS_ALL) $(SAN) -MMD -MP -c -o $@ $<
+# ---- the three builds: $(1) the folder, $(2) its extra flags ----
+define BUILD
+$(1)/core/%.o: src/core/%.c build/flags
+	@mkdir -p $$(@D)
+	$$(CC) $$(CFLAGS_CORE) $(2) -MMD -MP -c -o $$@ $$<
 
-build-san/help_data.o: build/gen/help_data.c build/flags
-	@mkdir -p build-san
-	$(CC) $(CFLAGS_ALL) $(SAN) -c -o $@ $<
+$(1)/shell/%.o: src/shell/%.c build/flags | build/gen/help_data.c
+	@mkdir -p $$(@D)
+	$$(CC) $$(CFLAGS_ALL) $(2) -MMD -MP -c -o $$@ $$<
 
-build-san/libvroc.a: $(SAN_OBJ)
-	ar rcs $@ $^
+$(1)/view/%.o: src/view/%.c build/flags
+	@mkdir -p $$(@D)
+	$$(CC) $$(CFLAGS_ALL) $(2) -MMD -MP -c -o $$@ $$<
 
-build-san/vroc: build-san/main.o build-san/libvroc.a
-	$(CC) $(OPT) $(SAN) -o $@ $^ $(LIBS)
+$(1)/help_data.o: build/gen/help_data.c build/flags
+	@mkdir -p $$(@D)
+	$$(CC) $$(CFLAGS_ALL) $(2) -c -o $$@ $$<
+
+$(1)/libvroc-core.a: $(call core_obj,$(1))
+	rm -f $$@
+	ar rcs $$@ $$^
+
+$(1)/libvroc.a: $(call upper_obj,$(1))
+	rm -f $$@
+	ar rcs $$@ $$^
+
+$(1)/vroc: $(1)/shell/main.o $(1)/libvroc.a $(1)/libvroc-core.a
+	$$(CC) $$(OPT) $(2) -o $$@ $$^ $$(LIBS) $$(LDFLAGS)
+
+$(addprefix $(1)/tests/,$(CORE_TESTS)): $(1)/tests/%: tests/%.c tests/check.h tests/worlds.h $(1)/libvroc-core.a build/flags
+	@mkdir -p $$(@D)
+	$$(CC) $$(CFLAGS_ALL) $(2) -MMD -MP -o $$@ $$< $(1)/libvroc-core.a $$(CORE_LIBS) $$(TEST_LIBS)
+
+$(addprefix $(1)/tests/,$(UPPER_TESTS)): $(1)/tests/%: tests/%.c tests/check.h tests/worlds.h $(1)/libvroc.a $(1)/libvroc-core.a build/flags
+	@mkdir -p $$(@D)
+	$$(CC) $$(CFLAGS_ALL) $(2) -MMD -MP -o $$@ $$< $(1)/libvroc.a $(1)/libvroc-core.a $$(LIBS) $$(TEST_LIBS)
+endef
+
+$(eval $(call BUILD,build,))
+$(eval $(call BUILD,build-san,$(SAN)))
+$(eval $(call BUILD,build-val,$(VAL)))
+
+vroc: build/vroc
+	cp build/vroc $@
 
 # ---- tests ----
-build/tests/%: tests/%.c tests/check.h tests/worlds.h build/libvroc.a build/flags
-	@mkdir -p build/tests
-	$(CC) $(CFLAGS_ALL) -MMD -MP -o $@ $< build/libvroc.a $(LIBS) $(TEST_LIBS)
-
-build-san/tests/%: tests/%.c tests/check.h tests/worlds.h build-san/libvroc.a build/flags
-	@mkdir -p build-san/tests
-	$(CC) $(CFLAGS_ALL) $(SAN) -o $@ $< build-san/libvroc.a $(LIBS) $(TEST_LIBS)
-
 check: deps
 	@$(MAKE) --no-print-directory check-build
 	@sh tests/run.sh
 
-check-build: vroc man/vroc.1 build-san/vroc $(addprefix build/tests/,$(TESTS)) \
-             $(addprefix build-san/tests/,$(TESTS))
+check-build: vroc man/vroc.1 build-san/vroc build-val/vroc \
+             $(addprefix build/tests/,$(CORE_TESTS) $(UPPER_TESTS)) \
+             $(addprefix build-san/tests/,$(CORE_TESTS) $(UPPER_TESTS))
+
+# The scenes' trace hashes (tests/hashes.sh checks them): recorded anew only after a
+# change meant to change the simulation, and the commit says why.
+record-hashes: vroc
+	@sh tests/hashes.sh --record
 
 # ---- benchmarks ----
-build/bench/%: bench/%.c bench/bench.h build/libvroc.a build/flags
+build/bench/%: bench/%.c bench/bench.h build/libvroc.a build/libvroc-core.a build/flags
 	@mkdir -p build/bench
-	$(CC) $(CFLAGS_ALL) -O2 -o $@ $< build/libvroc.a $(LIBS)
+	$(CC) $(CFLAGS_ALL) -O2 -o $@ $< build/libvroc.a build/libvroc-core.a $(LIBS)
 
 bench: deps
 	@$(MAKE) --no-print-directory vroc $(addprefix build/bench/,$(BENCHES))
@@ -133,7 +166,7 @@ demo: deps
 	@echo "demo: stereo frames of the Simple scene are in frames/"
 
 deps:
-	@sh src/deps.sh
+	@sh tools/deps.sh
 
 install: vroc man/vroc.1
 	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(MANDIR) $(DESTDIR)$(SCENEDIR)
@@ -146,6 +179,6 @@ uninstall:
 	rm -rf $(DESTDIR)$(PREFIX)/share/vroc
 
 clean:
-	rm -rf build build-san vroc tests/out
+	rm -rf build build-san build-val vroc tests/out
 
--include $(wildcard build/*.d build-san/*.d build/tests/*.d)
+-include $(wildcard build*/core/*.d build*/shell/*.d build*/view/*.d build*/tests/*.d)

@@ -20,8 +20,8 @@
 
 #include "bench.h"
 
-#include "closest.h"
-#include "shape.h"
+#include "core/closest.h"
+#include "core/shape.h"
 
 #define RUNS 3
 #define POSES 4000
@@ -54,7 +54,7 @@ static void bshape_free(bshape *b)
 }
 
 typedef struct {
-    closest_object a[POSES], b[POSES];
+    closest_proxy a[POSES], b[POSES];
 } motion;
 
 /* B orbits A with the gap swinging between 0.05 and 0.35 (outer radii apart). */
@@ -67,8 +67,8 @@ static void make_motion(motion *m, const shape *sa, const shape *sb)
         double th = 0.01 * i;
         double gap = 0.2 + 0.15 * sin(0.5 * th);
         vec3 dir = q_rotate(q_axis_angle(orbit, 0.3 * th), v3(1, 0, 0));
-        m->a[i] = (closest_object){sa, v3(0, 0, 0), q_axis_angle(wa, th)};
-        m->b[i] = (closest_object){sb, v3_scale(dir, ra + rb + gap), q_axis_angle(wb, -0.7 * th)};
+        m->a[i] = shape_proxy(sa, v3(0, 0, 0), q_axis_angle(wa, th));
+        m->b[i] = shape_proxy(sb, v3_scale(dir, ra + rb + gap), q_axis_angle(wb, -0.7 * th));
     }
 }
 
@@ -125,9 +125,9 @@ static int bench_pair(const char *label, shape_params pa, shape_params pb, doubl
     motion *m = malloc(sizeof *m);
     if (!m) return -1;
     make_motion(m, &a.s, &b.s);
-    bool poly = pa.kind != SHAPE_SPHERE && pb.kind != SHAPE_SPHERE;
+    bool polys = pa.kind != SHAPE_SPHERE && pb.kind != SHAPE_SPHERE;
     bench_out c = run(m, CACHED, seconds), s = run(m, SCRATCH, seconds);
-    bench_out k = poly ? run(m, COLD, seconds) : s;
+    bench_out k = polys ? run(m, COLD, seconds) : s;
     printf("closest  %-22s cached %9.0f queries/s  scratch %9.0f queries/s  "
            "(scratch/cached %.1fx; cold %9.0f queries/s, %.1fx; walk steps %.2f / %.2f / %.2f; "
            "restarts %ld)\n",

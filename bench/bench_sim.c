@@ -58,10 +58,10 @@
 
 #include "bench.h"
 
-#include "shell.h"
-#include "sim.h"
-#include "view.h"
-#include "world.h"
+#include "shell/shell.h"
+#include "core/sim.h"
+#include "view/view.h"
+#include "core/world.h"
 
 #define MAX_RUNS 101
 
@@ -190,8 +190,8 @@ static int load(shell *sh, const options *o)
         shell_run_text(sh, o->heap ? "collision_heap = on" : "collision_heap = off",
                        "bench_sim") != CMD_OK)
         return -1;
-    sh->w.set.image_w = 640;
-    sh->w.set.image_h = 512;
+    sh->view_set.image_w = 640;
+    sh->view_set.image_h = 512;
     /* as `run` does before time runs */
     if (shell_check_start(sh, NULL) != CMD_OK) {
         fprintf(stderr, "bench_sim: %s: objects interpenetrate at the start\n", o->name);
@@ -210,12 +210,12 @@ static int one_run(const options *o, view **v, run_result *res, long *objects, l
         shell_free(&sh);
         return -1;
     }
-    if (o->render && view_display(v, &sh.w, err, sizeof err) != 0) {
+    if (o->render && view_display(v, &sh.view_set, err, sizeof err) != 0) {
         fprintf(stderr, "bench_sim: %s: %s\n", o->name, err);
         shell_free(&sh);
         return -1;
     }
-    stats s0 = sh.w.st;
+    sim_stats s0 = sh.w.st;
     double t0 = now(), first = 0;
     long k;
     res->truncated = false;
@@ -225,7 +225,7 @@ static int one_run(const options *o, view **v, run_result *res, long *objects, l
             shell_free(&sh);
             return -1;
         }
-        if (o->render && view_render(v, &sh.w, err, sizeof err) != 0) {
+        if (o->render && view_render(v, &sh.w, &sh.view_set, err, sizeof err) != 0) {
             fprintf(stderr, "bench_sim: %s: render: %s\n", o->name, err);
             shell_free(&sh);
             return -1;
@@ -239,7 +239,7 @@ static int one_run(const options *o, view **v, run_result *res, long *objects, l
         }
     }
     double dt = now() - t0;
-    stats *s = &sh.w.st;
+    sim_stats *s = &sh.w.st;
     res->frames = k;
     res->seconds = dt;
     res->fps = (double)k / dt;

@@ -20,9 +20,9 @@
 #include <unistd.h>
 #include <zlib.h>
 
-#include "png_out.h"
-#include "view.h"
-#include "world.h"
+#include "view/png_out.h"
+#include "view/view.h"
+#include "core/world.h"
 
 #define BENCH_RUNS 3
 #define BENCH_FILES 8 /* frame numbers cycle through these, so the folder stays small */
@@ -66,21 +66,22 @@ static body *bench_static_box(world *w, const char *name, vec3 x, vec3 half, con
 }
 
 /* The room: z up, the head at the door looking at the table. Returns 0 or -1. */
-static int bench_scene(world *w)
+static int bench_scene(world *w, view_settings *vs)
 {
     static const int grey[3] = {130, 130, 140}, wall[3] = {200, 200, 190},
                      wood[3] = {150, 110, 70};
     static const int palette[6][3] = {{220, 40, 40}, {40, 90, 220}, {40, 190, 70},
                                       {230, 200, 40}, {200, 80, 200}, {240, 240, 240}};
     world_init(w);
-    w->set.head = v3(0.5, -3.5, 1.7);
-    w->set.look_at = v3(0, 0, 0.9);
-    w->set.up = v3(0, 0, 1);
-    w->set.image_w = 640;
-    w->set.image_h = 512;
-    w->set.background[0] = 20;
-    w->set.background[1] = 20;
-    w->set.background[2] = 30;
+    *vs = view_settings_defaults();
+    vs->head = v3(0.5, -3.5, 1.7);
+    vs->look_at = v3(0, 0, 0.9);
+    vs->up = v3(0, 0, 1);
+    vs->image_w = 640;
+    vs->image_h = 512;
+    vs->background[0] = 20;
+    vs->background[1] = 20;
+    vs->background[2] = 30;
     if (!bench_static_box(w, "floor", v3(0, 0, -0.05), v3(4, 4, 0.05), grey) ||
         !bench_static_box(w, "back_wall", v3(0, 3, 1.5), v3(4, 0.05, 1.5), wall) ||
         !bench_static_box(w, "side_wall", v3(-3, 0, 1.5), v3(0.05, 4, 1.5), wall) ||
@@ -135,22 +136,22 @@ static int bench_cmp(const void *a, const void *b)
 /* Stereo frames/s, median of BENCH_RUNS runs of about `seconds` each; < 0 on error.
  * *cpu_ms gets the median CPU milliseconds per frame (all threads), which depends
  * less than the rate on what else the machine is running. */
-static double bench_rate(view **v, world *w, bool write, double seconds, const char *dir,
-                         double *cpu_ms)
+static double bench_rate(view **v, world *w, view_settings *vs, bool write, double seconds,
+                         const char *dir, double *cpu_ms)
 {
     double rates[BENCH_RUNS], cpu[BENCH_RUNS];
     char err[512];
-    stats st = {0};
+    view_stats st = {0};
     long frame = 0;
-    snprintf(w->set.output, sizeof w->set.output, "%s", dir);
-    w->set.stereo = STEREO_PAIR;
+    snprintf(vs->output, sizeof vs->output, "%s", dir);
+    vs->stereo = STEREO_PAIR;
     for (int r = 0; r < BENCH_RUNS; r++) {
         long n = 0;
         double t0 = bench_now(), c0 = bench_cpu(), t;
         do {
             bench_step(w, frame);
-            int rc = write ? view_refresh(v, w, frame % BENCH_FILES, &st, err, sizeof err)
-                           : view_render(v, w, err, sizeof err);
+            int rc = write ? view_refresh(v, w, vs, frame % BENCH_FILES, &st, err, sizeof err)
+                           : view_render(v, w, vs, err, sizeof err);
             if (rc != 0) {
                 fprintf(stderr, "bench_view: %s\n", err);
                 return -1;
@@ -213,7 +214,8 @@ int main(int argc, char **argv)
     double seconds = argc > 1 ? atof(argv[1]) : 1.0;
     if (!(seconds > 0)) seconds = 1.0;
     world w;
-    if (bench_scene(&w) != 0) {
+    view_settings vs;
+    if (bench_scene(&w, &vs) != 0) {
         world_free(&w);
         return 1;
     }
@@ -226,16 +228,16 @@ int main(int argc, char **argv)
     view *v = NULL;
     int status = 1;
     double cpu_render, cpu_written;
-    double render = bench_rate(&v, &w, false, seconds, dir, &cpu_render);
+    double render = bench_rate(&v, &w, &vs, false, seconds, dir, &cpu_render);
     if (render < 0) goto done;
     printf("view  render-only  %d objects  %dx%d  %.0f stereo frames/s  (cpu %.1f ms/frame)\n",
-           w.n, w.set.image_w, w.set.image_h, render, cpu_render);
-    double written = bench_rate(&v, &w, true, seconds, dir, &cpu_written);
+           w.n, vs.image_w, vs.image_h, render, cpu_render);
+    double written = bench_rate(&v, &w, &vs, true, seconds, dir, &cpu_written);
     if (written < 0) goto done;
     png_out_opts def = png_out_default();
     printf("view  with-png     %d objects  %dx%d  %.0f stereo frames/s  (cpu %.1f ms/frame; "
            "zlib level %d, filter %s)\n",
-           w.n, w.set.image_w, w.set.image_h, written, cpu_written, def.level,
+           w.n, vs.image_w, vs.image_h, written, cpu_written, def.level,
            def.filters == PNG_FILTER_NONE ? "none" : def.filters == PNG_FILTER_SUB ? "sub"
            : def.filters == PNG_FILTER_UP ? "up" : "other");
 

@@ -13,7 +13,7 @@
 #include <math.h>
 #include <cmocka.h>
 
-#include "vmath.h"
+#include "core/vmath.h"
 
 /* |a - b| <= tol */
 #define assert_near(a, b, tol)                                                           \

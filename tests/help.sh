@@ -1,7 +1,7 @@
 #!/bin/sh
 # help.sh: checks that the command reference is whole and in step everywhere.
 #
-# commands/ (one file per command) is built by src/mkhelp.awk into the program's
+# commands/ (one file per command) is built by tools/mkhelp.awk into the program's
 # `help` and into the command list of man/vroc.1.  This script checks that every
 # file parses and its C compiles, that man/vroc.1 is what the generator makes
 # now and is lint-clean, that the generator rejects broken files, and that the
@@ -33,7 +33,7 @@ nwords=$(printf '%s\n' "$words" | grep -c .)
 
 # ---- (a) every file of commands/ parses, and the C it makes compiles ----
 if [ "$nwords" -gt 0 ] &&
-   $AWK -f src/mkhelp.awk -v mode=c commands/* > "$tmp/help_data.c" 2> "$tmp/err"; then
+   $AWK -f tools/mkhelp.awk -v mode=c commands/* > "$tmp/help_data.c" 2> "$tmp/err"; then
     ok "all $nwords files of commands/ parse (mkhelp.awk mode=c)"
     cc=${CC:-cc}
     if command -v "$cc" > /dev/null 2>&1; then
@@ -53,7 +53,7 @@ else
 fi
 
 # ---- (b) man/vroc.1 is what the template and commands/ make now ----
-if $AWK -f src/mkhelp.awk -v mode=man -v template=man/vroc.1.in commands/* \
+if $AWK -f tools/mkhelp.awk -v mode=man -v template=man/vroc.1.in commands/* \
         > "$tmp/vroc.1" 2> "$tmp/err"; then
     if cmp -s "$tmp/vroc.1" man/vroc.1; then
         ok "man/vroc.1 is up to date with man/vroc.1.in and commands/"
@@ -84,7 +84,7 @@ reject() {
     mkdir -p "$tmp/bad"
     rm -f "$tmp/bad/radius"
     sed "$2" commands/radius > "$tmp/bad/radius"
-    if $AWK -f src/mkhelp.awk -v mode=c commands/cube "$tmp/bad/radius" \
+    if $AWK -f tools/mkhelp.awk -v mode=c commands/cube "$tmp/bad/radius" \
             > /dev/null 2> "$tmp/err"; then
         echo "the generator accepted it" > "$tmp/err"
         not_ok "the generator rejects a file with $1" "$tmp/err"

@@ -26,9 +26,9 @@
 #include <string.h>
 #include <time.h>
 
-#include "body.h"
-#include "closest.h"
-#include "shape.h"
+#include "core/body.h"
+#include "core/closest.h"
+#include "core/shape.h"
 
 /* ---- random numbers ---- */
 
@@ -157,7 +157,7 @@ static shape_params sq_p(double e1, double e2, int u, int v, double a1, double a
 
 /* A placed object in world coordinates. */
 typedef struct {
-    const shape *s;
+    const poly *hull;
     bool sphere;
     vec3 c; /* sphere centre */
     double r;
@@ -168,20 +168,20 @@ typedef struct {
     double size;
 } wobj;
 
-static wobj wobj_make(closest_object o)
+static wobj wobj_make(closest_proxy o)
 {
     wobj w;
     memset(&w, 0, sizeof w);
-    w.s = o.shape;
+    w.hull = o.hull;
     mat3 R = m3_from_quat(q_normalize(o.q));
-    if (o.shape->p.kind == SHAPE_SPHERE) {
+    if (!o.hull) {
         w.sphere = true;
         w.c = o.x;
-        w.r = o.shape->p.radius;
+        w.r = o.radius;
         w.size = w.r;
         return w;
     }
-    const poly *p = o.shape->hull;
+    const poly *p = o.hull;
     w.nv = p->nv;
     w.nf = p->nf;
     w.v = malloc((size_t)p->nv * sizeof *w.v);
@@ -250,7 +250,7 @@ static double or_seg_seg(vec3 a0, vec3 a1, vec3 b0, vec3 b1, vec3 *pa, vec3 *pb,
  * (may be NULL) tells whether that is x's projection inside the polygon. */
 static double or_point_face_in(const wobj *w, int f, vec3 x, vec3 *q, bool *interior)
 {
-    const poly *p = w->s->hull;
+    const poly *p = w->hull;
     const int *fv = p->face_vert + p->f[f].first;
     int cnt = p->f[f].count;
     vec3 n = w->fn[f];
@@ -332,7 +332,7 @@ typedef struct {
  * side < 0: min <= thr); all of them when full. */
 static cands or_candidates(const wobj *w, const double *proj, double thr, int side, bool full)
 {
-    const poly *p = w->s->hull;
+    const poly *p = w->hull;
     cands c = {malloc((size_t)p->nv * sizeof(int)), malloc((size_t)p->ne * sizeof(int)),
                malloc((size_t)p->nf * sizeof(int)), 0, 0, 0};
 #define PASS(x) (full || (side > 0 ? (x) >= thr : (x) <= thr))
@@ -379,7 +379,7 @@ static vec3 or_dir(vec3 pa, vec3 pb, vec3 fallback)
 
 static oracle oracle_poly_poly(const wobj *A, const wobj *B, bool full)
 {
-    const poly *pa = A->s->hull, *pb = B->s->hull;
+    const poly *pa = A->hull, *pb = B->hull;
     double scale = A->size + B->size + v3_len(A->v[0]);
     double tol = 1e-11 * scale;
     oracle o = {true, 0, v3(0, 0, 0), v3(0, 0, 0), v3(0, 0, 0)};
@@ -551,7 +551,7 @@ static double surface_dist(const wobj *w, vec3 x)
 /* Distance of x from feature f of w. */
 static double feature_dist(const wobj *w, closest_feature f, vec3 x)
 {
-    const poly *p = w->sphere ? NULL : w->s->hull;
+    const poly *p = w->sphere ? NULL : w->hull;
     vec3 q = v3(0, 0, 0);
     switch (f.kind) {
     case CLOSEST_SPHERE: return w->sphere ? fabs(v3_dist(x, w->c) - w->r) : INFINITY;
@@ -623,7 +623,7 @@ static void check_answer(const wobj *A, const wobj *B, const oracle *o, closest_
 
 /* After a penetrating answer: A moved along the normal by the estimate plus a margin
  * no longer intersects B (the estimate is an overlap along a separating axis). */
-static void check_estimate(closest_object a, closest_object b, closest_result r)
+static void check_estimate(closest_proxy a, closest_proxy b, closest_result r)
 {
     double margin = 1e-7 * (1 + fabs(r.distance));
     a.x = v3_mad(a.x, r.normal, -r.distance + margin);
@@ -637,7 +637,7 @@ static void check_estimate(closest_object a, closest_object b, closest_result r)
 }
 
 /* Every query of the tests goes through here. */
-static closest_result query(closest_object a, closest_object b, closest_cache *cache)
+static closest_result query(closest_proxy a, closest_proxy b, closest_cache *cache)
 {
     return closest_distance(a, b, cache);
 }
@@ -687,11 +687,11 @@ static int pool_teardown(void **state)
 
 /* ---- tests ---- */
 
-static closest_object place(const shape *s, vec3 x, quat q) { return (closest_object){s, x, q}; }
+static closest_proxy place(const shape *s, vec3 x, quat q) { return shape_proxy(s, x, q); }
 
 /* A random configuration of a and b: B at a random direction, its centre at a
  * random fraction of the sum of the outer radii (many penetrate, many are near). */
-static void random_config(const shape *sa, const shape *sb, closest_object *a, closest_object *b)
+static void random_config(const shape *sa, const shape *sb, closest_proxy *a, closest_proxy *b)
 {
     double ra = sa->r_out + v3_len(sa->mass.com), rb = sb->r_out + v3_len(sb->mass.com);
     *a = place(sa, v3(rnd_in(-3, 3), rnd_in(-3, 3), rnd_in(-3, 3)), rnd_quat());
@@ -715,7 +715,7 @@ static void random_configurations(void **state)
             long quota = total * (pair + 1) / npairs - total * pair / npairs;
             closest_cache stale = {0}, stale_ba = {0};
             for (long k = 0; k < quota; k++, done++) {
-                closest_object a, b;
+                closest_proxy a, b;
                 random_config(&g_pool[i].s, &g_pool[j].s, &a, &b);
                 wobj A = wobj_make(a), B = wobj_make(b);
                 oracle o = oracle_of(&A, &B, false);
@@ -771,7 +771,7 @@ static void oracle_is_exact(void **state)
             k--;
             continue;
         }
-        closest_object a, b;
+        closest_proxy a, b;
         random_config(&g_pool[i].s, &g_pool[j].s, &a, &b);
         wobj A = wobj_make(a), B = wobj_make(b);
         oracle o1 = oracle_of(&A, &B, false), o2 = oracle_of(&A, &B, true);
@@ -799,8 +799,8 @@ static void coherent_run(const shape *sa, const shape *sb, int nsteps, double an
         /* B orbits A, in and out of contact */
         double dist = (ra + rb) * (0.85 + 0.3 * sin(0.37 * th));
         vec3 dir = q_rotate(q_axis_angle(orbit, 0.5 * th), start);
-        closest_object a = place(sa, v3(0.1, -0.2, 0.3), qa);
-        closest_object b = place(sb, v3_mad(v3(0.1, -0.2, 0.3), dir, dist), qb);
+        closest_proxy a = place(sa, v3(0.1, -0.2, 0.3), qa);
+        closest_proxy b = place(sb, v3_mad(v3(0.1, -0.2, 0.3), dir, dist), qb);
         wobj A = wobj_make(a), B = wobj_make(b);
         oracle o = oracle_of(&A, &B, false);
         snprintf(g_what, sizeof g_what, "%s step %d", name, s);
@@ -862,7 +862,7 @@ static void coherent_sequences(void **state)
 static void degenerate_case(const char *what, const shape *sa, vec3 xa, quat qa,
                             const shape *sb, vec3 xb, quat qb, double want, double tol)
 {
-    closest_object a = place(sa, xa, qa), b = place(sb, xb, qb);
+    closest_proxy a = place(sa, xa, qa), b = place(sb, xb, qb);
     wobj A = wobj_make(a), B = wobj_make(b);
     oracle o = oracle_of(&A, &B, true);
     tally t = {0};
@@ -1022,7 +1022,7 @@ static void snapped_configurations(void **state)
         }
         vec3 xb = v3(0.25 * (int)(rnd() * 17 - 8), 0.25 * (int)(rnd() * 17 - 8),
                      0.25 * (int)(rnd() * 17 - 8));
-        closest_object a = place(&sh[i].s, v3(0, 0, 0), q[0]), b = place(&sh[j].s, xb, q[1]);
+        closest_proxy a = place(&sh[i].s, v3(0, 0, 0), q[0]), b = place(&sh[j].s, xb, q[1]);
         wobj A = wobj_make(a), B = wobj_make(b);
         oracle o = oracle_of(&A, &B, false);
         closest_cache rc = {0};
@@ -1110,7 +1110,7 @@ static void symmetric_bodies(void **state)
                 b->x = v3_mad(a->x, rnd_unit(), rnd_in(0.5, 3));
                 b->q = rnd_quat();
                 if (k % 10 == 0) b->x = a->x, b->q = a->q; /* exactly degenerate */
-                closest_result r1 = closest_query(a, b, &cab), r2 = closest_query(b, a, &cba);
+                closest_result r1 = body_distance(a, b, &cab), r2 = body_distance(b, a, &cba);
                 if (!same_result(r1, r2))
                     fail_msg("%s / %s config %d: query(a, b) and query(b, a) differ",
                              body_type_name(ps[i].kind), body_type_name(ps[j].kind), k);
@@ -1131,26 +1131,26 @@ static void invalid_input(void **state)
     body *a = make_body("a", box_p(1, 1, 1), v3(0, 0, 0), q_identity(), &owna);
     body *b = make_body("b", sphere_p(1), v3(5, 0, 0), q_identity(), &ownb);
     closest_cache c = {0};
-    closest_result r = closest_query(a, b, &c);
+    closest_result r = body_distance(a, b, &c);
     assert_int_equal(r.status, CLOSEST_SEPARATED);
     assert_near(r.distance, 3, 1e-15);
     assert_true(c.valid);
     /* a stale cache from other shapes (indices out of range) is ignored */
     closest_cache bad = {{CLOSEST_FACE, 1000}, {CLOSEST_EDGE, 3}, true};
-    r = closest_query(a, b, &bad);
+    r = body_distance(a, b, &bad);
     assert_near(r.distance, 3, 1e-15);
     b->x.y = NAN;
     closest_cache keep = c;
-    r = closest_query(a, b, &c);
+    r = body_distance(a, b, &c);
     assert_int_equal(r.status, CLOSEST_INVALID);
     assert_true(isnan(r.distance));
     assert_memory_equal(&c, &keep, sizeof c);
     b->x.y = 0;
     b->built = false;
-    r = closest_query(a, b, NULL);
+    r = body_distance(a, b, NULL);
     assert_int_equal(r.status, CLOSEST_INVALID);
     b->built = true;
-    r = closest_query(a, b, NULL);
+    r = body_distance(a, b, NULL);
     assert_int_equal(r.status, CLOSEST_SEPARATED);
     assert_string_equal(closest_kind_name(r.fb.kind), "sphere");
     assert_string_equal(closest_kind_name(r.fa.kind), "face");

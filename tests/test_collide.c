@@ -11,11 +11,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "closest.h"
-#include "contact.h"
-#include "schedule.h"
-#include "sim.h"
-#include "world.h"
+#include "core/closest.h"
+#include "core/contact.h"
+#include "core/schedule.h"
+#include "core/edit.h"
+#include "core/flight.h"
+#include "core/rest.h"
+#include "core/sim.h"
+#include "core/world.h"
 #include "worlds.h"
 
 static void frames(world *w, int n)
@@ -343,19 +346,19 @@ static void far_pairs_keep_their_times_when_a_box_settles(void **state)
     assert_int_equal(sim_prepare(&w), 0);
     long posts[4];
     int n = 0;
-    for (long k = 0; k < w.npairs; k++) /* the box is body 1, the posts 2 to 5 */
-        if (w.pairs[k].a == 1 && w.pairs[k].b >= 2) posts[n++] = k;
+    for (long k = 0; k < w.pairs.n; k++) /* the box is body 1, the posts 2 to 5 */
+        if (w.pairs.p[k].a == 1 && w.pairs.p[k].b >= 2) posts[n++] = k;
     assert_int_equal(n, 4);
     int jolts = 0;
     for (int f = 0; f < 30; f++) {
         double next[4], jumped = box->jumped;
         long hits = w.st.collisions;
-        for (int k = 0; k < 4; k++) next[k] = w.pairs[posts[k]].next;
+        for (int k = 0; k < 4; k++) next[k] = w.pairs.p[posts[k]].next;
         frames(&w, 1);
         if (w.st.collisions == hits || box->jumped <= jumped + SIM_SEPARATION) continue;
         jolts++;
         for (int k = 0; k < 4; k++)
-            if (next[k] > w.time) assert_true(w.pairs[posts[k]].next == next[k]);
+            if (next[k] > w.time) assert_true(w.pairs.p[posts[k]].next == next[k]);
     }
     print_message("settling box: %d frames with a jump, %.3g m in all; resting %d\n", jolts,
                   box->jumped, box->state == STATE_RESTING);
@@ -438,7 +441,7 @@ static void drum_region(int ures, int vres, int min_nv, bool upright)
         }
         drum->x.z += 0.1 + 1e-8 - low.z;
         low.z = 0.1 + 1e-8;
-        closest_result r = closest_query(drum, table, NULL);
+        closest_result r = body_distance(drum, table, NULL);
         assert_int_equal(r.status, CLOSEST_SEPARATED);
         vec3 c = contact_point(drum, table, &r, 1e-6);
         bool stands = contact_stable(drum, r.normal, 1e-6);
@@ -518,7 +521,7 @@ static void box_turning_onto_its_edge_strikes_with_the_lower_end(void **state)
         vec3 across = q_rotate(q_axis_angle(v3(0, 0, 1), yaw), v3(0, 1, 0));
         body_set_angular_vel(box, v3_scale(across, omega));
         box->v = v3(0, 0, 0.01);
-        closest_result r = closest_query(box, table, NULL);
+        closest_result r = body_distance(box, table, NULL);
         assert_int_equal(r.status, CLOSEST_SEPARATED);
         vec3 mid = contact_point(box, table, &r, 1e-6);
         assert_true(contact_closing_speed(box, table, mid, r.normal) < 0);

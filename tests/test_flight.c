@@ -10,8 +10,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "sim.h"
-#include "world.h"
+#include "core/edit.h"
+#include "core/flight.h"
+#include "core/rest.h"
+#include "core/sim.h"
+#include "core/world.h"
 #include "worlds.h"
 
 static void run_frames(world *w, int n)

@@ -9,8 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "poly.h"
-#include "shape.h"
+#include "core/poly.h"
+#include "core/shape.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -205,13 +205,13 @@ static void test_random_clouds(void **state)
     uint64_t seed = 12345;
     const int sizes[] = {4, 5, 10, 50, 300, 2000};
     for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; s++)
-        for (int shape = 0; shape < 2; shape++) {
+        for (int kind = 0; kind < 2; kind++) {
             int n = sizes[s];
             vec3 *pts = malloc((size_t)n * sizeof *pts);
             assert_non_null(pts);
             for (int i = 0; i < n; i++) {
                 pts[i] = v3(rnd(&seed) * 2, rnd(&seed), rnd(&seed) * 0.5);
-                if (shape == 1) pts[i] = v3_scale(v3_norm(pts[i]), 3); /* on a sphere */
+                if (kind == 1) pts[i] = v3_scale(v3_norm(pts[i]), 3); /* on a sphere */
             }
             double size = extent(pts, n);
             poly *p = hull_or_fail(pts, n);

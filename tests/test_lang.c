@@ -7,9 +7,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "commands.h"
-#include "help.h"
-#include "lang.h"
+#include "shell/commands.h"
+#include "shell/help.h"
+#include "shell/lang.h"
+#include "shell/writer.h"
 
 static char g_err[1024];
 

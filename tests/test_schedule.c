@@ -5,9 +5,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "schedule.h"
-#include "sim.h"
-#include "world.h"
+#include "core/schedule.h"
+#include "core/edit.h"
+#include "core/flight.h"
+#include "core/rest.h"
+#include "core/sim.h"
+#include "core/world.h"
 #include "worlds.h"
 
 static void heap_keeps_its_order(void **state)
@@ -20,19 +23,19 @@ static void heap_keeps_its_order(void **state)
         snprintf(name, sizeof name, "o%d", i);
         add(&w, name, SHAPE_SPHERE);
     }
-    assert_int_equal(sim_update_pairs(&w), 0);
+    assert_int_equal(pairs_update(&w), 0);
     assert_int_equal(sched_build(&w, 0), 0);
-    assert_int_equal(w.npairs, 40 * 39 / 2);
+    assert_int_equal(w.pairs.n, 40 * 39 / 2);
     unsigned long long s = 5;
     for (int k = 0; k < 20000; k++) {
-        long i = (long)urand(&s, 0, (double)w.npairs);
+        long i = (long)urand(&s, 0, (double)w.pairs.n);
         sched_set(&w, i, urand(&s, 0, 100));
         if (k % 1000 == 0) assert_int_equal(sched_check(&w), 0);
     }
     assert_int_equal(sched_check(&w), 0);
     /* taking the top and pushing it far away yields the times in order */
     double last = -1, next;
-    for (long k = 0; k < w.npairs; k++) {
+    for (long k = 0; k < w.pairs.n; k++) {
         long i = sched_top(&w, &next);
         assert_true(next >= last);
         last = next;
@@ -42,17 +45,17 @@ static void heap_keeps_its_order(void **state)
     /* every pair of object 3 made due, and only those */
     sched_object_due(&w, 3, 1.0);
     long due = 0;
-    for (long i = 0; i < w.npairs; i++)
-        if (w.pairs[i].next == 1.0) {
-            assert_true(w.pairs[i].a == 3 || w.pairs[i].b == 3);
+    for (long i = 0; i < w.pairs.n; i++)
+        if (w.pairs.p[i].next == 1.0) {
+            assert_true(w.pairs.p[i].a == 3 || w.pairs.p[i].b == 3);
             due++;
         }
     assert_int_equal(due, 39);
     assert_int_equal(sched_check(&w), 0);
     /* a slide of object 5 that ends makes due its near pairs, and the far ones
      * whose times counted that slide; not the far ones found at the whole force */
-    for (long i = 0; i < w.npairs; i++) {
-        pair *p = &w.pairs[i];
+    for (long i = 0; i < w.pairs.n; i++) {
+        pair *p = &w.pairs.p[i];
         sched_set(&w, i, 10.0);
         p->far = i % 3 != 0;
         p->far_slide_a = p->far_slide_b = false;
@@ -60,11 +63,11 @@ static void heap_keeps_its_order(void **state)
     }
     sched_slide_ends(&w, 5, 2.0);
     due = 0;
-    for (long i = 0; i < w.npairs; i++) {
-        const pair *p = &w.pairs[i];
+    for (long i = 0; i < w.pairs.n; i++) {
+        const pair *p = &w.pairs.p[i];
         bool mine = p->a == 5 || p->b == 5;
-        assert_true(w.pairs[i].next == (mine && i % 3 != 2 ? 2.0 : 10.0));
-        due += w.pairs[i].next == 2.0;
+        assert_true(w.pairs.p[i].next == (mine && i % 3 != 2 ? 2.0 : 10.0));
+        due += w.pairs.p[i].next == 2.0;
     }
     assert_true(due > 10 && due < 39);
     assert_int_equal(sched_check(&w), 0);
@@ -76,7 +79,7 @@ static void heap_keeps_its_order(void **state)
 static void fly_felt(const world *w, body *b, double h)
 {
     if (b->state == STATE_DYNAMIC)
-        sim_flight(b, h, world_body_accel(w, b), w->set.max_linear, w->set.max_angular);
+        flight_fly(b, h, world_body_accel(w, b), w->set.max_linear, w->set.max_angular);
 }
 
 /* First time the two bodies touch when flown with vroc's integrator in steps of
@@ -89,7 +92,7 @@ static double first_contact(const world *w, const body *a0, const body *b0, doub
         body na = a, nb = b;
         fly_felt(w, &na, h);
         fly_felt(w, &nb, h);
-        closest_result r = closest_query(&na, &nb, NULL);
+        closest_result r = body_distance(&na, &nb, NULL);
         if (r.status != CLOSEST_SEPARATED) {
             /* contact within this step: bisect its length */
             double lo = 0, hi = h;
@@ -99,7 +102,7 @@ static double first_contact(const world *w, const body *a0, const body *b0, doub
                 nb = b;
                 fly_felt(w, &na, mid);
                 fly_felt(w, &nb, mid);
-                if (closest_query(&na, &nb, NULL).status == CLOSEST_SEPARATED) lo = mid;
+                if (body_distance(&na, &nb, NULL).status == CLOSEST_SEPARATED) lo = mid;
                 else hi = mid;
             }
             return t + lo;
@@ -146,12 +149,12 @@ static double random_pair(world *w, unsigned long long *s, int k, body *ob[2])
     ob[0]->v = v3_add(v3_scale(dir, urand(s, 0, 8)), v3(urand(s, -1, 1), urand(s, -1, 1), urand(s, -1, 1)));
     if (!body_is_static(ob[1]))
         ob[1]->v = v3_add(v3_scale(dir, -urand(s, 0, 4)), v3(urand(s, -1, 1), urand(s, -1, 1), urand(s, -1, 1)));
-    closest_result r = closest_query(ob[0], ob[1], NULL);
+    closest_result r = body_distance(ob[0], ob[1], NULL);
     if (r.status != CLOSEST_SEPARATED) {
         world_free(w);
         return 0;
     }
-    assert_int_equal(sim_update_pairs(w), 0);
+    assert_int_equal(pairs_update(w), 0);
     return r.distance;
 }
 
@@ -166,7 +169,7 @@ static void predictions_are_never_late(void **state)
         body *ob[2];
         double d = random_pair(&w, &s, k, ob);
         if (d == 0) continue;
-        double predicted = sched_predict(&w, &w.pairs[0], d);
+        double predicted = sched_predict(&w, &w.pairs.p[0], d);
         /* the bound that allows any spin and a few jumps is earlier still */
         double far = sched_predict_far(&w, ob[0], ob[1], d, true, true);
         if (far > predicted) fail_msg("trial %d: far bound %.9g s after %.9g s", k, far, predicted);
@@ -264,7 +267,7 @@ static void far_times_hold_when_a_slide_ends(void **state)
 /* Body b flown h seconds in one flight, when it moves. */
 static void fly(const world *w, body *b, double h)
 {
-    if (!body_is_static(b)) sim_flight(b, h, world_accel(w), w->set.max_linear, w->set.max_angular);
+    if (!body_is_static(b)) flight_fly(b, h, world_accel(w), w->set.max_linear, w->set.max_angular);
 }
 
 /* Whether b flies h seconds within the speed limits (sim.c, unlimited). */
@@ -312,7 +315,7 @@ static void kept_bounds_are_never_late(void **state)
         if (later) {
             fly(&w, &ae, t_end);
             fly(&w, &be, t_end);
-            closest_result r = closest_query(&ae, &be, NULL);
+            closest_result r = body_distance(&ae, &be, NULL);
             const body *pre = i == 0 ? &a : &b, *o = ob[1 - i];
             if (r.status != CLOSEST_SEPARATED || !unlimited(&w, pre, t_end - t) ||
                 !unlimited(&w, o, t_end)) {
@@ -380,7 +383,7 @@ static void along_predictions_are_never_late(void **state)
         for (int j = 0; j < 2 && k % 5 == 4; j++) /* at 90% to 100% of the speed limit */
             if (v3_len(ob[j]->v) > 0)
                 ob[j]->v = v3_scale(v3_norm(ob[j]->v), urand(&s, 0.9, 1) * w.set.max_linear);
-        closest_result r = closest_query(ob[0], ob[1], NULL);
+        closest_result r = body_distance(ob[0], ob[1], NULL);
         if (r.status != CLOSEST_SEPARATED) {
             world_free(&w);
             continue;
@@ -420,7 +423,7 @@ static void along_stops_at_the_speed_limit(void **state)
     body *ball = add_ball(&w, "ball", 0.1);
     ball->x = v3(0.5, 0, 0);
     ball->v = v3(2, 4.5, 0); /* away at 2 m/s: 4.92 m/s in all */
-    closest_result r = closest_query(wall, ball, NULL);
+    closest_result r = body_distance(wall, ball, NULL);
     assert_int_equal(r.status, CLOSEST_SEPARATED);
     double along = sched_predict_along(&w, wall, ball, r.distance, v3_neg(r.normal), r.pa, r.pb);
     double truth = first_contact(&w, wall, ball, 0.001, 5);
@@ -505,7 +508,7 @@ static long frames_in_boxes(world *w, int n)
         assert_int_equal(sched_check(w), 0);
         for (int k = 0; k < w->n; k++) {
             const body *b = w->bodies[k];
-            const sched_box *x = &w->box[k];
+            const sched_box *x = &w->sched.box[k];
             if (b->state != STATE_DYNAMIC) continue;
             vec3 c = body_com(b), r = v3(b->shape.r_out, b->shape.r_out, b->shape.r_out);
             vec3 lo = v3_sub(c, r), hi = v3_add(c, r);
@@ -513,9 +516,9 @@ static long frames_in_boxes(world *w, int n)
                 hi.y > x->hi.y || hi.z > x->hi.z)
                 fail_msg("frame %ld: %s is out of its box", w->frame, b->name);
         }
-        for (long i = 0; i < w->npairs; i++) {
-            const pair *p = &w->pairs[i];
-            if (!w->parked[i]) continue;
+        for (long i = 0; i < w->pairs.n; i++) {
+            const pair *p = &w->pairs.p[i];
+            if (!w->sched.parked[i]) continue;
             parked++;
             assert_true(p->next == HUGE_VAL);
             assert_true(sched_boxes_apart(w, p->a, p->b));
@@ -535,7 +538,7 @@ static void boxes_hold_a_pile(void **state)
     long parked = frames_in_boxes(&w, 200);
     print_message("%ld parked pairs seen in 200 frames; %ld collisions\n", parked, w.st.collisions);
     assert_true(w.st.collisions > 50);
-    assert_true(parked > 200 * w.npairs / 4); /* a quarter of the pairs, or more */
+    assert_true(parked > 200 * w.pairs.n / 4); /* a quarter of the pairs, or more */
     world_free(&w);
 }
 
@@ -586,9 +589,9 @@ static void prepared_worlds_move_the_same(void **state)
     assert_int_equal(sim_prepare(&ws[0]), 0);
     assert_false(ws[0].sched_dirty);
     assert_int_equal(sched_check(&ws[0]), 0);
-    assert_true(ws[0].capdue >= ws[0].npairs);
-    assert_true(ws[0].capsnap >= ws[0].n);
-    for (long i = 0; i < ws[0].npairs; i++) assert_true(ws[0].pairs[i].next == ws[0].time);
+    assert_true(ws[0].step.capdue >= ws[0].pairs.n);
+    assert_true(ws[0].step.cap >= ws[0].n);
+    for (long i = 0; i < ws[0].pairs.n; i++) assert_true(ws[0].pairs.p[i].next == ws[0].time);
     assert_int_equal(sim_prepare(&ws[0]), 0); /* again: nothing to do */
     char err[256];
     for (int f = 0; f < 10; f++) {

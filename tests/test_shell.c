@@ -7,7 +7,8 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "shell.h"
+#include "shell/shell.h"
+#include "shell/writer.h"
 
 static shell g_sh;
 static char *g_out, *g_errbuf;
@@ -46,7 +47,7 @@ static char *snapshot(void)
     char *text;
     size_t len;
     FILE *f = open_memstream(&text, &len);
-    settings_write(f, &g_sh.w, 0);
+    settings_write(f, &g_sh, 0);
     for (int i = 0; i < g_sh.w.n; i++) body_write(f, g_sh.w.bodies[i]);
     fprintf(f, "current %d time %.17g frame %ld\n", g_sh.current, g_sh.w.time, g_sh.w.frame);
     fclose(f);
@@ -250,17 +251,17 @@ static void restart_returns_every_setting(void **state)
     char *text;
     size_t len;
     FILE *f = open_memstream(&text, &len);
-    settings_write(f, &g_sh.w, 0);
+    settings_write(f, &g_sh, 0);
     fclose(f);
-    world fresh;
-    world_init(&fresh);
+    shell fresh;
+    shell_init(&fresh, stdout, stderr);
     char *want;
     f = open_memstream(&want, &len);
     settings_write(f, &fresh, 0);
     fclose(f);
     assert_string_equal(text, want);
     assert_int_equal(g_sh.w.n, 0);
-    world_free(&fresh);
+    shell_free(&fresh);
     free(text);
     free(want);
 }
@@ -295,7 +296,7 @@ static void time_cannot_run_through_objects(void **state)
     assert_non_null(strstr(g_errbuf, "time cannot run while objects interpenetrate"));
     assert_int_equal(run("step\n"), CMD_ERROR);
     assert_int_equal(run("start\n"), CMD_ERROR);
-    assert_false(g_sh.w.running);
+    assert_false(g_sh.running);
     char *after = snapshot();
     assert_string_equal(before, after);
     free(before);
@@ -314,8 +315,8 @@ static void real_time_checks_overlap_once(void **state)
     const char *scene = "restart; seed = 7; random 30; gravity\n";
     assert_int_equal(run(scene), CMD_OK);
     assert_int_equal(run("start\n"), CMD_OK);
-    assert_true(g_sh.w.running);
-    long pairs = g_sh.w.npairs;
+    assert_true(g_sh.running);
+    long pairs = g_sh.w.pairs.n;
     assert_true(pairs >= 30 * 29 / 2);
     for (int k = 0; k < 10; k++) assert_int_equal(shell_advance(&g_sh, NULL, 1), CMD_OK);
     long ticks = g_sh.w.st.pair_checks;
@@ -366,12 +367,12 @@ static void failed_record_stops_a_batch_run(void **state)
     assert_int_equal(run("run 5\n"), CMD_ERROR);
     assert_non_null(strstr(g_errbuf, "record: "));
     assert_non_null(strstr(g_errbuf, "time stopped"));
-    assert_false(g_sh.w.set.record);
+    assert_false(g_sh.view_set.record);
     assert_int_equal(g_sh.w.frame, 1);
     g_sh.stop_on_error = false; /* at the prompt */
     assert_int_equal(run("record = on; run 5\n"), CMD_OK);
     assert_non_null(strstr(g_errbuf, "; recording turned off\n")); /* and time goes on */
-    assert_false(g_sh.w.set.record);
+    assert_false(g_sh.view_set.record);
     assert_int_equal(g_sh.w.frame, 6);
     g_sh.stop_on_error = true;
 }

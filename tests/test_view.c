@@ -19,9 +19,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "png_out.h"
-#include "view.h"
-#include "world.h"
+#include "view/png_out.h"
+#include "view/view.h"
+#include "core/world.h"
 
 #define TW 160
 #define TH 128
@@ -31,8 +31,9 @@ static const int BG[3] = {10, 20, 40};
 typedef struct {
     char dir[64];
     world w;
+    view_settings vs;
     view *v;
-    stats st;
+    view_stats st;
     char err[512];
 } fixture;
 
@@ -69,7 +70,8 @@ static int setup(void **state)
         return -1;
     }
     world_init(&f->w);
-    settings *s = &f->w.set;
+    f->vs = view_settings_defaults();
+    view_settings *s = &f->vs;
     s->head = v3(0, 0, 0);
     s->look_at = v3(0, 1, 0);
     s->up = v3(0, 0, 1);
@@ -164,7 +166,7 @@ static const unsigned char *px(const unsigned char *rgb, int w, int x, int y)
 static char *frame_path(const fixture *f, long frame, const char *suffix)
 {
     static char path[1200];
-    snprintf(path, sizeof path, "%s/frame-%06ld-%s.png", f->w.set.output, frame, suffix);
+    snprintf(path, sizeof path, "%s/frame-%06ld-%s.png", f->vs.output, frame, suffix);
     return path;
 }
 
@@ -189,14 +191,14 @@ static unsigned char *read_frame(const fixture *f, long frame, const char *suffi
 
 static void refresh_ok(fixture *f, long frame)
 {
-    if (view_refresh(&f->v, &f->w, frame, &f->st, f->err, sizeof f->err) != 0)
+    if (view_refresh(&f->v, &f->w, &f->vs, frame, &f->st, f->err, sizeof f->err) != 0)
         fail_msg("view_refresh: %s", f->err);
 }
 
 /* Horizontal disparity (left centroid x - right centroid x) of the only object. */
 static double disparity(fixture *f)
 {
-    if (view_render(&f->v, &f->w, f->err, sizeof f->err) != 0) fail_msg("view_render: %s", f->err);
+    if (view_render(&f->v, &f->w, &f->vs, f->err, sizeof f->err) != 0) fail_msg("view_render: %s", f->err);
     int w, h;
     double xl, xr;
     const unsigned char *l = view_pixels(f->v, 0, &w, &h);
@@ -262,8 +264,8 @@ static void test_orientation(void **state)
 static void test_parallax(void **state)
 {
     fixture *f = *state;
-    f->w.set.ipd = 0.1;
-    f->w.set.look_at = v3(0, 2, 0); /* D = 2 */
+    f->vs.ipd = 0.1;
+    f->vs.look_at = v3(0, 2, 0); /* D = 2 */
     body *b = add_sphere(f, v3(0, 0.8, 0), 0.1, 255, 255, 255);
 
     refresh_ok(f, 0);
@@ -298,9 +300,9 @@ static void test_parallax(void **state)
 static void test_zero_ipd(void **state)
 {
     fixture *f = *state;
-    f->w.set.ipd = 0;
+    f->vs.ipd = 0;
     add_sphere(f, v3(0.1, 0.5, 0), 0.1, 0, 0, 255);
-    assert_int_equal(view_render(&f->v, &f->w, f->err, sizeof f->err), 0);
+    assert_int_equal(view_render(&f->v, &f->w, &f->vs, f->err, sizeof f->err), 0);
     int w, h;
     const unsigned char *l = view_pixels(f->v, 0, &w, &h);
     const unsigned char *r = view_pixels(f->v, 1, &w, &h);
@@ -311,8 +313,8 @@ static void test_zero_ipd(void **state)
 static void test_sbs(void **state)
 {
     fixture *f = *state;
-    f->w.set.stereo = STEREO_SBS;
-    f->w.set.ipd = 0.2;
+    f->vs.stereo = STEREO_SBS;
+    f->vs.ipd = 0.2;
     add_sphere(f, v3(0, 0.6, 0), 0.1, 0, 200, 255);
     refresh_ok(f, 3);
     assert_int_equal(f->st.frames_written, 1);
@@ -335,8 +337,8 @@ static void test_sbs(void **state)
 static void test_anaglyph(void **state)
 {
     fixture *f = *state;
-    f->w.set.stereo = STEREO_ANAGLYPH;
-    f->w.set.ipd = 0.3;
+    f->vs.stereo = STEREO_ANAGLYPH;
+    f->vs.ipd = 0.3;
     add_sphere(f, v3(0, 0.5, 0), 0.08, 255, 255, 255);
     refresh_ok(f, 4);
     assert_int_equal(f->st.frames_written, 1);
@@ -364,7 +366,7 @@ static void test_anaglyph(void **state)
 static void test_mono(void **state)
 {
     fixture *f = *state;
-    f->w.set.stereo = STEREO_MONO;
+    f->vs.stereo = STEREO_MONO;
     add_sphere(f, v3(0, 1, 0), 0.2, 255, 0, 0);
     refresh_ok(f, 5);
     assert_int_equal(f->st.frames_written, 1);
@@ -389,7 +391,7 @@ static void test_real(void **state)
     long n[3];
     real_mode modes[3] = {REAL_SOLID, REAL_WIRE, REAL_HIDDEN};
     for (int m = 0; m < 3; m++) {
-        f->w.set.real = modes[m];
+        f->vs.real = modes[m];
         refresh_ok(f, m);
         for (int e = 0; e < 2; e++) {
             unsigned char *rgb = read_frame(f, m, e ? "right" : "left", TW, TH);
@@ -408,7 +410,7 @@ static void test_real(void **state)
 
     body *ball = add_sphere(f, v3(0, 1, 0), 0.1, 255, 0, 0);
     (void)ball;
-    f->w.set.real = REAL_HIDDEN;
+    f->vs.real = REAL_HIDDEN;
     refresh_ok(f, 9);
     unsigned char *rgb = read_frame(f, 9, "left", TW, TH);
     assert_true(coverage(rgb, TW, TH, NULL) > 100);
@@ -420,7 +422,7 @@ static void test_unbuilt_skipped(void **state)
 {
     fixture *f = *state;
     add(f, "raw", SHAPE_SPHERE, v3(0, 1, 0), 255, 255, 255);
-    assert_int_equal(view_render(&f->v, &f->w, f->err, sizeof f->err), 0);
+    assert_int_equal(view_render(&f->v, &f->w, &f->vs, f->err, sizeof f->err), 0);
     int w, h;
     const unsigned char *l = view_pixels(f->v, 0, &w, &h);
     assert_int_equal(coverage(l, w, h, NULL), 0);
@@ -436,15 +438,15 @@ static void test_output_unwritable(void **state)
     FILE *fp = fopen(plain, "w");
     assert_non_null(fp);
     fclose(fp);
-    snprintf(f->w.set.output, sizeof f->w.set.output, "%s/sub/frames", plain);
+    snprintf(f->vs.output, sizeof f->vs.output, "%s/sub/frames", plain);
     f->err[0] = '\0';
-    assert_int_equal(view_refresh(&f->v, &f->w, 0, &f->st, f->err, sizeof f->err), -1);
-    assert_non_null(strstr(f->err, f->w.set.output));
+    assert_int_equal(view_refresh(&f->v, &f->w, &f->vs, 0, &f->st, f->err, sizeof f->err), -1);
+    assert_non_null(strstr(f->err, f->vs.output));
     assert_non_null(strstr(f->err, strerror(ENOTDIR)));
     assert_int_equal(f->st.frames_written, 0);
     /* the output path itself a regular file */
-    snprintf(f->w.set.output, sizeof f->w.set.output, "%s", plain);
-    assert_int_equal(view_refresh(&f->v, &f->w, 0, &f->st, f->err, sizeof f->err), -1);
+    snprintf(f->vs.output, sizeof f->vs.output, "%s", plain);
+    assert_int_equal(view_refresh(&f->v, &f->w, &f->vs, 0, &f->st, f->err, sizeof f->err), -1);
     assert_non_null(strstr(f->err, plain));
 }
 
@@ -453,25 +455,25 @@ static void test_bad_head(void **state)
 {
     fixture *f = *state;
     add_sphere(f, v3(0, 1, 0), 0.2, 255, 0, 0);
-    f->w.set.look_at = f->w.set.head = v3(1, 2, 3);
+    f->vs.look_at = f->vs.head = v3(1, 2, 3);
     f->err[0] = '\0';
-    assert_int_equal(view_render(&f->v, &f->w, f->err, sizeof f->err), -1);
+    assert_int_equal(view_render(&f->v, &f->w, &f->vs, f->err, sizeof f->err), -1);
     assert_non_null(strstr(f->err, "look_at"));
-    assert_int_equal(view_refresh(&f->v, &f->w, 0, &f->st, f->err, sizeof f->err), -1);
+    assert_int_equal(view_refresh(&f->v, &f->w, &f->vs, 0, &f->st, f->err, sizeof f->err), -1);
     assert_false(exists(frame_path(f, 0, "left")));
 
-    f->w.set.look_at = v3(1, 2, 5);
-    f->w.set.up = v3(0, 0, 2);
+    f->vs.look_at = v3(1, 2, 5);
+    f->vs.up = v3(0, 0, 2);
     f->err[0] = '\0';
-    assert_int_equal(view_render(&f->v, &f->w, f->err, sizeof f->err), -1);
+    assert_int_equal(view_render(&f->v, &f->w, &f->vs, f->err, sizeof f->err), -1);
     assert_non_null(strstr(f->err, "parallel"));
 
-    f->w.set.up = v3(0, 1, 0);
-    f->w.set.fov = 180;
-    assert_int_equal(view_render(&f->v, &f->w, f->err, sizeof f->err), -1);
+    f->vs.up = v3(0, 1, 0);
+    f->vs.fov = 180;
+    assert_int_equal(view_render(&f->v, &f->w, &f->vs, f->err, sizeof f->err), -1);
     assert_non_null(strstr(f->err, "fov"));
-    f->w.set.fov = 60;
-    assert_int_equal(view_render(&f->v, &f->w, f->err, sizeof f->err), 0);
+    f->vs.fov = 60;
+    assert_int_equal(view_render(&f->v, &f->w, &f->vs, f->err, sizeof f->err), 0);
 }
 
 /* (7) nested output folders are created; frames go on into an existing one. */
@@ -479,7 +481,7 @@ static void test_nested_output(void **state)
 {
     fixture *f = *state;
     add_sphere(f, v3(0, 1, 0), 0.2, 255, 0, 0);
-    snprintf(f->w.set.output, sizeof f->w.set.output, "%s/a/b//c/", f->dir);
+    snprintf(f->vs.output, sizeof f->vs.output, "%s/a/b//c/", f->dir);
     refresh_ok(f, 1);
     refresh_ok(f, 2);
     char path[256];
@@ -497,13 +499,13 @@ static void test_resize(void **state)
 {
     fixture *f = *state;
     add_sphere(f, v3(0, 1, 0), 0.2, 255, 0, 0);
-    assert_int_equal(view_display(&f->v, &f->w, f->err, sizeof f->err), 0);
+    assert_int_equal(view_display(&f->v, &f->vs, f->err, sizeof f->err), 0);
     assert_non_null(f->v);
     assert_null(view_pixels(f->v, 0, NULL, NULL));
-    assert_int_equal(view_render(&f->v, &f->w, f->err, sizeof f->err), 0);
-    f->w.set.image_w = 64;
-    f->w.set.image_h = 48;
-    assert_int_equal(view_render(&f->v, &f->w, f->err, sizeof f->err), 0);
+    assert_int_equal(view_render(&f->v, &f->w, &f->vs, f->err, sizeof f->err), 0);
+    f->vs.image_w = 64;
+    f->vs.image_h = 48;
+    assert_int_equal(view_render(&f->v, &f->w, &f->vs, f->err, sizeof f->err), 0);
     int w, h;
     const unsigned char *rgb = view_pixels(f->v, 1, &w, &h);
     assert_non_null(rgb);
@@ -511,8 +513,8 @@ static void test_resize(void **state)
     assert_int_equal(h, 48);
     const unsigned char *c = px(rgb, 64, 32, 24);
     assert_true(c[0] > 100 && c[1] < 50);
-    f->w.set.image_w = 0;
-    assert_int_equal(view_display(&f->v, &f->w, f->err, sizeof f->err), -1);
+    f->vs.image_w = 0;
+    assert_int_equal(view_display(&f->v, &f->vs, f->err, sizeof f->err), -1);
     assert_null(f->v);
     assert_non_null(strstr(f->err, "image_size"));
 }
@@ -525,12 +527,12 @@ static void test_two_views(void **state)
     view *other = NULL;
     world w2;
     world_init(&w2);
-    w2.set = f->w.set;
-    w2.set.image_w = 32;
-    w2.set.image_h = 32;
-    assert_int_equal(view_render(&f->v, &f->w, f->err, sizeof f->err), 0);
-    assert_int_equal(view_render(&other, &w2, f->err, sizeof f->err), 0);
-    assert_int_equal(view_render(&f->v, &f->w, f->err, sizeof f->err), 0);
+    view_settings vs2 = f->vs;
+    vs2.image_w = 32;
+    vs2.image_h = 32;
+    assert_int_equal(view_render(&f->v, &f->w, &f->vs, f->err, sizeof f->err), 0);
+    assert_int_equal(view_render(&other, &w2, &vs2, f->err, sizeof f->err), 0);
+    assert_int_equal(view_render(&f->v, &f->w, &f->vs, f->err, sizeof f->err), 0);
     int w, h;
     const unsigned char *rgb = view_pixels(f->v, 0, &w, &h);
     assert_int_equal(w, TW);

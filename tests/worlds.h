@@ -4,7 +4,7 @@
 
 #include <stdlib.h>
 
-#include "world.h"
+#include "core/world.h"
 
 /* A new object of the given kind with the thesis's defaults, built and added to w. */
 static inline body *add(world *w, const char *name, shape_kind kind)

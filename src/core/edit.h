@@ -1,0 +1,38 @@
+/* edit.h: what a command changes in the world, and what each change does to rest,
+ * slides and the schedule.
+ *
+ * The shell changes bodies only through these functions (and the world's add and
+ * delete), so that a change always wakes what it disturbs and leaves the
+ * simulation's own state consistent: a body given a velocity wakes and slides no
+ * more, the objects resting on it wake, a new mass makes the pairs again.  A
+ * property is named by its offset in body, as the command table gives it
+ * (offsetof(body, v) for linear_vel, offsetof(body, sp.radius) for radius).
+ */
+#ifndef VROC_EDIT_H
+#define VROC_EDIT_H
+
+#include <stddef.h>
+
+#include "world.h"
+
+/* Sets the property of body i at offset off in body from num (one number, three
+ * for a vector or a colour, four for an axis and an angle), as a command does:
+ *   v (linear_vel), w (angular_vel, in world axes as typed), x (translate),
+ *   rot_axis (rotate: num[3] the angle), mass (non-zero; negative: static),
+ *   elasticity, volume, color, and the shape's parameters sp.radius, sp.size,
+ *   sp.exp1, sp.exp2, sp.a1, sp.a2, sp.a3, sp.ures, sp.vres (the shape is built
+ *   again).
+ * Anything but the colour or the loudness wakes the body and ends its slide; the
+ * objects resting on it wake.  Returns 0, or -1 with a message in err when the
+ * shape cannot be built (the body keeps its old shape) or off names no property. */
+int edit_property(world *w, int i, size_t off, const double *num, char *err, size_t errlen);
+
+/* Sets the global force (a direction and a magnitude) and wakes every resting
+ * object: rest depends on the force. */
+void edit_force(world *w, dir_amount force);
+
+/* Something was changed from outside the simulation (a statement ran): the schedule
+ * starts afresh, every pair due, and the simulation copies its bodies again. */
+void edit_done(world *w);
+
+#endif

@@ -1,0 +1,74 @@
+/* shape.h: the three primitives of the thesis (Tables A.2 to A.4) turned into geometry.
+ *
+ * A shape is built from its parameters once (and again when a parameter changes):
+ * a triangle mesh for drawing (spheres and superquadrics at ures x vres, smooth
+ * normals; cubes flat), the convex polyhedron used by collision detection (cubes and
+ * superquadrics; spheres stay exact), and the mass properties at unit density with
+ * the inner and outer radius about the centre of mass, all in the body frame.
+ *
+ * Superquadric (Barr's superellipsoid), eta in [-pi/2, pi/2], omega in [-pi, pi):
+ *   x = a1 c(eta,e1) c(omega,e2), y = a2 c(eta,e1) s(omega,e2), z = a3 s(eta,e1),
+ *   c(t,e) = sign(cos t) |cos t|^e, s(t,e) = sign(sin t) |sin t|^e.
+ * ures divides omega (around the z axis), vres divides eta (pole to pole).
+ */
+#ifndef VROC_SHAPE_H
+#define VROC_SHAPE_H
+
+#include <stddef.h>
+
+#include "closest.h"
+#include "poly.h"
+#include "vmath.h"
+
+typedef enum { SHAPE_SPHERE, SHAPE_CUBE, SHAPE_SUPERQUADRIC } shape_kind;
+
+typedef struct {
+    shape_kind kind;
+    double radius;           /* sphere */
+    vec3 size;               /* cube half-extents */
+    double exp1, exp2;       /* superquadric exponents */
+    double a1, a2, a3;       /* superquadric radii */
+    int ures, vres;          /* sphere and superquadric resolutions */
+} shape_params;
+
+/* Triangle mesh for drawing: per-vertex positions and unit normals. */
+typedef struct {
+    int nv, nt;
+    vec3 *pos;
+    vec3 *nrm;
+    int (*tri)[3]; /* counter-clockwise seen from outside */
+} mesh;
+
+typedef struct {
+    shape_params p;
+    poly *hull;          /* collision polyhedron; NULL for a sphere */
+    mesh draw;           /* what the renderer draws */
+    mass_props mass;     /* unit density, body frame */
+    double r_in, r_out;  /* inscribed and circumscribed radius about mass.com */
+    vec3 box_lo, box_hi; /* the box, in body axes, that holds the shape */
+    closest_hull *feat;  /* closest_hull_new(hull), NULL for a sphere */
+} shape;
+
+/* The thesis's defaults for a primitive of the given kind: radius 1, size (1,1,1),
+ * exponents 1, a1..a3 1, resolutions 10. */
+shape_params shape_defaults(shape_kind kind);
+
+/* Builds s from p (s need not be initialised).  Returns 0, or -1 with a message in
+ * err (then s holds nothing to free).  Parameters are assumed validated: positive
+ * sizes, exponents > 0, resolutions >= 3. */
+int shape_build(shape *s, const shape_params *p, char *err, size_t errlen);
+
+void shape_free(shape *s);
+
+/* s placed with body frame to world p -> q p q* + x, as closest-feature queries
+ * take it. */
+static inline closest_proxy shape_proxy(const shape *s, vec3 x, quat q)
+{
+    return (closest_proxy){s->hull, s->feat, s->p.radius, s->mass.com, x, q};
+}
+
+/* Points of the superquadric's ures x vres tessellation (the two poles once each,
+ * (vres - 1) rings of ures points): writes at most max points, returns the count. */
+int superquadric_points(const shape_params *p, vec3 *out, int max);
+
+#endif

@@ -1,0 +1,37 @@
+/* sim.h: advancing simulated time with collisions (thesis 3.2.3, 3.3.3, 3.4.2).
+ *
+ * A frame of time_step is cut into world_subframes() equal internal steps.  Within
+ * an internal step every dynamic body flies freely under the global acceleration
+ * (flight.h).  At the end of the step the due pairs are checked (schedule.h); a
+ * pair found touching or penetrating is traced back in time to its first contact
+ * (toi.h), the earliest such collision is answered (contact.h) with the objects it
+ * concerns at that instant (the others fly on unchanged), and the rest of the step
+ * goes on from there.  Objects whose motion dies down on a support come to rest or
+ * settle (rest.h).  The collisions of a frame are left in world.events.
+ */
+#ifndef VROC_SIM_H
+#define VROC_SIM_H
+
+#include <stddef.h>
+
+#include "tolerance.h"
+#include "world.h"
+
+/* Advances the world by one frame.  Returns 0, or -1 with a message in err when the
+ * settings ask for more than SIM_MAX_SUBFRAMES internal steps (nothing moves then).
+ * With time_step 0 nothing moves and the frame still counts. */
+int sim_frame(world *w, char *err, size_t errlen);
+
+/* Makes ready what the frames need: the pairs, the schedule, the copies of the
+ * objects that may move and the scratch of the internal steps, each allocated
+ * and written once, so that frames allocate nothing and touch no fresh memory
+ * (the shell calls it when time is about to run; sim_frame calls it too, for
+ * what a command changed since).  Returns 0, or -1 when out of memory. */
+int sim_prepare(world *w);
+
+/* Calls report for every pair that interpenetrates now (deeper than the contact
+ * tolerance), with the depth estimate; returns how many.  -1 when out of memory. */
+typedef void (*sim_report)(void *ctx, const body *a, const body *b, double depth);
+long sim_penetrations(world *w, sim_report report, void *ctx);
+
+#endif

@@ -1,0 +1,141 @@
+/* world.c: the objects, the simulation settings with every start-up value in one
+ * place, and the frame's events.
+ *
+ * Defaults come from the thesis's Table A.5 (time_step 0.1, collision_dist 0.25,
+ * max_linear 8, max_angular 4) and from language.md for what vroc adds.
+ */
+#include "world.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+sim_settings sim_settings_defaults(void)
+{
+    sim_settings s;
+    memset(&s, 0, sizeof s);
+    s.time_step = 0.1;
+    s.collision_dist = 0.25;
+    s.internal_step = 0;
+    s.max_linear = 8.0;
+    s.max_angular = 4.0;
+    s.force = (dir_amount){v3(0, 0, 0), 0};
+    s.collision_heap = true;
+    return s;
+}
+
+void world_init(world *w)
+{
+    memset(w, 0, sizeof *w);
+    w->set = sim_settings_defaults();
+    pairs_init(&w->pairs);
+    sched_init(&w->sched);
+    step_init(&w->step);
+}
+
+void world_free(world *w)
+{
+    for (int i = 0; i < w->n; i++) {
+        body_free(w->bodies[i]);
+        free(w->bodies[i]);
+    }
+    free(w->bodies);
+    w->bodies = NULL;
+    w->n = w->cap = 0;
+    free(w->events);
+    w->events = NULL;
+    w->nevents = w->capevents = 0;
+    pairs_free(&w->pairs);
+    sched_free(&w->sched);
+    step_free(&w->step);
+}
+
+void world_event(world *w, const sim_event *e)
+{
+    if (w->nevents == w->capevents) {
+        long cap = w->capevents ? 2 * w->capevents : 64;
+        sim_event *ne = realloc(w->events, (size_t)cap * sizeof *ne);
+        if (!ne) {
+            w->st.events_lost++;
+            return;
+        }
+        w->events = ne;
+        w->capevents = cap;
+    }
+    w->events[w->nevents++] = *e;
+}
+
+int world_find(const world *w, const char *name)
+{
+    for (int i = 0; i < w->n; i++)
+        if (strcmp(w->bodies[i]->name, name) == 0) return i;
+    return -1;
+}
+
+int world_add(world *w, body *b)
+{
+    if (w->n == w->cap) {
+        int cap = w->cap ? 2 * w->cap : 16;
+        body **nb = realloc(w->bodies, (size_t)cap * sizeof *nb);
+        if (!nb) {
+            body_free(b);
+            free(b);
+            return -1;
+        }
+        w->bodies = nb;
+        w->cap = cap;
+    }
+    w->bodies[w->n] = b;
+    w->pairs.dirty = true;
+    return w->n++;
+}
+
+/* An object's index k after object i is deleted: -1 for i itself. */
+static int index_after(int k, int i)
+{
+    return k == i ? -1 : k > i ? k - 1 : k;
+}
+
+void world_delete(world *w, int i)
+{
+    body_free(w->bodies[i]);
+    free(w->bodies[i]);
+    memmove(&w->bodies[i], &w->bodies[i + 1], (size_t)(w->n - i - 1) * sizeof *w->bodies);
+    w->n--;
+    w->pairs.dirty = true;
+    for (int k = 0; k < w->n; k++) {
+        body *b = w->bodies[k];
+        b->support = index_after(b->support, i);
+        b->slide = index_after(b->slide, i); /* its pair is found again (sim_update_pairs) */
+        for (int s = 0; s < 2; s++) b->pinned_by[s] = index_after(b->pinned_by[s], i);
+    }
+}
+
+void world_counts(const world *w, int *dynamic, int *stat)
+{
+    int d = 0, s = 0;
+    for (int i = 0; i < w->n; i++) {
+        if (body_is_static(w->bodies[i])) s++;
+        else d++;
+    }
+    *dynamic = d;
+    *stat = s;
+}
+
+long world_pairs(const world *w)
+{
+    int d, s;
+    world_counts(w, &d, &s);
+    return (long)d * (d - 1) / 2 + (long)d * s;
+}
+
+long world_subframes(const world *w)
+{
+    const sim_settings *s = &w->set;
+    if (s->time_step <= 0) return 0;
+    double h = s->internal_step > 0 ? s->internal_step : s->collision_dist / (2 * s->max_linear);
+    if (!(h > 0) || isinf(h)) return 1;
+    double n = ceil(s->time_step / h * (1 - 1e-12));
+    if (n < 1) n = 1;
+    return n > 1e12 ? (long)1e12 : (long)n;
+}

@@ -1,0 +1,141 @@
+/* world.h: everything vroc simulates: the objects, the simulation settings, the
+ * clock, and the collisions of the last frame.
+ *
+ * The world owns its bodies (in creation order, which is also the order of `list`,
+ * `save` and the trace) and the settings that decide how time runs (Table A.5:
+ * time_step, collision_dist, internal_step, the speed limits, the force, and the
+ * collision heap).  sim_settings_defaults gives every start-up value in one place.
+ * It also holds the state the simulation keeps between frames, each part owned
+ * by its own module, which initialises and frees it: the pairs (pairs.h), the
+ * schedule (schedule.h) and the internal step's scratch (step.h).  The world knows
+ * nothing of text, prompts, files or pixels: the shell and the views read it, and
+ * read the frame's collisions from `events` (as Box2D's contact events).
+ */
+#ifndef VROC_WORLD_H
+#define VROC_WORLD_H
+
+#include <stdbool.h>
+
+#include "body.h"
+#include "pairs.h"
+#include "schedule.h"
+#include "step.h"
+#include "vmath.h"
+
+/* A direction and an amount, as `force = (x,y,z) m` and `rotate = (x,y,z) r` are
+ * typed. */
+typedef struct {
+    vec3 dir;
+    double amount;
+} dir_amount;
+
+/* The settings of simulated time (Table A.5 and language.md). */
+typedef struct {
+    double time_step;       /* frame step, s; 0 halts */
+    double collision_dist;  /* m */
+    double internal_step;   /* forced internal step, s; 0 automatic */
+    double max_linear;      /* m/s */
+    double max_angular;     /* rad/s */
+    dir_amount force;       /* direction as typed, magnitude m/s^2 */
+    bool collision_heap;    /* the schedule (on), or every pair every step (off) */
+} sim_settings;
+
+/* The simulation's counters since the world was made. */
+typedef struct {
+    long frames;          /* frames advanced */
+    long subframes;       /* internal steps taken */
+    long pair_checks;     /* pair distance queries */
+    long collisions;      /* collisions answered */
+    long restarts;        /* closest-feature walks redone from scratch */
+    long heap_pops;       /* pairs taken from the schedule to be checked */
+    long events_lost;     /* collisions not reported in events (out of memory) */
+} sim_stats;
+
+/* One collision answered: at time t, bodies a and b (indices) at point p, with
+ * normal n (unit, from b towards a), impulse magnitude j (N s) and closing speed
+ * speed (m/s) before it. */
+typedef struct {
+    double t;
+    int a, b;
+    vec3 p, n;
+    double j, speed;
+} sim_event;
+
+typedef struct world {
+    body **bodies;        /* n bodies, creation order */
+    int n, cap;
+    sim_settings set;
+    double time;          /* simulated time, s */
+    double time_base;     /* time = time_base + base_frames * base_step, so that */
+    double base_step;     /* frames of one time_step add up without drift */
+    long base_frames;
+    long frame;           /* frame number */
+    sim_stats st;
+    sim_event *events;    /* the collisions of the last frame, in order (sim_frame */
+    long nevents;         /*   empties it as it starts) */
+    long capevents;
+    pair_list pairs;      /* pairs.h */
+    schedule sched;       /* schedule.h */
+    step_state step;      /* step.h */
+    bool sched_dirty;     /* something changed other than by the simulation: every
+                           * pair is due, and the simulation copies its bodies
+                           * afresh (edit.h sets it) */
+} world;
+
+/* The start-up values of Table A.5 (time_step 0.1, collision_dist 0.25,
+ * max_linear 8, max_angular 4, no force, the heap on). */
+sim_settings sim_settings_defaults(void);
+
+void world_init(world *w);
+/* Removes every object and frees what the simulation keeps (the world can be
+ * reused after world_init). */
+void world_free(world *w);
+
+/* Index of the object named name, or -1. */
+int world_find(const world *w, const char *name);
+
+/* Appends b (taking ownership).  Returns its index, or -1 on allocation failure
+ * (b is then freed). */
+int world_add(world *w, body *b);
+
+/* Removes and frees object i; later objects shift down by one (the indices the
+ * objects keep of each other follow). */
+void world_delete(world *w, int i);
+
+/* Number of dynamic (including resting) and static objects. */
+void world_counts(const world *w, int *dynamic, int *stat);
+
+/* Pairs checked for collision: n(n-1)/2 + n s for n dynamic and s static objects. */
+long world_pairs(const world *w);
+
+/* Appends a collision to the frame's events; counts it in st.events_lost when
+ * there is no memory for it. */
+void world_event(world *w, const sim_event *e);
+
+/* The global acceleration: force.dir / |force.dir| * force.amount (zero when
+ * none).  Inline, as are the next: the schedule and every flight ask for it. */
+static inline vec3 world_accel(const world *w)
+{
+    vec3 d = w->set.force.dir;
+    /* a unit direction (gravity's (0, 0, -1)) needs no square root: the same to
+     * the bit as normalising it */
+    if (v3_len2(d) == 1) return v3_scale(d, w->set.force.amount);
+    return v3_scale(v3_norm(d), w->set.force.amount);
+}
+
+/* The global acceleration as body b feels it: less the part that presses it onto
+ * the support it slides on (rest.h). */
+static inline vec3 world_body_accel(const world *w, const body *b)
+{
+    vec3 a = world_accel(w);
+    if (b->slide < 0) return a;
+    double an = v3_dot(a, b->slide_n);
+    return an < 0 ? v3_mad(a, b->slide_n, -an) : a;
+}
+
+/* Internal steps per frame: ceil(time_step / hmax) with hmax = internal_step when
+ * set, else collision_dist / (2 max_linear); 1 when that bound is infinite; 0 when
+ * time_step is 0. */
+long world_subframes(const world *w);
+
+#endif

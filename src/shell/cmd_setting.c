@@ -1,0 +1,157 @@
+/* cmd_setting.c: the handlers of `name = value` settings (thesis Table A.5;
+ * language.md): the generic one, which writes the value at the table's offset in
+ * its owner's settings, and those that check or convert their value first; and
+ * the hand's select and reselect buttons. */
+#include <errno.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "core/edit.h"
+#include "handlers.h"
+#include "shell.h"
+
+cmd_status cmd_setting(shell *sh, const stmt *st)
+{
+    const command *c = st->cmd;
+    if (c->owner == OWN_SIM && c->off == offsetof(sim_settings, force)) {
+        edit_force(&sh->w, (dir_amount){stmt_vec(st), st->num[3]}); /* wakes what rests */
+        return CMD_OK;
+    }
+    char *field = shell_setting_field(sh, c);
+    switch (c->arg) {
+    case VAL_NUMBER: *(double *)field = st->num[0]; break;
+    case VAL_VECTOR: *(vec3 *)field = stmt_vec(st); break;
+    case VAL_VECTOR_ANGLE: *(dir_amount *)field = (dir_amount){stmt_vec(st), st->num[3]}; break;
+    case VAL_COLOR:
+        for (int k = 0; k < 3; k++) ((int *)field)[k] = (int)st->num[k];
+        break;
+    case VAL_ONOFF: *(bool *)field = st->num[0] != 0; break;
+    case VAL_FILE:
+        snprintf(field, c->owner == OWN_VIEW ? VIEW_PATH_MAX : SHELL_PATH_MAX, "%s", st->word);
+        break;
+    default: break;
+    }
+    return CMD_OK;
+}
+
+cmd_status cmd_random_box(shell *sh, const stmt *st)
+{
+    vec3 v = stmt_vec(st);
+    if (!(v.x > 0 && v.y > 0 && v.z > 0)) {
+        sh_error(sh, st, "random_box half-extents must all be > 0");
+        return CMD_ERROR;
+    }
+    sh->set.random_box = v;
+    return CMD_OK;
+}
+
+cmd_status cmd_seed(shell *sh, const stmt *st)
+{
+    sh->set.seed = (unsigned long)st->num[0];
+    sh->rng = sh->set.seed;
+    return CMD_OK;
+}
+
+cmd_status cmd_image_size(shell *sh, const stmt *st)
+{
+    sh->view_set.image_w = (int)st->num[0];
+    sh->view_set.image_h = (int)st->num[1];
+    return CMD_OK;
+}
+
+cmd_status cmd_stereo(shell *sh, const stmt *st)
+{
+    static const stereo_mode modes[] = {STEREO_PAIR, STEREO_SBS, STEREO_ANAGLYPH, STEREO_MONO};
+    sh->view_set.stereo = modes[(int)st->num[0]];
+    return CMD_OK;
+}
+
+cmd_status cmd_real(shell *sh, const stmt *st)
+{
+    static const real_mode modes[] = {REAL_SOLID, REAL_WIRE, REAL_HIDDEN};
+    sh->view_set.real = modes[(int)st->num[0]];
+    return CMD_OK;
+}
+
+static const char *const builtin_sounds[] = {"click", "knock", "bell", "off", NULL};
+
+static bool is_builtin_sound(const char *s)
+{
+    for (int i = 0; builtin_sounds[i]; i++)
+        if (strcmp(s, builtin_sounds[i]) == 0) return true;
+    return false;
+}
+
+/* A file the user names for reading must be a readable regular file. */
+static bool readable_file(shell *sh, const stmt *st, const char *path)
+{
+    struct stat sb;
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        sh_error(sh, st, "%s: cannot read '%s': %s", st->cmd->name, path, strerror(errno));
+        return false;
+    }
+    bool dir = fstat(fileno(f), &sb) == 0 && S_ISDIR(sb.st_mode);
+    fclose(f);
+    if (dir) sh_error(sh, st, "%s: '%s' is a folder, not a file", st->cmd->name, path);
+    return !dir;
+}
+
+cmd_status cmd_collision_sound(shell *sh, const stmt *st)
+{
+    if (!is_builtin_sound(st->word) && !readable_file(sh, st, st->word)) return CMD_ERROR;
+    snprintf(sh->set.collision_sound, sizeof sh->set.collision_sound, "%s", st->word);
+    return CMD_OK;
+}
+
+cmd_status cmd_tracker(shell *sh, const stmt *st)
+{
+    if (st->n == 1) {
+        sh->set.tracker[0] = '\0';
+        return CMD_OK;
+    }
+    if (!readable_file(sh, st, st->word)) return CMD_ERROR;
+    snprintf(sh->set.tracker, sizeof sh->set.tracker, "%s", st->word);
+    return CMD_OK;
+}
+
+cmd_status cmd_log(shell *sh, const stmt *st)
+{
+    bool trace = strcmp(st->cmd->name, "trace") == 0;
+    if (st->n == 1) {
+        if (trace) log_trace_close(&sh->logs);
+        else log_events_close(&sh->logs);
+        return CMD_OK;
+    }
+    char err[LOG_PATH_MAX + 64];
+    int r = trace ? log_trace_open(&sh->logs, &sh->w, st->word, err, sizeof err)
+                  : log_events_open(&sh->logs, st->word, err, sizeof err);
+    if (r != 0) {
+        sh_error(sh, st, "%s: %s", st->cmd->name, err);
+        return CMD_ERROR;
+    }
+    return CMD_OK;
+}
+
+cmd_status cmd_select(shell *sh, const stmt *st)
+{
+    if (st->n) {
+        sh->set.select_mode = st->num[0] != 0;
+    } else { /* the thesis's toggle: say where it went */
+        sh->set.select_mode = !sh->set.select_mode;
+        sh_info(sh, "select mode %s", sh->set.select_mode ? "on" : "off");
+    }
+    return CMD_OK;
+}
+
+cmd_status cmd_reselect(shell *sh, const stmt *st)
+{
+    if (sh->prev_selected < 0) {
+        sh_error(sh, st, "reselect: no object has been selected yet");
+        return CMD_ERROR;
+    }
+    sh->current = sh->prev_selected;
+    return CMD_OK;
+}

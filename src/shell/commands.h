@@ -1,0 +1,82 @@
+/* commands.h: the command table, the single source of vroc's language.
+ *
+ * Each entry names a command, its form (an action, an object property or a system
+ * setting), what follows it and the checks on its value, where its value lives
+ * (the offset of a property in the body, or of a setting in its owner's settings)
+ * and its handler.  The parser checks statements against it, the shell dispatches
+ * through it, the writer and completion list it, and a unit test checks it
+ * against the reference in commands/ (help.h), from which `help` and the man page
+ * are built.  The table itself is in table.c, the handlers in the cmd_*.c files.
+ */
+#ifndef VROC_COMMANDS_H
+#define VROC_COMMANDS_H
+
+#include <stddef.h>
+
+#include "core/body.h"
+
+struct shell;
+struct stmt;
+
+typedef enum {
+    FORM_ACTION,   /* word [arguments] */
+    FORM_PROPERTY, /* property = value, applies to an object */
+    FORM_SETTING,  /* setting = value, a system setting */
+} cmd_form;
+
+/* What follows the command word (actions) or the '=' (properties, settings). */
+typedef enum {
+    ARG_NONE,         /* nothing */
+    ARG_NAME,         /* an object name */
+    ARG_NAME2,        /* two object names */
+    ARG_OPT_WORD,     /* an optional word (help) */
+    ARG_FILE,         /* a file name: bare word or "string" */
+    ARG_COUNT,        /* an integer >= 0 */
+    ARG_OPT_ONOFF,    /* optional on or off (select) */
+    VAL_NUMBER,       /* one number */
+    VAL_INTEGER,      /* one integer */
+    VAL_VECTOR,       /* (x, y, z) */
+    VAL_VECTOR_ANGLE, /* (x, y, z) r */
+    VAL_SIZE2,        /* (w, h), integers */
+    VAL_COLOR,        /* (r, g, b), integers 0..255 */
+    VAL_ONOFF,        /* on or off */
+    VAL_CHOICE,       /* one of the words in choices */
+    VAL_FILE,         /* a file name */
+    VAL_FILE_OR_OFF,  /* a file name, or off */
+} arg_kind;
+
+/* range flags: the number must be > lo (not >=), < hi (not <=), != 0; a vector
+ * must not be zero */
+enum { R_LO_OPEN = 1, R_HI_OPEN = 2, R_NONZERO = 4, R_NONZERO_VEC = 8, R_RANGE = 16 };
+
+/* shape classes a property applies to */
+enum { C_SPHERE = 1 << SHAPE_SPHERE, C_CUBE = 1 << SHAPE_CUBE, C_SQ = 1 << SHAPE_SUPERQUADRIC,
+       C_ALL = C_SPHERE | C_CUBE | C_SQ };
+
+typedef enum { CMD_OK, CMD_ERROR, CMD_QUIT } cmd_status;
+
+/* Whose settings a FORM_SETTING's field is in: the simulation's (world.set), the
+ * views' (shell.view_set) or the shell's own (shell.set). */
+typedef enum { OWN_NONE, OWN_SIM, OWN_VIEW, OWN_SHELL } setting_owner;
+
+typedef struct command {
+    const char *name;
+    cmd_form form;
+    arg_kind arg;
+    unsigned range;      /* R_ flags; R_RANGE: check lo and hi */
+    double lo, hi;
+    const char *choices; /* VAL_CHOICE: "pair|sbs|anaglyph|mono" */
+    unsigned classes;    /* FORM_PROPERTY: the C_ classes it applies to */
+    setting_owner owner; /* FORM_SETTING: whose settings hold its field */
+    size_t off;          /* FORM_PROPERTY: offset of its field in body (edit.h);
+                          * FORM_SETTING: offset of its field in its owner's */
+    cmd_status (*run)(struct shell *sh, const struct stmt *st);
+} command;
+
+extern const command command_table[];
+extern const int command_count;
+
+/* The command named name, or NULL. */
+const command *command_find(const char *name);
+
+#endif

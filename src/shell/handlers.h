@@ -1,0 +1,53 @@
+/* handlers.h: one handler per command, with the signature of the command table
+ * (commands.h).  Each either applies its statement whole or changes nothing and
+ * reports an error.  They live by concern: cmd_object.c (objects and their
+ * properties), cmd_setting.c (settings), cmd_time.c (time and files),
+ * cmd_console.c (what a console tool adds), random.c (random objects). */
+#ifndef VROC_HANDLERS_H
+#define VROC_HANDLERS_H
+
+#include "commands.h"
+#include "lang.h"
+
+struct shell;
+
+cmd_status cmd_create(struct shell *sh, const stmt *st);
+cmd_status cmd_delete(struct shell *sh, const stmt *st);
+cmd_status cmd_property(struct shell *sh, const stmt *st);
+
+cmd_status cmd_setting(struct shell *sh, const stmt *st);
+cmd_status cmd_random_box(struct shell *sh, const stmt *st);
+cmd_status cmd_seed(struct shell *sh, const stmt *st);
+cmd_status cmd_image_size(struct shell *sh, const stmt *st);
+cmd_status cmd_stereo(struct shell *sh, const stmt *st);
+cmd_status cmd_real(struct shell *sh, const stmt *st);
+cmd_status cmd_collision_sound(struct shell *sh, const stmt *st);
+cmd_status cmd_tracker(struct shell *sh, const stmt *st);
+cmd_status cmd_log(struct shell *sh, const stmt *st);
+cmd_status cmd_gravity(struct shell *sh, const stmt *st);
+cmd_status cmd_reset(struct shell *sh, const stmt *st);
+cmd_status cmd_select(struct shell *sh, const stmt *st);
+cmd_status cmd_reselect(struct shell *sh, const stmt *st);
+
+cmd_status cmd_step(struct shell *sh, const stmt *st);
+cmd_status cmd_run(struct shell *sh, const stmt *st);
+cmd_status cmd_start(struct shell *sh, const stmt *st);
+cmd_status cmd_stop(struct shell *sh, const stmt *st);
+cmd_status cmd_restart(struct shell *sh, const stmt *st);
+cmd_status cmd_read(struct shell *sh, const stmt *st);
+cmd_status cmd_display(struct shell *sh, const stmt *st);
+cmd_status cmd_refresh(struct shell *sh, const stmt *st);
+cmd_status cmd_save(struct shell *sh, const stmt *st);
+
+cmd_status cmd_print(struct shell *sh, const stmt *st);
+cmd_status cmd_list(struct shell *sh, const stmt *st);
+cmd_status cmd_show(struct shell *sh, const stmt *st);
+cmd_status cmd_time(struct shell *sh, const stmt *st);
+cmd_status cmd_distance(struct shell *sh, const stmt *st);
+cmd_status cmd_stats(struct shell *sh, const stmt *st);
+cmd_status cmd_quit(struct shell *sh, const stmt *st);
+cmd_status cmd_help(struct shell *sh, const stmt *st);
+
+cmd_status cmd_random(struct shell *sh, const stmt *st);
+
+#endif

@@ -1,0 +1,665 @@
+/* lang.c: the parser of the vroc language (language.md; thesis Appendix A).
+ *
+ * Statements end at a newline or ';'; '#' starts a comment; the lexer (lex.h)
+ * makes the tokens.  Numbers are words that strtod reads whole.  Each statement is checked
+ * against the command table here, values and ranges included, so that a file with
+ * an error anywhere is refused before anything in it runs.  `read` statements load
+ * and parse their file at once, with the cycle and depth checks.
+ */
+#include "lang.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "core/body.h"
+#include "lex.h"
+#include "writer.h"
+
+/* Files larger than this are refused (a scene is a few kilobytes). */
+#define LANG_MAX_FILE (64L * 1024 * 1024)
+
+typedef struct {
+    const char *name; /* file name for messages, or NULL */
+    int line;
+    char *err;
+    size_t errlen;
+} where;
+
+static void perr(const where *at, const char *fmt, ...)
+{
+    char msg[512];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    if (at->name)
+        snprintf(at->err, at->errlen, "%s:%d: error: %s", at->name, at->line, msg);
+    else
+        snprintf(at->err, at->errlen, "error: %s", msg);
+}
+
+/* ---------------------------------------------------------------- values */
+
+static int get_number(const token *t, const command *c, double *out, const where *at)
+{
+    char buf[96];
+    if (t->k != T_WORD) {
+        perr(at, "%s: expected a number, got %s", c->name, tok_text(t, buf));
+        return -1;
+    }
+    char tmp[128];
+    if (t->len >= sizeof tmp) {
+        perr(at, "%s: expected a number, got %s", c->name, tok_text(t, buf));
+        return -1;
+    }
+    memcpy(tmp, t->s, t->len);
+    tmp[t->len] = '\0';
+    char *end;
+    errno = 0;
+    double x = strtod(tmp, &end);
+    if (end == tmp || *end != '\0') {
+        perr(at, "%s: expected a number, got %s", c->name, tok_text(t, buf));
+        return -1;
+    }
+    if (!isfinite(x) || errno == ERANGE) {
+        if (errno == ERANGE && isfinite(x)) x = 0; /* underflow: tiny is fine */
+        else {
+            perr(at, "%s must be a finite number (got %s)", c->name, tmp);
+            return -1;
+        }
+    }
+    *out = x;
+    return 0;
+}
+
+/* '(' n numbers ')' starting at t[*i]; advances *i past it. */
+static int get_tuple(const token *t, int nt, int *i, int n, const command *c, double *out,
+                     const where *at)
+{
+    static const char *forms[] = {"", "(x)", "(x, y)", "(x, y, z)"};
+    const char *form = forms[n];
+    char buf[96];
+    if (*i >= nt || t[*i].k != T_LP) {
+        if (*i >= nt)
+            perr(at, "%s: missing value: expected %s", c->name, form);
+        else
+            perr(at, "%s: expected %s, got %s", c->name, form, tok_text(&t[*i], buf));
+        return -1;
+    }
+    (*i)++;
+    for (int k = 0; k < n; k++) {
+        if (*i >= nt) {
+            perr(at, "%s: unfinished vector: expected %s", c->name, form);
+            return -1;
+        }
+        if (get_number(&t[*i], c, &out[k], at) != 0) return -1;
+        (*i)++;
+        tkind want = k == n - 1 ? T_RP : T_COMMA;
+        if (*i >= nt || t[*i].k != want) {
+            if (*i >= nt)
+                perr(at, "%s: unfinished vector: expected %s", c->name, form);
+            else
+                perr(at, "%s: expected %s with %d numbers, got %s", c->name, form, n,
+                     tok_text(&t[*i], buf));
+            return -1;
+        }
+        (*i)++;
+    }
+    return 0;
+}
+
+static const char *num_text(double x, char buf[32]) { return fmt_num(buf, x); }
+
+/* The range checks of the table entry on one number. */
+static int check_range(const command *c, double x, const where *at)
+{
+    char a[32], b[32], g[32];
+    if ((c->range & R_NONZERO) && x == 0) {
+        perr(at, "%s must not be 0", c->name);
+        return -1;
+    }
+    if (!(c->range & R_RANGE)) return 0;
+    bool lo_ok = (c->range & R_LO_OPEN) ? x > c->lo : x >= c->lo;
+    bool hi_ok = (c->range & R_HI_OPEN) ? x < c->hi : x <= c->hi;
+    if (lo_ok && hi_ok) return 0;
+    if (isinf(c->hi))
+        perr(at, "%s must be %s %s (got %s)", c->name, (c->range & R_LO_OPEN) ? ">" : ">=",
+             num_text(c->lo, a), num_text(x, g));
+    else
+        perr(at, "%s must be from %s to %s%s (got %s)", c->name, num_text(c->lo, a),
+             num_text(c->hi, b),
+             (c->range & (R_LO_OPEN | R_HI_OPEN)) ? ", limits excluded" : "", num_text(x, g));
+    return -1;
+}
+
+static int check_integer(const command *c, double x, const where *at)
+{
+    char g[32];
+    if (x != floor(x) || fabs(x) > 1e15) {
+        perr(at, "%s must be a whole number (got %s)", c->name, num_text(x, g));
+        return -1;
+    }
+    return 0;
+}
+
+static int get_word(const token *t, int nt, int i, const command *c, const char *what, char **out,
+                    const where *at)
+{
+    char buf[96];
+    if (i >= nt) {
+        perr(at, "%s: missing %s", c->name, what);
+        return -1;
+    }
+    if (t[i].k != T_WORD && t[i].k != T_STRING) {
+        perr(at, "%s: expected %s, got %s", c->name, what, tok_text(&t[i], buf));
+        return -1;
+    }
+    *out = tok_dup(&t[i]);
+    if (!*out) {
+        perr(at, "out of memory");
+        return -1;
+    }
+    return 0;
+}
+
+static int get_name(const token *t, int nt, int i, const command *c, char **out, const where *at)
+{
+    char buf[96];
+    if (i < nt && t[i].k == T_STRING) {
+        perr(at, "%s: an object name is not quoted (got %s)", c->name, tok_text(&t[i], buf));
+        return -1;
+    }
+    if (get_word(t, nt, i, c, "an object name", out, at) != 0) return -1;
+    if (!lang_valid_name(*out)) {
+        perr(at,
+             "%s is not a valid object name (letters, digits, _ and -, starting with a letter or "
+             "_, at most %d characters)",
+             tok_text(&t[i], buf), BODY_NAME_MAX - 1);
+        free(*out);
+        *out = NULL;
+        return -1;
+    }
+    return 0;
+}
+
+/* Converts the tokens after the command word (actions) or after '=' into st. */
+static int parse_value(stmt *st, const token *t, int nt, const where *at)
+{
+    const command *c = st->cmd;
+    char buf[96];
+    int i = 0;
+    switch (c->arg) {
+    case ARG_NONE: break;
+    case ARG_NAME:
+        if (get_name(t, nt, i, c, &st->word, at) != 0) return -1;
+        i++;
+        break;
+    case ARG_NAME2:
+        if (get_name(t, nt, i, c, &st->word, at) != 0) return -1;
+        i++;
+        if (get_name(t, nt, i, c, &st->word2, at) != 0) return -1;
+        i++;
+        break;
+    case ARG_OPT_WORD:
+        if (i < nt) {
+            if (get_word(t, nt, i, c, "a command name", &st->word, at) != 0) return -1;
+            i++;
+        }
+        break;
+    case ARG_FILE:
+    case VAL_FILE:
+        if (get_word(t, nt, i, c, "a file name", &st->word, at) != 0) return -1;
+        if (st->word[0] == '\0') {
+            perr(at, "%s: the file name is empty", c->name);
+            return -1;
+        }
+        i++;
+        break;
+    case VAL_FILE_OR_OFF:
+        if (get_word(t, nt, i, c, "a file name or off", &st->word, at) != 0) return -1;
+        if (st->word[0] == '\0') {
+            perr(at, "%s: the file name is empty", c->name);
+            return -1;
+        }
+        st->n = tok_is(&t[i], "off"); /* 1: off; a quoted "off" is a file */
+        i++;
+        break;
+    case ARG_COUNT:
+        if (i >= nt) {
+            perr(at, "%s: missing count", c->name);
+            return -1;
+        }
+        /* fall through */
+    case VAL_NUMBER:
+    case VAL_INTEGER:
+        if (i >= nt) {
+            perr(at, "%s: missing value", c->name);
+            return -1;
+        }
+        if (get_number(&t[i], c, &st->num[0], at) != 0) return -1;
+        if (c->arg != VAL_NUMBER && check_integer(c, st->num[0], at) != 0) return -1;
+        if (check_range(c, st->num[0], at) != 0) return -1;
+        st->n = 1;
+        i++;
+        break;
+    case VAL_VECTOR:
+    case VAL_VECTOR_ANGLE:
+        if (get_tuple(t, nt, &i, 3, c, st->num, at) != 0) return -1;
+        st->n = 3;
+        if (c->arg == VAL_VECTOR_ANGLE) {
+            if (i >= nt) {
+                perr(at, "%s: missing the number after the vector", c->name);
+                return -1;
+            }
+            if (get_number(&t[i], c, &st->num[3], at) != 0) return -1;
+            st->n = 4;
+            i++;
+        }
+        if ((c->range & R_NONZERO_VEC) && st->num[0] == 0 && st->num[1] == 0 &&
+            st->num[2] == 0 && (c->arg == VAL_VECTOR || st->num[3] != 0)) {
+            if (c->arg == VAL_VECTOR)
+                perr(at, "%s must not be (0, 0, 0)", c->name);
+            else
+                perr(at, "%s: the direction (0, 0, 0) needs a magnitude or angle of 0", c->name);
+            return -1;
+        }
+        break;
+    case VAL_SIZE2:
+        if (get_tuple(t, nt, &i, 2, c, st->num, at) != 0) return -1;
+        for (int k = 0; k < 2; k++)
+            if (check_integer(c, st->num[k], at) != 0 || check_range(c, st->num[k], at) != 0)
+                return -1;
+        st->n = 2;
+        break;
+    case VAL_COLOR:
+        if (get_tuple(t, nt, &i, 3, c, st->num, at) != 0) return -1;
+        for (int k = 0; k < 3; k++) {
+            if (st->num[k] != floor(st->num[k]) || st->num[k] < 0 || st->num[k] > 255) {
+                char g[32];
+                perr(at, "%s components must be whole numbers from 0 to 255 (got %s)", c->name,
+                     num_text(st->num[k], g));
+                return -1;
+            }
+        }
+        st->n = 3;
+        break;
+    case ARG_OPT_ONOFF:
+        if (i >= nt) break;
+        /* fall through */
+    case VAL_ONOFF:
+        if (i >= nt) {
+            perr(at, "%s: missing value: on or off", c->name);
+            return -1;
+        }
+        if (!tok_is(&t[i], "on") && !tok_is(&t[i], "off")) {
+            perr(at, "%s must be on or off (got %s)", c->name, tok_text(&t[i], buf));
+            return -1;
+        }
+        st->n = 1;
+        st->num[0] = tok_is(&t[i], "on");
+        i++;
+        break;
+    case VAL_CHOICE: {
+        if (i >= nt) {
+            perr(at, "%s: missing value: one of %s", c->name, c->choices);
+            return -1;
+        }
+        int k = 0;
+        bool found = false;
+        for (const char *p = c->choices; *p; k++) {
+            size_t n = strcspn(p, "|");
+            if (t[i].k == T_WORD && t[i].len == n && memcmp(t[i].s, p, n) == 0) {
+                found = true;
+                break;
+            }
+            p += n;
+            if (*p) p++;
+        }
+        if (!found) {
+            perr(at, "%s must be one of %s (got %s)", c->name, c->choices, tok_text(&t[i], buf));
+            return -1;
+        }
+        st->n = 1;
+        st->num[0] = k;
+        i++;
+        break;
+    }
+    }
+    if (i < nt) {
+        perr(at, "%s: unexpected %s after the %s", c->name, tok_text(&t[i], buf),
+             c->arg == ARG_NONE ? "command (it takes no arguments)" : "value");
+        return -1;
+    }
+    return 0;
+}
+
+/* ---------------------------------------------------------------- statements */
+
+static void stmt_clear(stmt *st)
+{
+    free(st->object);
+    free(st->word);
+    free(st->word2);
+    program_free(st->sub);
+    memset(st, 0, sizeof *st);
+}
+
+/* Parses one statement (tokens t[0..nt-1], nt > 0) into st. */
+static int parse_stmt(stmt *st, const token *t, int nt, const where *at)
+{
+    char buf[96];
+    memset(st, 0, sizeof *st);
+    st->line = at->line;
+    if (t[0].k != T_WORD) {
+        perr(at, "expected a command, got %s", tok_text(&t[0], buf));
+        return -1;
+    }
+    char head[128];
+    if (t[0].len >= sizeof head) {
+        perr(at, "unknown command %s", tok_text(&t[0], buf));
+        return -1;
+    }
+    memcpy(head, t[0].s, t[0].len);
+    head[t[0].len] = '\0';
+    char *dot = strchr(head, '.');
+    const command *c;
+    if (dot && !(head[0] >= '0' && head[0] <= '9') && head[0] != '.' && head[0] != '-') {
+        *dot = '\0';
+        if (!lang_valid_name(head)) {
+            perr(at, "'%s' is not a valid object name", head);
+            return -1;
+        }
+        c = command_find(dot + 1);
+        if (!c || c->form != FORM_PROPERTY) {
+            perr(at, "'%s' is not an object property (see help)", dot + 1);
+            return -1;
+        }
+        st->object = strdup(head);
+        if (!st->object) {
+            perr(at, "out of memory");
+            return -1;
+        }
+    } else {
+        c = command_find(head);
+        if (!c) {
+            perr(at, "unknown command %s (help lists the commands)", tok_text(&t[0], buf));
+            return -1;
+        }
+    }
+    st->cmd = c;
+    bool has_eq = nt > 1 && t[1].k == T_EQ;
+    if (c->form == FORM_ACTION) {
+        if (has_eq) {
+            perr(at, "%s is a command, not a setting: it takes no '='", c->name);
+            return -1;
+        }
+        return parse_value(st, t + 1, nt - 1, at);
+    }
+    if (!has_eq) {
+        if (nt == 1)
+            perr(at, "%s: missing '= value'", c->name);
+        else
+            perr(at, "%s: expected '=', got %s", c->name, tok_text(&t[1], buf));
+        return -1;
+    }
+    if (nt == 2) {
+        perr(at, "%s: missing value after '='", c->name);
+        return -1;
+    }
+    return parse_value(st, t + 2, nt - 2, at);
+}
+
+static int prog_push(program *p, const stmt *st)
+{
+    if (p->n == p->cap) {
+        int cap = p->cap ? 2 * p->cap : 16;
+        stmt *ns = realloc(p->s, (size_t)cap * sizeof *ns);
+        if (!ns) return -1;
+        p->s = ns;
+        p->cap = cap;
+    }
+    p->s[p->n++] = *st;
+    return 0;
+}
+
+void program_free(program *p)
+{
+    if (!p) return;
+    for (int i = 0; i < p->n; i++) stmt_clear(&p->s[i]);
+    free(p->s);
+    free(p->path);
+    free(p->real);
+    free(p);
+}
+
+/* After a read statement is parsed: load and parse its file. */
+static int load_sub(stmt *st, const lang_paths *paths, int depth, const char **stack, int n_stack,
+                    const where *at)
+{
+    st->sub = lang_parse_file(st->word, paths, depth + 1, stack, n_stack, at->name, at->line,
+                              at->err, at->errlen);
+    return st->sub ? 0 : -1;
+}
+
+program *lang_parse(const char *text, size_t len, const char *name, int first_line,
+                    const lang_paths *paths, int depth, const char **stack, int n_stack, char *err, size_t errlen)
+{
+    toklist tl = {0};
+    program *prog = calloc(1, sizeof *prog);
+    if (!prog) {
+        snprintf(err, errlen, "error: out of memory");
+        return NULL;
+    }
+    if (name && !(prog->path = strdup(name))) goto oom;
+    where at = {prog->path, first_line - 1, err, errlen};
+    const char *p = text, *end = text + len;
+    while (p < end) {
+        const char *nl = memchr(p, '\n', (size_t)(end - p));
+        const char *e = nl ? nl : end;
+        at.line++;
+        if (memchr(p, '\0', (size_t)(e - p))) {
+            perr(&at, "unexpected NUL byte (binary file?)");
+            goto fail;
+        }
+        char msg[256];
+        if (lex_line(p, e, &tl, msg, sizeof msg) != 0) {
+            perr(&at, "%s", msg);
+            goto fail;
+        }
+        int a = 0;
+        while (a < tl.n) {
+            int b = a;
+            while (b < tl.n && !lex_is_sep(&tl.t[b])) b++;
+            if (b > a) {
+                stmt st;
+                if (parse_stmt(&st, tl.t + a, b - a, &at) != 0) {
+                    stmt_clear(&st);
+                    goto fail;
+                }
+                st.file = prog->path;
+                if (strcmp(st.cmd->name, "read") == 0 &&
+                    load_sub(&st, paths, depth, stack, n_stack, &at) != 0) {
+                    stmt_clear(&st);
+                    goto fail;
+                }
+                if (prog_push(prog, &st) != 0) {
+                    stmt_clear(&st);
+                    goto oom;
+                }
+            }
+            a = b + 1;
+        }
+        p = nl ? nl + 1 : end;
+    }
+    free(tl.t);
+    return prog;
+oom:
+    snprintf(err, errlen, "error: out of memory");
+fail:
+    free(tl.t);
+    program_free(prog);
+    return NULL;
+}
+
+static void dir_of(const char *path, char *out, size_t outlen)
+{
+    snprintf(out, outlen, "%s", path);
+    char *slash = strrchr(out, '/');
+    if (!slash)
+        snprintf(out, outlen, ".");
+    else if (slash == out)
+        out[1] = '\0';
+    else
+        *slash = '\0';
+}
+
+static bool file_exists(const char *path)
+{
+    struct stat sb;
+    return stat(path, &sb) == 0;
+}
+
+int lang_resolve(const char *name, const lang_paths *paths, char *out, size_t outlen)
+{
+    if (name[0] == '/' || (paths && paths->base_dir)) {
+        if (name[0] == '/' || !paths->base_dir || strcmp(paths->base_dir, ".") == 0)
+            snprintf(out, outlen, "%s", name);
+        else
+            snprintf(out, outlen, "%s/%s", paths->base_dir, name);
+        return file_exists(out) ? 0 : -1;
+    }
+    snprintf(out, outlen, "%s", name);
+    if (file_exists(out)) return 0;
+    if (paths && paths->scene_dir) {
+        char alt[PATH_MAX];
+        snprintf(alt, sizeof alt, "%s/%s", paths->scene_dir, name);
+        if (file_exists(alt)) {
+            snprintf(out, outlen, "%s", alt);
+            return 0;
+        }
+    }
+    return -1;
+}
+
+static char *read_whole(const char *path, size_t *len, char *why, size_t whylen)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        snprintf(why, whylen, "%s", strerror(errno));
+        return NULL;
+    }
+    struct stat sb;
+    if (fstat(fileno(f), &sb) == 0 && S_ISDIR(sb.st_mode)) {
+        snprintf(why, whylen, "it is a folder");
+        fclose(f);
+        return NULL;
+    }
+    size_t cap = 4096, n = 0;
+    char *buf = malloc(cap);
+    while (buf) {
+        if (n == cap) {
+            if (cap >= (size_t)LANG_MAX_FILE) {
+                snprintf(why, whylen, "larger than %ld bytes", LANG_MAX_FILE);
+                free(buf);
+                fclose(f);
+                return NULL;
+            }
+            char *nb = realloc(buf, cap * 2);
+            if (!nb) break;
+            buf = nb;
+            cap *= 2;
+        }
+        size_t got = fread(buf + n, 1, cap - n, f);
+        n += got;
+        if (got == 0) {
+            if (ferror(f)) {
+                snprintf(why, whylen, "%s", strerror(errno));
+                free(buf);
+                fclose(f);
+                return NULL;
+            }
+            fclose(f);
+            *len = n;
+            return buf;
+        }
+    }
+    free(buf);
+    fclose(f);
+    snprintf(why, whylen, "out of memory");
+    return NULL;
+}
+
+program *lang_parse_file(const char *path, const lang_paths *paths, int depth,
+                         const char **stack, int n_stack, const char *from_file, int from_line,
+                         char *err, size_t errlen)
+{
+    char where_[PATH_MAX + 32] = "error";
+    if (from_file) snprintf(where_, sizeof where_, "%s:%d: error", from_file, from_line);
+    if (depth > LANG_MAX_DEPTH) {
+        snprintf(err, errlen, "%s: files read each other deeper than %d levels (at '%s')", where_,
+                 LANG_MAX_DEPTH, path);
+        return NULL;
+    }
+    char full[PATH_MAX];
+    if (lang_resolve(path, paths, full, sizeof full) != 0) {
+        snprintf(err, errlen, "%s: cannot read '%s': %s", where_, path, strerror(ENOENT));
+        return NULL;
+    }
+    char real[PATH_MAX];
+    if (!realpath(full, real)) snprintf(real, sizeof real, "%s", full);
+    for (int i = 0; i < n_stack; i++) {
+        if (strcmp(stack[i], real) == 0) {
+            snprintf(err, errlen, "%s: '%s' reads itself (directly or through other files)",
+                     where_, path);
+            return NULL;
+        }
+    }
+    size_t len;
+    char why[256];
+    char *text = read_whole(full, &len, why, sizeof why);
+    if (!text) {
+        snprintf(err, errlen, "%s: cannot read '%s': %s", where_, path, why);
+        return NULL;
+    }
+    char dir[PATH_MAX];
+    dir_of(full, dir, sizeof dir);
+    lang_paths sub = {dir, paths ? paths->scene_dir : NULL};
+    const char **st2 = malloc((size_t)(n_stack + 1) * sizeof *st2);
+    if (!st2) {
+        free(text);
+        snprintf(err, errlen, "error: out of memory");
+        return NULL;
+    }
+    for (int i = 0; i < n_stack; i++) st2[i] = stack[i];
+    st2[n_stack] = real;
+    program *p = lang_parse(text, len, full, 1, &sub, depth, st2, n_stack + 1, err, errlen);
+    free(st2);
+    free(text);
+    if (p && !(p->real = strdup(real))) {
+        program_free(p);
+        snprintf(err, errlen, "error: out of memory");
+        return NULL;
+    }
+    return p;
+}
+
+bool lang_valid_name(const char *s)
+{
+    size_t n = strlen(s);
+    if (n == 0 || n >= BODY_NAME_MAX) return false;
+    if (!((s[0] >= 'a' && s[0] <= 'z') || (s[0] >= 'A' && s[0] <= 'Z') || s[0] == '_'))
+        return false;
+    for (size_t i = 1; i < n; i++) {
+        char c = s[i];
+        if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+              c == '_' || c == '-'))
+            return false;
+    }
+    return true;
+}

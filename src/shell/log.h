@@ -1,0 +1,46 @@
+/* log.h: the CSV logs a user asks for: `trace = FILE` and `events = FILE`.
+ *
+ * Columns are fixed by language.md; numbers are printed with 17 significant digits
+ * so that every frame's state can be checked from outside exactly.  The core
+ * reports each frame's collisions in world.events; the shell writes them here
+ * after the frame, with the trace's rows. */
+#ifndef VROC_LOG_H
+#define VROC_LOG_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "core/world.h"
+
+/* Longest path of a log, with its final NUL. */
+#define LOG_PATH_MAX 1024
+
+typedef struct {
+    FILE *trace;          /* `trace = FILE`, or NULL */
+    char trace_path[LOG_PATH_MAX];
+    FILE *events;         /* `events = FILE`, or NULL */
+    char events_path[LOG_PATH_MAX];
+} shell_logs;
+
+/* Opens path for the trace (truncating it), writes the header and one row per
+ * object of w for the current state.  Closes a trace already open.  Returns 0, or
+ * -1 with a message in err (the previous trace is then left as it was). */
+int log_trace_open(shell_logs *l, const world *w, const char *path, char *err, size_t errlen);
+
+/* Opens path for the collision events and writes the header; as above. */
+int log_events_open(shell_logs *l, const char *path, char *err, size_t errlen);
+
+void log_trace_close(shell_logs *l);
+void log_events_close(shell_logs *l);
+
+/* One trace row per object for the current frame (nothing when no trace is open). */
+void log_trace_frame(shell_logs *l, const world *w);
+
+/* One event row per collision of the last frame, w->events (nothing when no events
+ * log is open). */
+void log_events_frame(shell_logs *l, const world *w);
+
+/* The state word of a body: dynamic, static or resting. */
+const char *log_state_name(body_state s);
+
+#endif

@@ -1,0 +1,160 @@
+/* prompt.c: the input loops: the interactive prompt and plain lines from a pipe.
+ *
+ * On a terminal the prompt uses GNU readline's callback interface: select() waits
+ * for a key or for the next frame's wall-clock time, so that after `start` time runs
+ * in real time while the user types (no threads).  Ctrl-C only sets a flag: it
+ * stops running time or an ongoing `run`, or clears the line being typed.  From a
+ * pipe, lines are read plainly with no prompt.  (After Lua's lua.c and SQLite's
+ * shell: readline only on a terminal, a signal handler that only sets a flag.)
+ */
+#define _GNU_SOURCE /* sigaction in <signal.h> with readline's headers */
+#include <errno.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/select.h>
+#include <unistd.h>
+
+#include <readline/history.h>
+#include <readline/readline.h>
+
+#include "complete.h"
+#include "shell.h"
+#include "writer.h"
+
+static shell *g_sh;     /* the shell readline's callbacks work on */
+static bool g_done;     /* quit or end of input */
+static char g_history[4096];
+
+static void on_sigint(int sig)
+{
+    (void)sig;
+    shell_interrupted = 1;
+}
+
+static void install_sigint(void)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_sigint;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = 0; /* no SA_RESTART: select() returns EINTR */
+    sigaction(SIGINT, &sa, NULL);
+}
+
+static void on_line(char *line)
+{
+    if (!line) { /* Ctrl-D */
+        g_done = true;
+        rl_callback_handler_remove();
+        fputc('\n', g_sh->out);
+        return;
+    }
+    char *p = line;
+    while (*p == ' ' || *p == '\t') p++;
+    if (*p) add_history(line);
+    if (shell_run_text(g_sh, line, NULL) == CMD_QUIT) {
+        g_done = true;
+        rl_callback_handler_remove();
+    }
+    free(line);
+}
+
+/* Advances the frames that are due in real time; returns seconds to the next. */
+static double run_due_frames(shell *sh, double *next)
+{
+    double h = sh->w.set.time_step;
+    if (!sh->running || h <= 0) return -1;
+    double t = shell_clock();
+    if (*next <= 0) *next = t + h;
+    if (t < *next) return *next - t;
+    long due = (long)((t - *next) / h) + 1;
+    if (due > 5) due = 5; /* fall behind rather than stall the prompt */
+    if (shell_advance(sh, NULL, due) != CMD_OK) sh->running = false;
+    *next += (double)due * h;
+    if (*next < t) *next = t + h;
+    return *next - shell_clock() > 0 ? *next - shell_clock() : 0;
+}
+
+static void history_path(void)
+{
+    const char *home = getenv("HOME");
+    if (home && *home) snprintf(g_history, sizeof g_history, "%s/.vroc_history", home);
+}
+
+static int loop_readline(shell *sh)
+{
+    g_sh = sh;
+    g_done = false;
+    history_path();
+    using_history();
+    stifle_history(2000);
+    if (g_history[0]) read_history(g_history);
+    rl_readline_name = "vroc";
+    complete_install(sh);
+    rl_basic_word_break_characters = " \t\n\"(),=;#";
+    rl_catch_signals = 0;
+    install_sigint();
+    rl_callback_handler_install("vroc> ", on_line);
+    double next = 0;
+    while (!g_done) {
+        double wait = run_due_frames(sh, &next);
+        if (!sh->running) next = 0;
+        fd_set fds;
+        FD_ZERO(&fds);
+        FD_SET(fileno(rl_instream ? rl_instream : stdin), &fds);
+        struct timeval tv, *tvp = NULL;
+        if (wait >= 0) {
+            tv.tv_sec = (time_t)wait;
+            tv.tv_usec = (suseconds_t)((wait - (double)tv.tv_sec) * 1e6);
+            tvp = &tv;
+        }
+        int n = select(fileno(rl_instream ? rl_instream : stdin) + 1, &fds, NULL, NULL, tvp);
+        if (n < 0 && errno == EINTR) {
+            if (!shell_interrupted) continue;
+            shell_interrupted = 0;
+            if (sh->running) {
+                char a[32];
+                sh->running = false;
+                fprintf(sh->out, "\nstopped at time = %s\n", fmt_num(a, sh->w.time));
+            } else {
+                fputc('\n', sh->out);
+            }
+            rl_replace_line("", 0);
+            rl_on_new_line();
+            rl_redisplay();
+            continue;
+        }
+        if (n > 0) rl_callback_read_char();
+    }
+    if (g_history[0]) write_history(g_history);
+    clear_history();
+    complete_free();
+    return 0;
+}
+
+static int loop_lines(shell *sh, FILE *in)
+{
+    char *line = NULL;
+    size_t cap = 0;
+    int lineno = 0, status = 0;
+    install_sigint();
+    while (getline(&line, &cap, in) >= 0) {
+        lineno++;
+        cmd_status r = shell_run_text_at(sh, line, "<stdin>", lineno);
+        if (r == CMD_QUIT) break;
+        if (r == CMD_ERROR && sh->stop_on_error) {
+            status = 1;
+            break;
+        }
+    }
+    free(line);
+    return status;
+}
+
+int shell_loop(shell *sh)
+{
+    if (sh->interactive) return loop_readline(sh);
+    return loop_lines(sh, stdin);
+}

@@ -1,0 +1,242 @@
+/* shell.c: the shell's state, statements run with their messages, and time
+ * advanced with its logs and frames.
+ *
+ * A program (a file, a -c text, a line typed) is parsed whole, then its statements
+ * run in turn through the command table; the first error stops it.  After every
+ * statement the core is told that the world changed (edit_done).  Time advances
+ * frame by frame: after each the shell writes the frame's events and trace rows,
+ * and the views' files when record is on.
+ */
+#include "shell.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "core/edit.h"
+#include "core/sim.h"
+#include "view/view.h"
+#include "writer.h"
+
+volatile sig_atomic_t shell_interrupted;
+
+shell_settings shell_settings_defaults(void)
+{
+    shell_settings s;
+    memset(&s, 0, sizeof s);
+    s.random_box = v3(2, 2, 2);
+    s.seed = 1;
+    s.hand = v3(0, 0, 0);
+    s.hand_rotate = (dir_amount){v3(1, 0, 0), 0};
+    s.trigger = false;
+    s.select_mode = false;
+    s.tracker[0] = '\0';
+    snprintf(s.collision_sound, sizeof s.collision_sound, "click");
+    s.collision_vol = 1.0;
+    return s;
+}
+
+double shell_clock(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+void shell_init(shell *sh, FILE *out, FILE *err)
+{
+    memset(sh, 0, sizeof *sh);
+    world_init(&sh->w);
+    sh->view_set = view_settings_defaults();
+    sh->set = shell_settings_defaults();
+    sh->startup.sim = sh->w.set;
+    sh->startup.view = sh->view_set;
+    sh->startup.shell = sh->set;
+    sh->rng = sh->set.seed;
+    sh->current = sh->selected = sh->prev_selected = -1;
+    sh->out = out;
+    sh->err = err;
+}
+
+void shell_free(shell *sh)
+{
+    world_free(&sh->w);
+    log_trace_close(&sh->logs);
+    log_events_close(&sh->logs);
+    view_free(sh->view);
+    sh->view = NULL;
+}
+
+/* ------------------------------------------------------------ messages */
+
+static void vmsg(shell *sh, const stmt *st, const char *kind, const char *fmt, va_list ap)
+{
+    fflush(sh->out);
+    if (st && st->file) fprintf(sh->err, "%s:%d: %s: ", st->file, st->line, kind);
+    else fprintf(sh->err, "%s: ", kind);
+    vfprintf(sh->err, fmt, ap);
+    fputc('\n', sh->err);
+    fflush(sh->err);
+}
+
+void sh_error(shell *sh, const stmt *st, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vmsg(sh, st, "error", fmt, ap);
+    va_end(ap);
+}
+
+void sh_warn(shell *sh, const stmt *st, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vmsg(sh, st, "warning", fmt, ap);
+    va_end(ap);
+}
+
+void sh_info(shell *sh, const char *fmt, ...)
+{
+    if (sh->quiet) return;
+    va_list ap;
+    va_start(ap, fmt);
+    vfprintf(sh->out, fmt, ap);
+    va_end(ap);
+    fputc('\n', sh->out);
+}
+
+/* ------------------------------------------------------------ running */
+
+cmd_status shell_run_program(shell *sh, const program *p)
+{
+    for (int i = 0; i < p->n; i++) {
+        sh->found_apart = false; /* the statement may move anything */
+        cmd_status r = p->s[i].cmd->run(sh, &p->s[i]);
+        /* whatever a statement changed, the schedule's predictions start afresh */
+        edit_done(&sh->w);
+        if (r != CMD_OK) return r;
+    }
+    return CMD_OK;
+}
+
+static lang_paths paths_of(const shell *sh) { return (lang_paths){NULL, sh->scene_dir}; }
+
+static cmd_status run_parsed(shell *sh, program *p, const char *err)
+{
+    if (!p) {
+        fflush(sh->out);
+        fprintf(sh->err, "%s\n", err);
+        return CMD_ERROR;
+    }
+    cmd_status r = shell_run_program(sh, p);
+    program_free(p);
+    fflush(sh->out);
+    return r;
+}
+
+cmd_status shell_run_text_at(shell *sh, const char *text, const char *name, int line)
+{
+    char err[1024];
+    lang_paths paths = paths_of(sh);
+    program *p = lang_parse(text, strlen(text), name, line, &paths, 0, NULL, 0, err, sizeof err);
+    return run_parsed(sh, p, err);
+}
+
+cmd_status shell_run_text(shell *sh, const char *text, const char *name)
+{
+    return shell_run_text_at(sh, text, name, 1);
+}
+
+cmd_status shell_run_file(shell *sh, const char *path)
+{
+    char err[1024];
+    lang_paths paths = paths_of(sh);
+    program *p = lang_parse_file(path, &paths, 0, NULL, 0, NULL, 0, err, sizeof err);
+    return run_parsed(sh, p, err);
+}
+
+typedef struct {
+    shell *sh;
+    const stmt *st;
+} pen_ctx;
+
+static void report_penetration(void *ctx, const body *a, const body *b, double depth)
+{
+    pen_ctx *c = ctx;
+    char d[32];
+    sh_error(c->sh, c->st, "'%s' and '%s' interpenetrate by %s m", a->name, b->name,
+             fmt_num(d, depth));
+}
+
+cmd_status shell_check_start(shell *sh, const stmt *st)
+{
+    pen_ctx ctx = {sh, st};
+    long n = sim_penetrations(&sh->w, report_penetration, &ctx);
+    if (n < 0) {
+        sh_error(sh, st, "out of memory");
+        return CMD_ERROR;
+    }
+    if (n > 0) {
+        sh_error(sh, st, "time cannot run while objects interpenetrate: move them apart first");
+        return CMD_ERROR;
+    }
+    if (sim_prepare(&sh->w) != 0) {
+        sh_error(sh, st, "out of memory");
+        return CMD_ERROR;
+    }
+    sh->found_apart = true;
+    return CMD_OK;
+}
+
+cmd_status shell_advance(shell *sh, const stmt *st, long n)
+{
+    char err[1024];
+    if (n > 0 && !sh->found_apart && shell_check_start(sh, st) != CMD_OK) return CMD_ERROR;
+    double t0 = shell_clock();
+    cmd_status r = CMD_OK;
+    for (long k = 0; k < n; k++) {
+        if (shell_interrupted) {
+            shell_interrupted = 0;
+            char a[32];
+            sh_info(sh, "interrupted at time = %s", fmt_num(a, sh->w.time));
+            break;
+        }
+        if (sim_frame(&sh->w, err, sizeof err) != 0) {
+            sh_error(sh, st, "%s", err);
+            r = CMD_ERROR;
+            break;
+        }
+        log_events_frame(&sh->logs, &sh->w);
+        log_trace_frame(&sh->logs, &sh->w);
+        if (sh->view_set.record && view_refresh(&sh->view, &sh->w, &sh->view_set, sh->w.frame,
+                                                &sh->view_st, err, sizeof err) != 0) {
+            /* at the prompt the simulation goes on without the pictures; a batch
+             * run stops at its first error */
+            sh->view_set.record = false;
+            sh_error(sh, st, "record: %s; recording turned off%s", err,
+                     sh->stop_on_error ? ", time stopped" : "");
+            if (sh->stop_on_error) {
+                r = CMD_ERROR;
+                break;
+            }
+        }
+    }
+    sh->wall_time += shell_clock() - t0;
+    return r;
+}
+
+void *shell_setting_field(shell *sh, const command *c)
+{
+    return (void *)shell_setting_value(sh, c);
+}
+
+const void *shell_setting_value(const shell *sh, const command *c)
+{
+    switch (c->owner) {
+    case OWN_SIM: return (const char *)&sh->w.set + c->off;
+    case OWN_VIEW: return (const char *)&sh->view_set + c->off;
+    case OWN_SHELL: return (const char *)&sh->set + c->off;
+    default: return NULL;
+    }
+}

@@ -1,0 +1,123 @@
+/* shell.h: runs statements against the world: dispatch, messages, time.
+ *
+ * The shell owns the world, the settings of the views and its own, the current
+ * object, the logs and the off-screen view.  Input comes from files (parsed whole
+ * before running), from -c, from a terminal through GNU readline (with real-time
+ * running while the user types: prompt.c), or line by line from a pipe.  Handlers
+ * (the cmd_*.c files) report through sh_error / sh_warn / sh_info so that every
+ * message carries its file and line.
+ */
+#ifndef VROC_SHELL_H
+#define VROC_SHELL_H
+
+#include <signal.h>
+#include <stdarg.h>
+#include <stdbool.h>
+#include <stdio.h>
+
+#include "commands.h"
+#include "core/world.h"
+#include "lang.h"
+#include "log.h"
+#include "view/view.h"
+
+/* Longest path a setting of the shell's holds, with its final NUL. */
+#define SHELL_PATH_MAX 1024
+
+/* The settings the shell owns: where `random` places objects, and the hand's and
+ * the sound's, which are kept here until their own layers give them effect. */
+typedef struct {
+    vec3 random_box;        /* half-extents of the box random objects go in */
+    unsigned long seed;     /* of random's sequence */
+    /* the hand-held tracker (thesis Appendix A.1.2) */
+    vec3 hand;
+    dir_amount hand_rotate; /* axis and angle, radians */
+    bool trigger;
+    bool select_mode;
+    char tracker[SHELL_PATH_MAX];
+    /* collision sounds (Table A.5) */
+    char collision_sound[SHELL_PATH_MAX];
+    double collision_vol;
+} shell_settings;
+
+/* The start-up values: random_box (2, 2, 2), seed 1, the hand at the origin,
+ * trigger up, select mode off, no tracker, the click sound at volume 1. */
+shell_settings shell_settings_defaults(void);
+
+typedef struct shell {
+    world w;
+    view_settings view_set;
+    shell_settings set;
+    struct {               /* what restart returns to: defaults and -o */
+        sim_settings sim;
+        view_settings view;
+        shell_settings shell;
+    } startup;
+    shell_logs logs;       /* trace and events */
+    view *view;            /* off-screen context, created on first need */
+    view_stats view_st;    /* what drawing has cost */
+    double wall_time;      /* seconds spent advancing time */
+    bool running;          /* `start` given and not stopped */
+    int current;           /* index of the current object, or -1 */
+    int selected;          /* object held by the hand, or -1 */
+    int prev_selected;     /* for reselect, or -1 */
+    bool interactive;      /* a terminal with readline */
+    bool quiet;            /* -q */
+    bool stop_on_error;    /* -b, or input that is not a terminal */
+    FILE *out, *err;
+    const char *scene_dir; /* installed scenes folder */
+    int read_depth;        /* files being run */
+    unsigned long long rng; /* state of `random`, reset by seed */
+    bool found_apart;      /* shell_check_start found no overlap since the last
+                            * statement began: time may run on unchecked */
+} shell;
+
+/* Set by the SIGINT handler; long operations (run, start) stop when it is set. */
+extern volatile sig_atomic_t shell_interrupted;
+
+void shell_init(shell *sh, FILE *out, FILE *err);
+void shell_free(shell *sh);
+
+/* Parses text named name (NULL: typed at the prompt; "-c": the command line)
+ * and runs it.  Returns CMD_QUIT on quit, CMD_ERROR on the first error (after
+ * printing it; later statements of that text do not run), else CMD_OK. */
+cmd_status shell_run_text(shell *sh, const char *text, const char *name);
+
+/* Parses the file at path whole and runs it, as `read` does from the prompt. */
+cmd_status shell_run_file(shell *sh, const char *path);
+
+/* Runs a parsed program, stopping at the first error (or quit). */
+cmd_status shell_run_program(shell *sh, const program *p);
+
+/* Refuses to let time run while objects interpenetrate (thesis 3.4.2, step 1):
+ * names every such pair with its depth.  The check queries every pair, so it is
+ * made once per statement: the frames start advances in real time between
+ * statements are not checked again (nothing but the simulation moved). */
+cmd_status shell_check_start(shell *sh, const stmt *st);
+
+/* Advances n frames (honouring Ctrl-C); records frames when record is on. */
+cmd_status shell_advance(shell *sh, const stmt *st, long n);
+
+/* Messages about statement st (NULL: no location). */
+void sh_error(shell *sh, const stmt *st, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+void sh_warn(shell *sh, const stmt *st, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+/* An informational line on the output, silenced by -q. */
+void sh_info(shell *sh, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+/* Seconds on the monotonic clock (wall time). */
+double shell_clock(void);
+
+/* The address of setting c's field (a FORM_SETTING) in its owner's settings. */
+void *shell_setting_field(shell *sh, const command *c);
+const void *shell_setting_value(const shell *sh, const command *c);
+
+/* Statements text (named name for messages) parsed and run from line `line` on. */
+cmd_status shell_run_text_at(shell *sh, const char *text, const char *name, int line);
+
+/* The interactive loop on a terminal (readline) or the line loop on a pipe
+ * (prompt.c). */
+int shell_loop(shell *sh);
+
+#endif

@@ -1,0 +1,135 @@
+/* writer.c: the world written in its own language (writer.h). */
+#include "writer.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "handlers.h"
+#include "shell.h"
+
+const char *fmt_num(char buf[32], double x)
+{
+    if (x == 0) return strcpy(buf, "0"); /* also -0 */
+    for (int prec = 15; prec <= 17; prec++) {
+        snprintf(buf, 32, "%.*g", prec, x);
+        if (strtod(buf, NULL) == x) break;
+    }
+    return buf;
+}
+
+void writer_vec(FILE *out, vec3 v)
+{
+    char a[32], b[32], c[32];
+    fprintf(out, "(%s, %s, %s)", fmt_num(a, v.x), fmt_num(b, v.y), fmt_num(c, v.z));
+}
+
+static void write_setting(FILE *out, const shell *sh, const command *c, int for_save)
+{
+    const shell_settings *s = &sh->set;
+    const view_settings *vs = &sh->view_set;
+    char a[32];
+    const char *n = c->name;
+    if (strcmp(n, "trace") == 0 || strcmp(n, "events") == 0) {
+        const char *path = n[0] == 't' ? sh->logs.trace_path : sh->logs.events_path;
+        fprintf(out, "%s%s = %s%s%s\n", for_save ? "# " : "", n, path[0] ? "\"" : "",
+                path[0] ? path : "off", path[0] ? "\"" : "");
+        return;
+    }
+    if (strcmp(n, "tracker") == 0) {
+        if (s->tracker[0]) fprintf(out, "tracker = \"%s\"\n", s->tracker);
+        else fprintf(out, "tracker = off\n");
+        return;
+    }
+    if (strcmp(n, "seed") == 0) {
+        fprintf(out, "seed = %lu\n", s->seed);
+        return;
+    }
+    if (strcmp(n, "image_size") == 0) {
+        fprintf(out, "image_size = (%d, %d)\n", vs->image_w, vs->image_h);
+        return;
+    }
+    if (strcmp(n, "stereo") == 0) {
+        static const char *names[] = {"pair", "sbs", "anaglyph", "mono"};
+        fprintf(out, "stereo = %s\n", names[vs->stereo]);
+        return;
+    }
+    if (strcmp(n, "real") == 0) {
+        static const char *names[] = {"solid", "wire", "hidden"};
+        fprintf(out, "real = %s\n", names[vs->real]);
+        return;
+    }
+    const char *field = shell_setting_value(sh, c);
+    fprintf(out, "%s = ", n);
+    switch (c->arg) {
+    case VAL_NUMBER: fprintf(out, "%s", fmt_num(a, *(const double *)field)); break;
+    case VAL_VECTOR: writer_vec(out, *(const vec3 *)field); break;
+    case VAL_VECTOR_ANGLE: {
+        const dir_amount *d = (const dir_amount *)field;
+        writer_vec(out, d->dir);
+        fprintf(out, " %s", fmt_num(a, d->amount));
+        break;
+    }
+    case VAL_COLOR: {
+        const int *k = (const int *)field;
+        fprintf(out, "(%d, %d, %d)", k[0], k[1], k[2]);
+        break;
+    }
+    case VAL_ONOFF: fprintf(out, "%s", *(const bool *)field ? "on" : "off"); break;
+    case VAL_FILE: fprintf(out, "\"%s\"", field); break;
+    default: break;
+    }
+    fputc('\n', out);
+}
+
+void settings_write(FILE *out, const shell *sh, int for_save)
+{
+    for (int i = 0; i < command_count; i++) {
+        const command *c = &command_table[i];
+        if (c->form == FORM_SETTING) write_setting(out, sh, c, for_save);
+        else if (c->run == cmd_select) /* the hand's select mode is a setting too */
+            fprintf(out, "select %s\n", sh->set.select_mode ? "on" : "off");
+    }
+}
+
+void body_write(FILE *out, const body *b)
+{
+    char a[32];
+    const shape_params *p = &b->sp;
+    fprintf(out, "%s %s\n", body_type_name(p->kind), b->name);
+    fprintf(out, "mass = %s\n", fmt_num(a, b->mass));
+    fprintf(out, "elasticity = %s\n", fmt_num(a, b->elasticity));
+    fprintf(out, "volume = %s\n", fmt_num(a, b->volume));
+    fprintf(out, "color = (%d, %d, %d)\n", b->color[0], b->color[1], b->color[2]);
+    switch (p->kind) {
+    case SHAPE_SPHERE:
+        fprintf(out, "radius = %s\n", fmt_num(a, p->radius));
+        fprintf(out, "ures = %d\nvres = %d\n", p->ures, p->vres);
+        break;
+    case SHAPE_CUBE:
+        fprintf(out, "size = ");
+        writer_vec(out, p->size);
+        fputc('\n', out);
+        break;
+    case SHAPE_SUPERQUADRIC:
+        fprintf(out, "exp1 = %s\n", fmt_num(a, p->exp1));
+        fprintf(out, "exp2 = %s\n", fmt_num(a, p->exp2));
+        fprintf(out, "a1 = %s\n", fmt_num(a, p->a1));
+        fprintf(out, "a2 = %s\n", fmt_num(a, p->a2));
+        fprintf(out, "a3 = %s\n", fmt_num(a, p->a3));
+        fprintf(out, "ures = %d\nvres = %d\n", p->ures, p->vres);
+        break;
+    }
+    fprintf(out, "translate = ");
+    writer_vec(out, b->x);
+    vec3 axis = b->rot_axis;
+    double angle = b->rot_angle;
+    if (!b->rot_given) q_to_axis_angle(b->q, &axis, &angle);
+    fprintf(out, "\nrotate = ");
+    writer_vec(out, axis);
+    fprintf(out, " %s\nlinear_vel = ", fmt_num(a, angle));
+    writer_vec(out, b->v);
+    fprintf(out, "\nangular_vel = ");
+    writer_vec(out, b->w);
+    fputc('\n', out);
+    if (b->state == STATE_RESTING) fprintf(out, "# resting\n");
+}

@@ -1,0 +1,26 @@
+/* writer.h: the world written in its own language: numbers that read back to the
+ * bit, objects (print, save) and settings (show, save). */
+#ifndef VROC_WRITER_H
+#define VROC_WRITER_H
+
+#include <stdio.h>
+
+#include "core/body.h"
+
+struct shell;
+
+/* The shortest text of x that reads back to exactly x ("%.17g" at most). */
+const char *fmt_num(char buf[32], double x);
+
+/* Writes v as "(x, y, z)", each number by fmt_num. */
+void writer_vec(FILE *out, vec3 v);
+
+/* Writes every setting as statements of the language, in the command table's
+ * order; for `save` the log files (trace, events) are written as comments, since
+ * reading them back would truncate the logs. */
+void settings_write(FILE *out, const struct shell *sh, int for_save);
+
+/* Writes body b as statements that recreate it (its creation line first). */
+void body_write(FILE *out, const body *b);
+
+#endif

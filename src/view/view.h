@@ -1,0 +1,88 @@
+/* view.h: the stereo off-screen views: what a see-through head-mounted display shows.
+ *
+ * OSMesa renders each eye of the head (view_settings: head, look_at, up, ipd, fov,
+ * image_size) into memory with parallel view axes and off-axis frusta that share
+ * one window at the focal distance |look_at - head|, the zero-parallax plane
+ * (design.md, "Views").  view_refresh writes the frame's PNG files into `output`
+ * as `stereo` asks.  Rendering reads the world and never changes it.
+ *
+ * A view is an OSMesa context with its buffers.  Every function takes the caller's
+ * pointer and creates the context on first need, so a shell can hold a NULL view
+ * until the first refresh.  Everything is synchronous: the files of a frame are
+ * complete when view_refresh returns (a pair is encoded on two threads, joined
+ * before it returns).  Use a view from one thread at a time.
+ *
+ * In AddressSanitizer builds view.c defines LeakSanitizer's
+ * __lsan_default_suppressions hook to ignore Mesa's own unfreed allocations; a
+ * program linking view.o must not define that hook again.
+ */
+#ifndef VROC_VIEW_H
+#define VROC_VIEW_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "core/world.h"
+
+/* Longest path of the output folder, with its final NUL. */
+#define VIEW_PATH_MAX 1024
+
+typedef enum { STEREO_PAIR, STEREO_SBS, STEREO_ANAGLYPH, STEREO_MONO } stereo_mode;
+typedef enum { REAL_SOLID, REAL_WIRE, REAL_HIDDEN } real_mode;
+
+/* What the views show and where they go (language.md, "Head, hand and views"). */
+typedef struct {
+    vec3 head, look_at, up;   /* the head pose the two eyes are placed from */
+    double ipd, fov;          /* eye distance (m), vertical field of view (degrees) */
+    int image_w, image_h;     /* pixels per eye */
+    char output[VIEW_PATH_MAX]; /* the folder frames are written into */
+    stereo_mode stereo;
+    int background[3];        /* 0..255 */
+    real_mode real;           /* how static objects are drawn */
+    bool record;              /* write the views of every frame while time runs */
+} view_settings;
+
+/* The start-up values: head at the origin looking along +y with z up, ipd 0.064,
+ * fov 60, 640x512, output "frames", pair, black, solid, record off. */
+view_settings view_settings_defaults(void);
+
+/* What drawing has cost so far. */
+typedef struct {
+    double render_time;   /* seconds spent drawing and writing frames */
+    long frames_written;  /* image files written */
+} view_stats;
+
+typedef struct view view; /* opaque: OSMesa context + buffers */
+
+/* Creates the off-screen context for vs's image_size, or re-creates it when the
+ * size changed (*v may be NULL on entry; an unchanged size keeps the context).
+ * Returns 0, or -1 with a message in err (then *v is NULL). */
+int view_display(view **v, const view_settings *vs, char *err, size_t errlen);
+
+/* Renders both eyes of the current state into memory (creating the context on first
+ * need).  Returns 0, or -1 with a message in err: a bad head pose (head == look_at,
+ * up parallel to the view direction), fov outside (0, 180), a negative ipd, or a
+ * context that cannot be made. */
+int view_render(view **v, const world *w, const view_settings *vs, char *err, size_t errlen);
+
+/* Renders and writes frame number `frame` into vs->output, creating the folders as
+ * `mkdir -p` does: pair -> frame-NNNNNN-left.png and frame-NNNNNN-right.png; sbs ->
+ * frame-NNNNNN-sbs.png (twice as wide, left eye on the left); anaglyph ->
+ * frame-NNNNNN-anaglyph.png (red = luminance of the left eye, green and blue =
+ * luminance of the right eye); mono -> frame-NNNNNN-left.png only (only the left eye
+ * is rendered).  NNNNNN is the frame number as %06ld.  Adds the wall time spent to
+ * st->render_time and the files written to st->frames_written (st may be NULL).
+ * Returns 0, or -1 with a message in err (for a file or folder: naming the path and
+ * the system's reason). */
+int view_refresh(view **v, const world *w, const view_settings *vs, long frame, view_stats *st,
+                 char *err, size_t errlen);
+
+/* The last rendered image of eye 0 (left) or 1 (right): 8-bit RGB, top row first,
+ * *width x *height = image_size.  NULL when that eye has not been rendered (no render
+ * yet, or the last refresh was mono and eye is 1).  Valid until the next view_* call. */
+const unsigned char *view_pixels(const view *v, int eye, int *width, int *height);
+
+/* Destroys the context and the buffers (NULL is fine). */
+void view_free(view *v);
+
+#endif
