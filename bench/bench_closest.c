@@ -97,7 +97,7 @@ static bench_out run(const motion *m, int mode, double seconds)
                 if (mode == COLD)
                     cache = (closest_cache){{CLOSEST_VERTEX, 0}, {CLOSEST_VERTEX, 0}, true};
                 closest_cache *c = mode == SCRATCH ? NULL : &cache;
-                closest_result res = closest_distance(m->a[i], m->b[i], c);
+                closest_result res = closest_distance(&m->a[i], &m->b[i], c);
                 g_sink += res.distance;
                 steps += res.steps;
                 out.restarts += res.restarted;

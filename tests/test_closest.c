@@ -639,7 +639,7 @@ static void check_estimate(closest_proxy a, closest_proxy b, closest_result r)
 /* Every query of the tests goes through here. */
 static closest_result query(closest_proxy a, closest_proxy b, closest_cache *cache)
 {
-    return closest_distance(a, b, cache);
+    return closest_distance(&a, &b, cache);
 }
 
 /* ---- the pool of shapes ---- */

@@ -293,7 +293,7 @@ static void box_dropped_on_its_corner_settles(void **state)
 /* A frictionless contact pushes along the vertical only: it changes neither the
  * horizontal momentum nor the angular momentum about the vertical.  A box that
  * lands slightly tilted, sliding and spinning, rocks and settles on its face
- * (thesis 3.3.3, sim.c "settle") keeping both, in a few collisions. */
+ * (thesis 3.3.3, rest.c "rest_settle") keeping both, in a few collisions. */
 static void tilted_box_settles_keeping_what_contact_keeps(void **state)
 {
     (void)state;
@@ -549,7 +549,7 @@ static void box_turning_onto_its_edge_strikes_with_the_lower_end(void **state)
 /* A block dropped on a corner, turning, rocks from corner to corner before it
  * rests.  After each strike the pair is 1e-7 m apart at the corner struck, and the
  * next contact is another corner's: the search for it starts from the corner that
- * comes down first (sim.c, vertex_plane_time), so that it takes few queries (6.3
+ * comes down first (toi.c, vertex_plane_time), so that it takes few queries (6.3
  * per collision when it aimed at the return of the corner struck).  No corner
  * ever goes into the table. */
 static void rocking_block_finds_its_next_corner(void **state)

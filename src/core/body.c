@@ -2,7 +2,7 @@
  *
  * The inertia tensor comes from the shape's mass properties at uniform density
  * (mass / volume).  Its principal axes are found once per build with Jacobi
- * rotations; the free-rotation integrator (sim.c) works in them.
+ * rotations; the free-rotation integrator (flight.c) works in them.
  */
 #include "body.h"
 
@@ -176,13 +176,13 @@ static closest_result distance_of(const body *a, const body *b, closest_cache *c
     }
     closest_proxy pa = shape_proxy(&a->shape, a->x, a->q), pb = shape_proxy(&b->shape, b->x, b->q);
     if (body_before(a, b))
-        return depth ? closest_distance(pa, pb, cache) : closest_distance_apart(pa, pb, cache);
+        return depth ? closest_distance(&pa, &pb, cache) : closest_distance_apart(&pa, &pb, cache);
     closest_cache c2, *cp = NULL;
     if (cache) {
         c2 = (closest_cache){cache->fb, cache->fa, cache->valid};
         cp = &c2;
     }
-    r = depth ? closest_distance(pb, pa, cp) : closest_distance_apart(pb, pa, cp);
+    r = depth ? closest_distance(&pb, &pa, cp) : closest_distance_apart(&pb, &pa, cp);
     if (r.status == CLOSEST_INVALID) return r;
     if (cache) *cache = (closest_cache){c2.fb, c2.fa, c2.valid};
     closest_mirror(&r);

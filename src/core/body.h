@@ -58,7 +58,7 @@ typedef struct body {
     bool rot_given;
 
     int support;       /* index of the body this one rests on, or -1 */
-    int slide;         /* the support it slides on (see sim.c), or -1 */
+    int slide;         /* the support it slides on (rest.h), or -1 */
     long slide_pair;   /* the pair of that contact in world.pairs */
     vec3 slide_n;      /* that support's normal, towards this body */
     bool slide_steady; /* the slide is on a face of a still support, turning about
@@ -67,8 +67,8 @@ typedef struct body {
     double slide_foot; /* how far across slide_n its features on the support reach
                         * from its centre of mass (contact_footprint) */
     double jumped;     /* how far its centre of mass was moved at once in all, by
-                        * collisions that set it apart or settled it (sim.c) */
-    int pinned_by[2];  /* the last two still objects it struck (sim.c), or -1; */
+                        * collisions that set it apart or settled it (rest.c) */
+    int pinned_by[2];  /* the last two still objects it struck (rest.h), or -1; */
     vec3 pinned_n[2];  /*   those contacts' normals, towards this body, */
     double pinned_t[2];/*   and when */
 } body;

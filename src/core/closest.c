@@ -1201,24 +1201,24 @@ static void sphere_poly(const closest_proxy *p, const closest_proxy *s, const cl
 
 /* ---- entry points ---- */
 
-static closest_result distance_of(closest_proxy a, closest_proxy b, closest_cache *cache,
-                                  bool depth)
+static closest_result distance_of(const closest_proxy *a, const closest_proxy *b,
+                                  closest_cache *cache, bool depth)
 {
     closest_result r;
     memset(&r, 0, sizeof r);
-    if (!object_ok(&a) || !object_ok(&b)) {
+    if (!object_ok(a) || !object_ok(b)) {
         closest_invalid(&r);
         return r;
     }
-    bool sa = a.hull == NULL, sb = b.hull == NULL;
+    bool sa = a->hull == NULL, sb = b->hull == NULL;
     if (sa && sb) {
-        sphere_sphere(&a, &b, cache, &r);
+        sphere_sphere(a, b, cache, &r);
         return r;
     }
     /* the closest data of each polyhedron, built for the call if the proxy lacks it */
     closest_hull *own[2] = {NULL, NULL};
     const closest_hull *h[2] = {NULL, NULL};
-    const closest_proxy *ob[2] = {&a, &b};
+    const closest_proxy *ob[2] = {a, b};
     for (int k = 0; k < 2; k++) {
         const closest_proxy *o = ob[k];
         if (!o->hull) continue;
@@ -1236,25 +1236,27 @@ static closest_result distance_of(closest_proxy a, closest_proxy b, closest_cach
             c2 = (closest_cache){cache->fb, cache->fa, cache->valid};
             cp = &c2;
         }
-        sphere_poly(&b, &a, h[1], cp, &r);
+        sphere_poly(b, a, h[1], cp, &r);
         closest_mirror(&r);
         if (cache) *cache = (closest_cache){c2.fb, c2.fa, c2.valid};
     } else if (sb) {
-        sphere_poly(&a, &b, h[0], cache, &r);
+        sphere_poly(a, b, h[0], cache, &r);
     } else {
-        poly_poly(&a, &b, h[0], h[1], cache, &r, depth);
+        poly_poly(a, b, h[0], h[1], cache, &r, depth);
     }
     closest_hull_free(own[0]);
     closest_hull_free(own[1]);
     return r;
 }
 
-closest_result closest_distance(closest_proxy a, closest_proxy b, closest_cache *cache)
+closest_result closest_distance(const closest_proxy *a, const closest_proxy *b,
+                                closest_cache *cache)
 {
     return distance_of(a, b, cache, true);
 }
 
-closest_result closest_distance_apart(closest_proxy a, closest_proxy b, closest_cache *cache)
+closest_result closest_distance_apart(const closest_proxy *a, const closest_proxy *b,
+                                      closest_cache *cache)
 {
     return distance_of(a, b, cache, false);
 }

@@ -104,14 +104,16 @@ void closest_hull_free(closest_hull *h);
  * NULL) gives the features to start from and receives the new ones.  A proxy with a
  * non-finite x or q, or a sphere of negative radius, gives status CLOSEST_INVALID,
  * distance NAN, and leaves the cache alone. */
-closest_result closest_distance(closest_proxy a, closest_proxy b, closest_cache *cache);
+closest_result closest_distance(const closest_proxy *a, const closest_proxy *b,
+                                closest_cache *cache);
 
 /* closest_distance for callers that need to know only whether the pair is apart,
  * and how far: the status and, when separated, everything are the same as
  * closest_distance's; when touching or penetrating, distance is 0 and the points
  * and normal are unspecified (no penetration estimate is made, which is most of the
  * cost of an overlapping query). */
-closest_result closest_distance_apart(closest_proxy a, closest_proxy b, closest_cache *cache);
+closest_result closest_distance_apart(const closest_proxy *a, const closest_proxy *b,
+                                      closest_cache *cache);
 
 /* r as the query of the swapped pair gives it: points and features swapped,
  * normal negated. */

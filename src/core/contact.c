@@ -11,6 +11,8 @@
  */
 #include "contact.h"
 
+#include <assert.h>
+
 #include <stdlib.h>
 #include <string.h>
 
@@ -415,6 +417,7 @@ static double angular_term(const body *b, vec3 r, vec3 n)
 
 contact contact_respond(body *a, body *b, vec3 p, vec3 n, double e, int held, vec3 s)
 {
+    assert(fabs(v3_len2(n) - 1) < 1e-9 && e >= 0);
     contact c = {p, n, contact_closing_speed(a, b, p, n), 0};
     if (c.speed <= 0) return c;
     vec3 ra = v3_sub(p, body_com(a)), rb = v3_sub(p, body_com(b));

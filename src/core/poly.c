@@ -342,8 +342,7 @@ static int qrun_start(qrun *r, const vec3 *pts, int n, char *err, size_t errlen)
 {
     memset(r, 0, sizeof *r);
     r->coords = malloc((size_t)n * 3 * sizeof *r->coords);
-    r->log = open_memstream(&r->logbuf, &r->loglen);
-    if (!r->log) r->log = fopen("/dev/null", "w");
+    r->log = open_memstream(&r->logbuf, &r->loglen); /* qhull writes its messages here */
     if (!r->coords || !r->log) {
         set_err(err, errlen, "out of memory");
         r->exitcode = -1;

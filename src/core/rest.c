@@ -11,6 +11,8 @@
  */
 #include "rest.h"
 
+#include <assert.h>
+
 #include <math.h>
 
 #include "contact.h"
@@ -151,6 +153,7 @@ static void stand(world *w, body *m, const body *s, int si, vec3 n, bool face, c
 int rest_settle(world *w, int mi, int si, vec3 n, bool face, vec3 support_pt, pair *p, double g,
                 double e)
 {
+    assert(mi != si && (p->a == mi || p->b == mi) && (p->a == si || p->b == si));
     body *m = w->bodies[mi];
     const body *s = w->bodies[si];
     double scale = m->shape.r_out + s->shape.r_out;

@@ -18,6 +18,7 @@
  */
 #include "schedule.h"
 
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -35,7 +36,7 @@
  * angles of at most |L| / I_min times their share of the step (1/2, 1/2, 1, 1/2,
  * 1/2), so the body turns by at most 3 |L| / I_min per second of steps; a
  * symmetric top turns about L at |L| / I_p and about its axis at no more than
- * |L| / I_min, 2 |L| / I_min in all (sim.c, rotate_free). */
+ * |L| / I_min, 2 |L| / I_min in all (flight.c, rotate_free). */
 static double spin_bound(const body *b)
 {
     double imin = d_min(b->I_princ.x, d_min(b->I_princ.y, b->I_princ.z));
@@ -131,7 +132,7 @@ static double predict(const world *w, const body *a, const body *b, double d, bo
          * whole force unless a steady slide takes part of it */
         const body *o = ob[k];
         bool whole = any_spin && !(o->slide >= 0 && o->slide_steady);
-        double acc = v3_len(whole ? world_accel(w) : world_body_accel(w, o));
+        double acc = v3_len(whole ? force_accel(w->set.force) : force_on(w->set.force, o));
         r[n++] = terms_of(o, acc, vmax, slack[k], any_spin, turn[k]);
     }
     if (keep) {
@@ -268,7 +269,7 @@ double sched_predict_along(const world *w, const body *a, const body *b, double 
         const body *x = ob[k];
         if (x->state != STATE_DYNAMIC) continue;
         double sign = k == 0 ? 1 : -1; /* a comes on along n, b along -n */
-        vec3 acc = world_body_accel(w, x), c = body_com(x);
+        vec3 acc = force_on(w->set.force, x), c = body_com(x);
         double speed = v3_len(x->v), am = v3_len(acc);
         /* until its speed could reach max_linear its centre flies the parabola
          * exactly; the time is not trusted beyond */
@@ -535,7 +536,7 @@ void sched_box_renew(world *w, int k, const body *o, double from, double t, doub
         /* the far bound's reach with no turn: its centre, as sched_predict_far
          * lets it go (the whole force unless it slides steadily) */
         bool whole = !(o->slide >= 0 && o->slide_steady);
-        double acc = v3_len(whole ? world_accel(w) : world_body_accel(w, o));
+        double acc = v3_len(whole ? force_accel(w->set.force) : force_on(w->set.force, o));
         sched_reach r = terms_of(o, acc, w->set.max_linear, SCHED_SLACK, true, false);
         /* long enough to reach SCHED_BOX_REACH, and past the step's end */
         x->until = from + centre_time(&r, SCHED_BOX_REACH);
@@ -570,7 +571,7 @@ bool sched_box_holds(const world *w, int k, const body *b, double t)
     const sched_box *x = &w->sched.box[k];
     if (b->state != STATE_DYNAMIC) return true; /* it stopped within */
     return v3_len(b->v) <= x->speed + x->acc * (t - x->from) &&
-           v3_len(world_body_accel(w, b)) <= x->acc && b->jumped - x->jumped <= SCHED_JUMP;
+           v3_len(force_on(w->set.force, b)) <= x->acc && b->jumped - x->jumped <= SCHED_JUMP;
 }
 
 bool sched_boxes_apart(const world *w, int a, int b)
@@ -583,7 +584,7 @@ void sched_slide_ends(world *w, int k, double t)
     if (!w->sched.obj_first) return;
     /* a box that counted the slide's lesser acceleration ends, and its parked
      * pairs are due with the rest */
-    bool box_ends_now = w->sched.box[k].acc < v3_len(world_accel(w)) && w->bodies[k]->state == STATE_DYNAMIC;
+    bool box_ends_now = w->sched.box[k].acc < v3_len(force_accel(w->set.force)) && w->bodies[k]->state == STATE_DYNAMIC;
     if (box_ends_now) box_ends(w, k, t);
     for (long j = w->sched.obj_first[k]; j < w->sched.obj_first[k + 1]; j++) {
         long i = w->sched.obj_pairs[j];

@@ -20,6 +20,7 @@
  */
 #include "sim.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -386,6 +387,7 @@ static void reschedule(world *w, int i, const body *a, const body *b, double t, 
  * the answer changes flies on from t; what it leaves as it was flies back. */
 static void answer(world *w, pair *p, double t, double t_end)
 {
+    assert(p->a < p->b && t >= w->time && t <= t_end);
     int ends[2] = {p->a, p->b};
     for (int k = 0; k < 2; k++) {
         int i = ends[k];
@@ -424,6 +426,22 @@ static void answer(world *w, pair *p, double t, double t_end)
     }
 }
 
+#ifdef VROC_VALIDATE
+/* The validation build (make check runs it on every scene) checks after every
+ * internal step what the simulation relies on and does not check as it goes: the
+ * schedule's heap and marks, and every polyhedron's adjacency, planarity and
+ * convexity (to 1e-9 of its size). */
+static void validate(const world *w)
+{
+    if (w->sched.heap) assert(sched_check(w) == 0);
+    for (int i = 0; i < w->n; i++) {
+        const shape *s = &w->bodies[i]->shape;
+        char err[256];
+        if (s->hull) assert(poly_check(s->hull, 1e-9 * (1 + s->r_out), err, sizeof err) == 0);
+    }
+}
+#endif
+
 /* One internal step of h seconds (thesis 3.4.2, steps 3 to 5); its scratch is
  * in place (sim_prepare). */
 static void internal_step(world *w, double h)
@@ -440,6 +458,9 @@ static void internal_step(world *w, double h)
     }
     w->time = t_end;
     rest_check_slides(w);
+#ifdef VROC_VALIDATE
+    validate(w);
+#endif
 }
 
 int sim_prepare(world *w)

@@ -6,6 +6,8 @@
  */
 #include "step.h"
 
+#include <assert.h>
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -110,12 +112,13 @@ static int copies(world *w, bool changed)
 void step_fly_on(const world *w, int i, double t, body *out)
 {
     double dt = t - w->step.snap_t[i];
-    if (dt > 0) flight_fly(out, dt, world_body_accel(w, out), w->set.max_linear, w->set.max_angular);
+    if (dt > 0) flight_fly(out, dt, force_on(w->set.force, out), w->set.max_linear, w->set.max_angular);
 }
 
 /* Puts moving body i's state at time t in out, a copy of body i. */
 void step_fly_into(const world *w, int i, double t, body *out)
 {
+    assert(w->step.snap[i].state == STATE_DYNAMIC && t >= w->step.snap_t[i]);
     body_copy_state(out, &w->step.snap[i]);
     step_fly_on(w, i, t, out);
 }

@@ -13,6 +13,8 @@
  */
 #include "toi.h"
 
+#include <assert.h>
+
 #include <math.h>
 
 #include "contact.h"
@@ -49,7 +51,7 @@ static vec3 point_accel(const world *w, const body *b, vec3 p)
 /* The first time at which one of polyhedron m's vertices, closing on the plane
  * through p with unit normal n (towards m) at its speed and acceleration along n
  * now (m moving as mm, the other object as mo), would have come within 1 - f of
- * its height above the plane (as the Newton step of time_of_impact, for every
+ * its height above the plane (as the Newton step of toi_find, for every
  * vertex); HUGE_VAL when none comes down.  A turning object that has just struck
  * with one corner comes down next with another. */
 static double vertex_plane_time(const body *m, const flight_motion *mm, const flight_motion *mo,
@@ -100,6 +102,7 @@ static bool only_shifts(const world *w, int i)
 
 toi_output toi_find(world *w, const toi_input *in)
 {
+    assert(in->a != in->b && in->lo <= in->hi);
     toi_output out = {.state = TOI_OVERLAPPED, .t = in->lo, .queries = 0};
     double lo = in->lo, hi = in->hi;
     closest_cache cache = in->cache;

@@ -15,6 +15,12 @@
 typedef struct { double x, y, z; } vec3;
 typedef struct { double w, x, y, z; } quat;
 typedef struct { double m[3][3]; } mat3;
+/* A direction and an amount, as `force = (x,y,z) m` and `rotate = (x,y,z) r` are
+ * typed. */
+typedef struct {
+    vec3 dir;
+    double amount;
+} dir_amount;
 
 /* The smaller and the larger of two numbers, for the core's hot loops: fmin and
  * fmax are calls into libm, since they must also sort out NaN and signed zeros;

@@ -6,6 +6,8 @@
  */
 #include "world.h"
 
+#include <assert.h>
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -98,6 +100,7 @@ static int index_after(int k, int i)
 
 void world_delete(world *w, int i)
 {
+    assert(i >= 0 && i < w->n);
     body_free(w->bodies[i]);
     free(w->bodies[i]);
     memmove(&w->bodies[i], &w->bodies[i + 1], (size_t)(w->n - i - 1) * sizeof *w->bodies);
@@ -106,7 +109,7 @@ void world_delete(world *w, int i)
     for (int k = 0; k < w->n; k++) {
         body *b = w->bodies[k];
         b->support = index_after(b->support, i);
-        b->slide = index_after(b->slide, i); /* its pair is found again (sim_update_pairs) */
+        b->slide = index_after(b->slide, i); /* its pair is found again (pairs_update) */
         for (int s = 0; s < 2; s++) b->pinned_by[s] = index_after(b->pinned_by[s], i);
     }
 }

@@ -17,17 +17,11 @@
 #include <stdbool.h>
 
 #include "body.h"
+#include "force.h"
 #include "pairs.h"
 #include "schedule.h"
 #include "step.h"
 #include "vmath.h"
-
-/* A direction and an amount, as `force = (x,y,z) m` and `rotate = (x,y,z) r` are
- * typed. */
-typedef struct {
-    vec3 dir;
-    double amount;
-} dir_amount;
 
 /* The settings of simulated time (Table A.5 and language.md). */
 typedef struct {
@@ -112,25 +106,13 @@ long world_pairs(const world *w);
  * there is no memory for it. */
 void world_event(world *w, const sim_event *e);
 
-/* The global acceleration: force.dir / |force.dir| * force.amount (zero when
- * none).  Inline, as are the next: the schedule and every flight ask for it. */
-static inline vec3 world_accel(const world *w)
-{
-    vec3 d = w->set.force.dir;
-    /* a unit direction (gravity's (0, 0, -1)) needs no square root: the same to
-     * the bit as normalising it */
-    if (v3_len2(d) == 1) return v3_scale(d, w->set.force.amount);
-    return v3_scale(v3_norm(d), w->set.force.amount);
-}
+/* The global acceleration (force.h). */
+static inline vec3 world_accel(const world *w) { return force_accel(w->set.force); }
 
-/* The global acceleration as body b feels it: less the part that presses it onto
- * the support it slides on (rest.h). */
+/* The global acceleration as body b feels it (force.h). */
 static inline vec3 world_body_accel(const world *w, const body *b)
 {
-    vec3 a = world_accel(w);
-    if (b->slide < 0) return a;
-    double an = v3_dot(a, b->slide_n);
-    return an < 0 ? v3_mad(a, b->slide_n, -an) : a;
+    return force_on(w->set.force, b);
 }
 
 /* Internal steps per frame: ceil(time_step / hmax) with hmax = internal_step when

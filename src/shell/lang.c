@@ -19,7 +19,7 @@
 
 #include "core/body.h"
 #include "lex.h"
-#include "writer.h"
+#include "fmt.h"
 
 /* Files larger than this are refused (a scene is a few kilobytes). */
 #define LANG_MAX_FILE (64L * 1024 * 1024)

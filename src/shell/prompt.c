@@ -21,7 +21,7 @@
 
 #include "complete.h"
 #include "shell.h"
-#include "writer.h"
+#include "fmt.h"
 
 static shell *g_sh;     /* the shell readline's callbacks work on */
 static bool g_done;     /* quit or end of input */

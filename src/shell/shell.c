@@ -17,7 +17,7 @@
 #include "core/edit.h"
 #include "core/sim.h"
 #include "view/view.h"
-#include "writer.h"
+#include "fmt.h"
 
 volatile sig_atomic_t shell_interrupted;
 

@@ -1,21 +1,13 @@
 /* writer.c: the world written in its own language (writer.h). */
 #include "writer.h"
 
+#include "fmt.h"
+
 #include <stdlib.h>
 #include <string.h>
 
 #include "handlers.h"
 #include "shell.h"
-
-const char *fmt_num(char buf[32], double x)
-{
-    if (x == 0) return strcpy(buf, "0"); /* also -0 */
-    for (int prec = 15; prec <= 17; prec++) {
-        snprintf(buf, 32, "%.*g", prec, x);
-        if (strtod(buf, NULL) == x) break;
-    }
-    return buf;
-}
 
 void writer_vec(FILE *out, vec3 v)
 {

@@ -6,11 +6,9 @@
 #include <stdio.h>
 
 #include "core/body.h"
+#include "fmt.h"
 
 struct shell;
-
-/* The shortest text of x that reads back to exactly x ("%.17g" at most). */
-const char *fmt_num(char buf[32], double x);
 
 /* Writes v as "(x, y, z)", each number by fmt_num. */
 void writer_vec(FILE *out, vec3 v);
