@@ -24,9 +24,9 @@ void body_init(body *b, const char *name, shape_kind kind)
     b->rot_angle = 0;
     b->rot_given = true;
     b->state = STATE_DYNAMIC;
-    b->support = -1;
-    b->slide = -1;
-    b->pinned_by[0] = b->pinned_by[1] = -1;
+    b->mode = MODE_FREE;
+    b->slide_on = -1;
+    b->moved = b->woken = true;
     b->I_body = m3_identity();
     b->I_body_inv = m3_identity();
     b->q_principal = q_identity();

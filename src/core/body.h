@@ -26,6 +26,12 @@
 
 typedef enum { STATE_DYNAMIC, STATE_STATIC, STATE_RESTING } body_state;
 
+/* How a dynamic body moves (rest.h): freely; sliding on a face of a still support
+ * (translating along it, turning about its normal only); or pressed against
+ * others in ways that need the contact forces found as it goes (a cluster:
+ * tipping, pivoting, stacks and piles that move). */
+typedef enum { MODE_FREE, MODE_SLIDE, MODE_GENERAL } body_mode;
+
 typedef struct body {
     char name[BODY_NAME_MAX];
     shape_params sp;   /* the parameters as set */
@@ -57,20 +63,15 @@ typedef struct body {
     double rot_angle;
     bool rot_given;
 
-    int support;       /* index of the body this one rests on, or -1 */
-    int slide;         /* the support it slides on (rest.h), or -1 */
-    long slide_pair;   /* the pair of that contact in world.pairs */
-    vec3 slide_n;      /* that support's normal, towards this body */
-    bool slide_steady; /* the slide is on a face of a still support, turning about
-                        * its normal only (or not at all, or a ball): likely to
-                        * last, so far predictions count its lesser acceleration */
-    double slide_foot; /* how far across slide_n its features on the support reach
-                        * from its centre of mass (contact_footprint) */
-    double jumped;     /* how far its centre of mass was moved at once in all, by
-                        * collisions that set it apart or settled it (rest.c) */
-    int pinned_by[2];  /* the last two still objects it struck (rest.h), or -1; */
-    vec3 pinned_n[2];  /*   those contacts' normals, towards this body, */
-    double pinned_t[2];/*   and when */
+    body_mode mode;    /* how a dynamic body moves (sim.h): free, sliding, or in a
+                        * cluster of bodies pressed together (general) */
+    int slide_on;      /* MODE_SLIDE: the static object it slides on, or -1, */
+    vec3 slide_n;      /*   that face's normal, towards this body */
+    bool moved;        /* a command placed, turned, reshaped it or changed its mass
+                        * since the simulation last ran: what it touches is found
+                        * anew */
+    bool woken;        /* a command changed its motion or what it presses on: its
+                        * mode is found anew */
 } body;
 
 /* Copies src's state (x to the end) over dst's, for a dst that is a copy of the

@@ -1,13 +1,5 @@
-/* contact.c: contact region and collision impulse (thesis 3.2.2; design.md,
+/* contact.c: contact regions and pressing points (contact.h; design.md,
  * "Dynamics").
- *
- * The impulse j along the normal n solves the thesis's momentum equations with
- * restitution e for the normal component of the relative velocity at the contact
- * point:  j = (1 + e) s / (1/m_a + 1/m_b + n.((I_a^-1 (r_a x n)) x r_a)
- *                                     + n.((I_b^-1 (r_b x n)) x r_b)),
- * s the closing speed.  The contact region is found from the objects' supporting
- * features along n, projected onto the contact plane: a vertex, a segment or a
- * convex polygon each; their overlap's centre is the contact point.
  */
 #include "contact.h"
 
@@ -133,6 +125,16 @@ static void plane_axes(vec3 n, vec3 *u, vec3 *v)
 }
 
 static double cross2(p2 o, p2 a, p2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
+
+/* The squared distance from c to the segment from a to b (a point when a = b). */
+static double seg_dist2(p2 a, p2 b, p2 c)
+{
+    double ex = b.x - a.x, ey = b.y - a.y, len2 = ex * ex + ey * ey;
+    double t = len2 > 0 ? ((c.x - a.x) * ex + (c.y - a.y) * ey) / len2 : 0;
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    double dx = a.x + t * ex - c.x, dy = a.y + t * ey - c.y;
+    return dx * dx + dy * dy;
+}
 
 static int cmp_p2(const void *a, const void *b)
 {
@@ -260,17 +262,48 @@ static bool segment_overlap(const p2 *a, const p2 *b, double eps, p2 *out, p2 *m
     return true;
 }
 
+/* The normal of a and b's closest features, from b to a, as exact as their kinds
+ * allow: a face's normal; for two edges, their common perpendicular.  For objects
+ * a hair apart the normal from the closest points (pa - pb over a tiny distance)
+ * carries their rounding, a millionth at 1e-10 m: enough to tilt a contact plane
+ * off a face and lose the face's corners. */
+static vec3 exact_normal(const body *a, const body *b, const closest_result *r)
+{
+    vec3 n = r->normal;
+    const poly *ha = a->shape.hull, *hb = b->shape.hull;
+    if (r->fa.kind == CLOSEST_FACE && ha && r->fa.index < ha->nf)
+        return v3_neg(q_rotate(a->q, ha->f[r->fa.index].n));
+    if (r->fb.kind == CLOSEST_FACE && hb && r->fb.index < hb->nf)
+        return q_rotate(b->q, hb->f[r->fb.index].n);
+    if (r->fa.kind == CLOSEST_EDGE && r->fb.kind == CLOSEST_EDGE && ha && hb &&
+        r->fa.index < ha->ne && r->fb.index < hb->ne) {
+        const poly_edge *ea = &ha->e[r->fa.index], *eb = &hb->e[r->fb.index];
+        vec3 da = q_rotate(a->q, v3_sub(ha->v[ea->v[1]], ha->v[ea->v[0]]));
+        vec3 db = q_rotate(b->q, v3_sub(hb->v[eb->v[1]], hb->v[eb->v[0]]));
+        vec3 c = v3_cross(da, db);
+        double l = v3_len(c);
+        if (l > 1e-9 * v3_len(da) * v3_len(db)) {
+            c = v3_scale(c, 1 / l);
+            return v3_dot(c, n) < 0 ? v3_neg(c) : c;
+        }
+    }
+    return n;
+}
+
 /* The contact region of a and b (see contact_point), in the contact plane's
  * coordinates (u, v), the plane at height h along the normal. */
 typedef struct {
     vec3 u, v;
     double h;
     int n;    /* corners: 2 a segment's ends, >= 3 a polygon's (ccw); 0 no overlap */
+    int na, nb; /* the points of each object's supporting set's hull: 1 a vertex,
+                 * 2 an edge, >= 3 a face */
     p2 *p;    /* the corners */
     p2 c;     /* the centre */
     p2 *pts;  /* where the points are worked on: local, or allocated */
     p2 local[12 * LOCAL_SUPPORT];
     support sa, sb; /* the supporting sets of the two objects */
+    vec3 n_used;    /* the normal it was found along (exact_normal) */
 } region;
 
 /* Finds the region: false when out of memory.  n is 0 when the features do not
@@ -279,8 +312,10 @@ typedef struct {
 static bool region_of(const body *a, const body *b, const closest_result *r, double tol,
                       region *z)
 {
-    vec3 n = r->normal;
+    vec3 n = exact_normal(a, b, r);
+    z->n_used = n;
     z->n = 0;
+    z->na = z->nb = 1;
     z->pts = z->local;
     /* a sphere touches a convex object at one point */
     if (a->sp.kind == SHAPE_SPHERE || b->sp.kind == SHAPE_SPHERE) return true;
@@ -302,6 +337,8 @@ static bool region_of(const body *a, const body *b, const closest_result *r, dou
     support_place(b, n, fb, z->u, z->v, sb);
     double eps = 1e-12 * (a->shape.r_out + b->shape.r_out) * (a->shape.r_out + b->shape.r_out);
     int na = hull2(sa, ka, eps), nb = hull2(sb, kb, eps);
+    z->na = na;
+    z->nb = nb;
     if (na >= 3 && nb >= 3) {
         int m = na, cur = 0;
         for (int i = 0; i < m; i++) buf[0][i] = sa[i];
@@ -317,6 +354,10 @@ static bool region_of(const body *a, const body *b, const closest_result *r, dou
         z->n = clip_segment(sb[0], sb[1], sa, na, z->p, &z->c) ? 2 : 0;
     } else if (na == 2 && nb == 2) {
         z->n = segment_overlap(sa, sb, sqrt(eps) + tol, z->p, &z->c) ? 2 : 0;
+    } else if (na == 1 || nb == 1) {
+        /* a vertex on the other: the region is that point */
+        z->p[0] = z->c = na == 1 ? sa[0] : sb[0];
+        z->n = 1;
     }
     return true;
 }
@@ -331,7 +372,7 @@ vec3 contact_point(const body *a, const body *b, const closest_result *r, double
 {
     region z;
     vec3 p = v3_scale(v3_add(r->pa, r->pb), 0.5);
-    if (region_of(a, b, r, tol, &z) && z.n > 0) p = region_world(&z, r->normal, z.c);
+    if (region_of(a, b, r, tol, &z) && z.n > 0) p = region_world(&z, z.n_used, z.c);
     free_points(z.pts, z.local);
     return p;
 }
@@ -343,7 +384,7 @@ vec3 contact_closing_corner(const body *a, const body *b, const closest_result *
     if (region_of(a, b, r, tol, &z)) {
         double best = 0;
         for (int i = 0; i < z.n; i++) {
-            vec3 c = region_world(&z, r->normal, z.p[i]);
+            vec3 c = region_world(&z, z.n_used, z.p[i]);
             double s = contact_closing_speed(a, b, c, r->normal);
             if (s > best) {
                 best = s;
@@ -355,44 +396,278 @@ vec3 contact_closing_corner(const body *a, const body *b, const closest_result *
     return p;
 }
 
-bool contact_stable(const body *m, vec3 n, double tol)
+/* ---- pressing points ---- */
+
+/* A point of the object on side p (0: a, 1: b) at world point x, in its frame. */
+static vec3 local_of(const body *o, vec3 x) { return q_unrotate(o->q, v3_sub(x, o->x)); }
+
+/* The face of polyhedron o whose outward normal is nearest world direction d, or
+ * -1 for a sphere. */
+static int facing(const body *o, vec3 d)
 {
-    if (m->sp.kind == SHAPE_SPHERE) return true;
-    vec3 u, v;
-    plane_axes(n, &u, &v);
-    support f;
-    support_find(m, v3_neg(n), tol, &f);
-    p2 local[2 * LOCAL_SUPPORT];
-    p2 *s = room_for(local, 2 * LOCAL_SUPPORT, 2 * f.n + 1); /* and room for its hull */
-    if (!s) return false;
-    support_place(m, v3_neg(n), &f, u, v, s);
-    double r = m->shape.r_out;
-    int k = hull2(s, f.n, 1e-12 * r * r);
-    vec3 c = body_com(m);
-    p2 cp = {v3_dot(c, u), v3_dot(c, v)};
-    bool inside = k >= 3;
-    for (int i = 0; i < k && inside; i++)
-        if (cross2(s[i], s[(i + 1) % k], cp) < 1e-9 * r * r) inside = false;
-    free_points(s, local);
-    return inside;
+    const poly *h = o->shape.hull;
+    if (!h || o->sp.kind == SHAPE_SPHERE) return -1;
+    vec3 dl = q_unrotate(o->q, d);
+    int best = 0;
+    for (int k = 1; k < h->nf; k++)
+        if (v3_dot(h->f[k].n, dl) > v3_dot(h->f[best].n, dl)) best = k;
+    return best;
 }
 
-double contact_footprint(const body *m, vec3 n, double tol)
+/* Moves world point *x along m onto P's surface facing the other object (along
+ * -m): the plane of its face f there when its supporting set s (np points in
+ * the region's hull) is a face, the line of its edge when an edge, its vertex when a
+ * vertex. */
+static void lift(const body *P, const support *s, int np, int f, vec3 m, vec3 *x)
 {
-    vec3 u, v;
+    const poly *h = P->shape.hull;
+    if (!h || P->sp.kind == SHAPE_SPHERE || s->n < 1) return;
+    if (np >= 3 && f >= 0) {
+        vec3 nf = q_rotate(P->q, h->f[f].n);
+        double dn = v3_dot(nf, m);
+        if (fabs(dn) < 1e-3) return;
+        vec3 on = v3_add(P->x, q_rotate(P->q, h->v[h->face_vert[h->f[f].first]]));
+        *x = v3_mad(*x, m, v3_dot(nf, v3_sub(on, *x)) / dn);
+        return;
+    }
+    /* an edge or a vertex: its points furthest apart across m */
+    vec3 p0 = v3_add(P->x, q_rotate(P->q, h->v[s->idx[0]])), p1 = p0;
+    double far = -1;
+    for (int i = 0; i < s->n; i++) {
+        vec3 pi = v3_add(P->x, q_rotate(P->q, h->v[s->idx[i]]));
+        for (int j = i + 1; j < s->n; j++) {
+            vec3 pj = v3_add(P->x, q_rotate(P->q, h->v[s->idx[j]]));
+            vec3 d = v3_sub(pj, pi);
+            d = v3_mad(d, m, -v3_dot(d, m));
+            if (v3_len2(d) > far) {
+                far = v3_len2(d);
+                p0 = pi;
+                p1 = pj;
+            }
+        }
+    }
+    vec3 e = v3_sub(p1, p0), ep = v3_mad(e, m, -v3_dot(e, m));
+    double len2 = v3_len2(ep), t = 0;
+    if (np == 2 && len2 > 0) {
+        vec3 d = v3_sub(*x, p0);
+        t = v3_dot(v3_mad(d, m, -v3_dot(d, m)), ep) / len2;
+    }
+    vec3 on = v3_mad(p0, e, t);
+    *x = v3_mad(*x, m, v3_dot(v3_sub(on, *x), m));
+}
+
+/* A plane of the object on side q through world point x with world normal m
+ * (towards the other object), in q's frame. */
+static void plane_of(const body *o, vec3 x, vec3 m, cpoint *cp)
+{
+    cp->kind = CPT_PLANE;
+    cp->f0 = q_unrotate(o->q, m);
+    cp->f1 = v3(v3_dot(cp->f0, local_of(o, x)), 0, 0);
+}
+
+/* The point of sphere s (side p) against the feature f of polyhedron o (side q). */
+static void sphere_against(const body *s, const body *o, closest_feature f, vec3 n_to_s,
+                           vec3 on_o, cpoint *cp)
+{
+    cp->sp = s->shape.mass.com;
+    cp->r = s->sp.radius;
+    const poly *h = o->shape.hull;
+    if (f.kind == CLOSEST_FACE && h && f.index < h->nf) {
+        const poly_face *F = &h->f[f.index];
+        cp->kind = CPT_PLANE;
+        cp->f0 = F->n;
+        cp->f1 = v3(F->d, 0, 0);
+        /* a centre over the face's rim (a ball at the edge it slides off) is
+         * against that edge: the face's plane reaches beyond it */
+        vec3 c = q_unrotate(o->q, v3_sub(body_com(s), o->x));
+        double eps = 1e-9 * (1 + o->shape.r_out), most = -eps;
+        for (int k = 0; k < F->count; k++) {
+            vec3 v0 = h->v[h->face_vert[F->first + k]];
+            vec3 v1 = h->v[h->face_vert[F->first + (k + 1) % F->count]];
+            vec3 e = v3_sub(v1, v0), out = v3_cross(e, F->n);
+            double len = v3_len(out);
+            if (!(len > 0)) continue;
+            double side = v3_dot(v3_sub(c, v0), out) / len;
+            if (side >= most) {
+                most = side;
+                cp->kind = CPT_LINE;
+                cp->f0 = v0;
+                cp->f1 = v3_norm(e);
+            }
+        }
+    } else if (f.kind == CLOSEST_EDGE && h && f.index < h->ne) {
+        cp->kind = CPT_LINE;
+        cp->f0 = h->v[h->e[f.index].v[0]];
+        cp->f1 = v3_norm(v3_sub(h->v[h->e[f.index].v[1]], cp->f0));
+    } else if (f.kind == CLOSEST_VERTEX && h && f.index < h->nv) {
+        cp->kind = CPT_POINT;
+        cp->f0 = h->v[f.index];
+        cp->f1 = v3(0, 0, 0);
+    } else {
+        plane_of(o, on_o, n_to_s, cp);
+    }
+}
+
+int contact_cpoints(const body *a, const body *b, const closest_result *r, double tol, cpoint *out,
+                    int max)
+{
+    if (max < 1) return 0;
+    vec3 n = r->normal;
+    double half = 0.5 * r->distance;
+    bool sa = a->sp.kind == SHAPE_SPHERE, sb = b->sp.kind == SHAPE_SPHERE;
+    if (sa && sb) {
+        out[0] = (cpoint){.p = 0, .q = 1, .kind = CPT_POINT, .sp = a->shape.mass.com,
+                          .r = a->sp.radius + b->sp.radius, .f0 = b->shape.mass.com};
+        return 1;
+    }
+    if (sa || sb) {
+        cpoint *cp = &out[0];
+        cp->p = sa ? 0 : 1;
+        cp->q = sa ? 1 : 0;
+        if (sa) sphere_against(a, b, r->fb, n, r->pb, cp);
+        else sphere_against(b, a, r->fa, v3_neg(n), r->pa, cp);
+        return 1;
+    }
+    region z;
+    if (!region_of(a, b, r, tol, &z)) {
+        free_points(z.pts, z.local);
+        return 0;
+    }
+    int count = 0;
+    n = z.n_used;
+    if (z.n > 0) {
+        /* the plane is the face's side, the points the corners of the other's
+         * side; when both are faces, the plane is the still or the heavier one's,
+         * so that the other, turning off it, lifts its corners off the plane */
+        int q = 1;
+        if (z.na >= 3 && z.nb < 3) q = 0;
+        else if (z.na >= 3 && z.nb >= 3 && (body_is_static(a) || (!body_is_static(b) && a->mass > b->mass)))
+            q = 0;
+        int pside = 1 - q;
+        const body *P = pside == 0 ? a : b, *Q = q == 0 ? a : b;
+        vec3 m = q == 1 ? n : v3_neg(n); /* from Q towards P */
+        vec3 mid = region_world(&z, n, z.c);
+        cpoint base = {.p = pside, .q = q, .r = 0};
+        int nq = q == 0 ? z.na : z.nb, np = pside == 0 ? z.na : z.nb;
+        /* the plane: the face of Q's side itself, when it is one */
+        int fq = nq >= 3 ? facing(Q, m) : -1;
+        if (fq >= 0) {
+            base.kind = CPT_PLANE;
+            base.f0 = Q->shape.hull->f[fq].n;
+            base.f1 = v3(Q->shape.hull->f[fq].d, 0, 0);
+        } else {
+            plane_of(Q, v3_mad(mid, m, -half), m, &base);
+        }
+        /* the points: on P's own surface (its face, edge or vertex that faces Q),
+         * so that their gaps are the objects' own, however thick the region */
+        const support *sp = pside == 0 ? &z.sa : &z.sb;
+        int fp = np >= 3 ? facing(P, v3_neg(m)) : -1;
+        for (int i = 0; i < z.n && count < max; i++) {
+            vec3 x = v3_mad(region_world(&z, n, z.p[i]), m, half);
+            lift(P, sp, np, fp, m, &x);
+            out[count] = base;
+            out[count++].sp = local_of(P, x);
+        }
+    } else {
+        /* one point: on a face of b, on a face of a, or neither (edges, vertices) */
+        cpoint *cp = &out[count++];
+        bool a_face = r->fa.kind == CLOSEST_FACE && r->fb.kind != CLOSEST_FACE;
+        cp->p = a_face ? 1 : 0;
+        cp->q = a_face ? 0 : 1;
+        cp->r = 0;
+        if (a_face) {
+            plane_of(a, r->pa, v3_neg(n), cp);
+            cp->sp = local_of(b, r->pb);
+        } else {
+            plane_of(b, r->pb, n, cp);
+            cp->sp = local_of(a, r->pa);
+        }
+    }
+    free_points(z.pts, z.local);
+    return count;
+}
+
+double cpoint_eval(const cpoint *cp, const body *P, const body *Q, vec3 *n, vec3 *at)
+{
+    vec3 pw = v3_add(P->x, q_rotate(P->q, cp->sp));
+    vec3 pq = q_unrotate(Q->q, v3_sub(pw, Q->x));
+    vec3 m;
+    double gap;
+    switch (cp->kind) {
+    case CPT_PLANE:
+        m = cp->f0;
+        gap = v3_dot(cp->f0, pq) - cp->f1.x - cp->r;
+        break;
+    case CPT_LINE: {
+        vec3 d = v3_sub(pq, cp->f0);
+        vec3 perp = v3_mad(d, cp->f1, -v3_dot(d, cp->f1));
+        double l = v3_len(perp);
+        m = l > 0 ? v3_scale(perp, 1 / l) : v3(0, 0, 1);
+        gap = l - cp->r;
+        break;
+    }
+    default: {
+        vec3 d = v3_sub(pq, cp->f0);
+        double l = v3_len(d);
+        m = l > 0 ? v3_scale(d, 1 / l) : v3(0, 0, 1);
+        gap = l - cp->r;
+        break;
+    }
+    }
+    *n = q_rotate(Q->q, m);
+    *at = v3_mad(pw, *n, -cp->r);
+    return gap;
+}
+
+bool contact_holds(const body *m, const body *s, const closest_result *r, double tol, int *face)
+{
+    *face = -1;
+    const poly *h = s->shape.hull;
+    if (!h) return false;
+    /* the face of s the normal (from s to m) leaves by */
+    vec3 nl = q_unrotate(s->q, r->normal);
+    int fi = 0;
+    for (int k = 1; k < h->nf; k++)
+        if (v3_dot(h->f[k].n, nl) > v3_dot(h->f[fi].n, nl)) fi = k;
+    if (v3_dot(h->f[fi].n, nl) < 1 - 1e-6) {
+        return false;
+    }
+    *face = fi;
+    vec3 n = q_rotate(s->q, h->f[fi].n), u, v;
     plane_axes(n, &u, &v);
-    support f;
-    support_find(m, v3_neg(n), tol, &f);
-    p2 local[LOCAL_SUPPORT];
-    p2 *s = room_for(local, LOCAL_SUPPORT, f.n);
-    if (!s) return HUGE_VAL;
-    support_place(m, v3_neg(n), &f, u, v, s);
-    int k = f.n;
     vec3 c = body_com(m);
-    double cu = v3_dot(c, u), cv = v3_dot(c, v), r = k > 0 ? 0 : HUGE_VAL;
-    for (int i = 0; i < k; i++) r = d_max(r, hypot(s[i].x - cu, s[i].y - cv));
-    free_points(s, local);
-    return r;
+    p2 cp = {v3_dot(c, u), v3_dot(c, v)};
+    double scale = m->shape.r_out + s->shape.r_out, margin = 1e-9 * scale * scale;
+    if (m->sp.kind == SHAPE_SPHERE) {
+        /* the ball's lowest point, under its centre, on the face */
+        const poly_face *F = &h->f[fi];
+        p2 local[LOCAL_SUPPORT];
+        p2 *pg = room_for(local, LOCAL_SUPPORT, F->count);
+        if (!pg) return false;
+        for (int k = 0; k < F->count; k++) {
+            vec3 x = v3_add(s->x, q_rotate(s->q, h->v[h->face_vert[F->first + k]]));
+            pg[k] = (p2){v3_dot(x, u), v3_dot(x, v)};
+        }
+        bool inside = true;
+        for (int k = 0; k < F->count && inside; k++)
+            if (cross2(pg[k], pg[(k + 1) % F->count], cp) < margin) inside = false;
+        free_points(pg, local);
+        return inside;
+    }
+    region z;
+    bool inside = false;
+    if (region_of(m, s, r, tol, &z) && z.n >= 1) {
+        inside = z.n >= 3;
+        for (int k = 0; k < z.n && inside; k++)
+            if (cross2(z.p[k], z.p[(k + 1) % z.n], cp) < margin) inside = false;
+        /* balanced: over the region's edge, or over a support that is a point or a
+         * segment (a superquadric on its pole) */
+        double reach = 1e-9 * scale;
+        for (int k = 0; k < z.n && !inside; k++)
+            inside = seg_dist2(z.p[k], z.p[(k + 1) % z.n], cp) <= reach * reach;
+    }
+    free_points(z.pts, z.local);
+    return inside;
 }
 
 vec3 contact_point_velocity(const body *b, vec3 p)
@@ -407,90 +682,28 @@ double contact_closing_speed(const body *a, const body *b, vec3 p, vec3 n)
     return -v3_dot(rel, n);
 }
 
-/* n . ((I^-1 (r x n)) x r): the rotational part of the effective inverse mass. */
-static double angular_term(const body *b, vec3 r, vec3 n)
+bool contact_level(body *m, const body *s, int face, double max_tilt, double gap)
 {
-    if (body_is_static(b)) return 0;
-    vec3 t = body_inertia_inv_mulv(b, v3_cross(r, n));
-    return v3_dot(n, v3_cross(t, r));
-}
-
-contact contact_respond(body *a, body *b, vec3 p, vec3 n, double e, int held, vec3 s)
-{
-    assert(fabs(v3_len2(n) - 1) < 1e-9 && e >= 0);
-    contact c = {p, n, contact_closing_speed(a, b, p, n), 0};
-    if (c.speed <= 0) return c;
-    vec3 ra = v3_sub(p, body_com(a)), rb = v3_sub(p, body_com(b));
-    bool move_a = !body_is_static(a) && held != 1, move_b = !body_is_static(b) && held != 2;
-    /* the held one moves across s only: n's part across s, times its inverse mass */
-    vec3 across = v3_len2(s) > 0 ? v3_mad(n, s, -v3_dot(n, s)) : v3(0, 0, 0);
-    const body *h = held == 1 ? a : held == 2 ? b : NULL;
-    double k = (move_a ? a->inv_mass + angular_term(a, ra, n) : 0) +
-               (move_b ? b->inv_mass + angular_term(b, rb, n) : 0) +
-               (h && !body_is_static(h) ? h->inv_mass * v3_dot(across, n) : 0);
-    if (!(k > 0)) return c;
-    double j = (1 + e) * c.speed / k;
-    vec3 J = v3_scale(n, j);
-    if (move_a) {
-        a->v = v3_mad(a->v, J, a->inv_mass);
-        a->L = v3_add(a->L, v3_cross(ra, J));
-        body_update_w(a);
+    const poly *hs = s->shape.hull, *hm = m->shape.hull;
+    if (!hs || !hm || m->sp.kind == SHAPE_SPHERE || face < 0 || face >= hs->nf) return false;
+    vec3 n = q_rotate(s->q, hs->f[face].n);
+    int fm = facing(m, v3_neg(n));
+    vec3 nm = q_rotate(m->q, hm->f[fm].n), want = v3_neg(n);
+    vec3 axis = v3_cross(nm, want);
+    double sn = v3_len(axis), cs = v3_dot(nm, want), angle = atan2(sn, cs);
+    if (!(angle <= max_tilt)) return false;
+    vec3 c = body_com(m);
+    if (sn > 0) {
+        /* turned about its centre of mass, flat on the face */
+        quat turn = q_axis_angle(v3_scale(axis, 1 / sn), angle);
+        m->q = q_normalize(q_mul(turn, m->q));
+        m->x = v3_add(c, q_rotate(turn, v3_sub(m->x, c)));
+        m->rot_given = false;
+        body_update_w(m);
     }
-    if (move_b) {
-        b->v = v3_mad(b->v, J, -b->inv_mass);
-        b->L = v3_sub(b->L, v3_cross(rb, J));
-        body_update_w(b);
-    }
-    if (held == 1 && !body_is_static(a)) a->v = v3_mad(a->v, across, j * a->inv_mass);
-    if (held == 2 && !body_is_static(b)) b->v = v3_mad(b->v, across, -j * b->inv_mass);
-    c.impulse = j;
-    return c;
-}
-
-/* The shortest rotation taking unit vector a onto unit vector b. */
-static quat rotation_between(vec3 a, vec3 b)
-{
-    vec3 axis = v3_cross(a, b);
-    double s = v3_len(axis), c = v3_dot(a, b);
-    if (s < 1e-15) {
-        if (c > 0) return q_identity();
-        vec3 p = fabs(a.x) < 0.6 ? v3(1, 0, 0) : v3(0, 1, 0);
-        return q_axis_angle(v3_norm(v3_cross(a, p)), M_PI);
-    }
-    return q_axis_angle(v3_scale(axis, 1 / s), atan2(s, c));
-}
-
-bool contact_settle_pose(const body *m, vec3 n, double max_angle, quat *q, double *height)
-{
-    const poly *h = m->shape.hull;
-    if (!h) return false;
-    vec3 com = m->shape.mass.com, down = q_unrotate(m->q, v3_neg(n));
-    double margin = 1e-3 * m->shape.r_out, best = cos(max_angle);
-    int pick = -1;
-    for (int f = 0; f < h->nf; f++) {
-        const poly_face *F = &h->f[f];
-        double c = v3_dot(F->n, down);
-        if (c <= best) continue;
-        /* stable: the centre of mass, dropped onto the face's plane, lies inside the
-         * face by margin */
-        vec3 p = v3_mad(com, F->n, F->d - v3_dot(F->n, com));
-        bool inside = true;
-        for (int k = 0; k < F->count && inside; k++) {
-            vec3 a = h->v[h->face_vert[F->first + k]];
-            vec3 b = h->v[h->face_vert[F->first + (k + 1) % F->count]];
-            vec3 e = v3_sub(b, a);
-            double l = v3_len(e);
-            if (l > 0 && v3_dot(v3_cross(e, v3_sub(p, a)), F->n) < margin * l) inside = false;
-        }
-        if (inside) {
-            best = c;
-            pick = f;
-        }
-    }
-    if (pick < 0) return false;
-    const poly_face *F = &h->f[pick];
-    /* turn the face's normal, in world axes, onto -n */
-    *q = q_normalize(q_mul(rotation_between(q_rotate(m->q, F->n), v3_neg(n)), m->q));
-    *height = F->d - v3_dot(F->n, com);
+    /* and on its plane */
+    vec3 on_s = v3_add(s->x, q_rotate(s->q, hs->v[hs->face_vert[hs->f[face].first]]));
+    vec3 on_m = v3_add(m->x, q_rotate(m->q, hm->v[hm->face_vert[hm->f[fm].first]]));
+    m->x = v3_mad(m->x, n, gap - v3_dot(v3_sub(on_m, on_s), n));
     return true;
 }

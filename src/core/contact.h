@@ -1,23 +1,18 @@
-/* contact.h: the answer to one collision (thesis 3.2.2).
+/* contact.h: where two touching objects meet: their contact region and the points
+ * at which they press (thesis 3.2.2).
  *
- * A single-point, frictionless impulse from the conservation of linear and angular
- * momentum with full inertia tensors (Hahn 1988; Moore and Wilhelms 1988), the
- * restitution min(e1, e2), static objects with infinite mass.  The contact point is
- * the centre of the contact region: where the two objects' supporting features
- * (vertex, edge or face) overlap, so that a box landing flat stays flat.
+ * The contact region is found from the objects' supporting features along the
+ * normal (the vertices within a tolerance of the furthest), projected onto the
+ * contact plane: a vertex, a segment or a convex polygon each; their overlap is
+ * the region, and its corners are where the contact forces of a frictionless
+ * contact act (impulse.h), so that a box landing flat stays flat and one
+ * standing over an edge tips.
  */
 #ifndef VROC_CONTACT_H
 #define VROC_CONTACT_H
 
 #include "body.h"
 #include "closest.h"
-
-typedef struct {
-    vec3 point;    /* contact point, world */
-    vec3 normal;   /* unit, from b towards a */
-    double speed;  /* closing speed before the impulse (> 0: approaching) */
-    double impulse;/* magnitude of the impulse applied (along normal to a) */
-} contact;
 
 /* The centre of the contact region of a and b, touching or nearly touching with
  * closest result r: the centroid of the overlap of a's and b's features that lie
@@ -31,36 +26,54 @@ vec3 contact_point(const body *a, const body *b, const closest_result *r, double
 vec3 contact_closing_corner(const body *a, const body *b, const closest_result *r, double tol,
                             vec3 p);
 
-/* True when m can stand on a support below it, n pointing from the support to m:
- * m is a sphere, or its features facing the support form a polygon (tolerance tol)
- * that holds the projection of m's centre of mass. */
-bool contact_stable(const body *m, vec3 n, double tol);
+/* A point at which two touching objects press on each other, fixed in them so
+ * that it can be followed as they move: a point of object p (a vertex, a corner of
+ * the contact region, or a sphere's centre with its radius r) against a feature of
+ * object q: a plane (a face's), a line (an edge's) or a point (a vertex, a
+ * sphere's centre).  p and q are 0 (a) or 1 (b) as contact_cpoints writes them;
+ * callers may renumber them. */
+typedef enum { CPT_PLANE, CPT_LINE, CPT_POINT } cpt_kind;
 
-/* How far across n the features of m facing along -n (within tol of the furthest)
- * reach from its centre of mass: the radius of the circle about it that holds
- * what m stands on, however it turns about n (0 for a ball). */
-double contact_footprint(const body *m, vec3 n, double tol);
+typedef struct {
+    int p, q;
+    cpt_kind kind;
+    vec3 sp;   /* the point, in p's body frame */
+    double r;  /* the radius about it (a sphere's, or two spheres' together) */
+    vec3 f0;   /* q's feature in q's frame: PLANE its unit normal (towards p); */
+    vec3 f1;   /*   LINE a point f0 and unit direction f1; POINT f0; PLANE's offset
+                *   is f1.x (f0 . y = f1.x on the plane) */
+} cpoint;
 
-/* The pose in which m, a polyhedron touching a support below it (n from the support
- * to m), would come to lie on one of its faces: the face that m can stand on (its
- * centre of mass over the face) whose outward normal is nearest -n, within
- * max_angle radians.  Writes the orientation that turns that face flat onto the
- * support, rotated the shortest way, and the height of m's centre of mass above the
- * face's plane; false when no face qualifies (or m is a sphere). */
-bool contact_settle_pose(const body *m, vec3 n, double max_angle, quat *q, double *height);
+/* The points at which touching (or nearly touching) polyhedra or spheres a and b
+ * press (closest result r of a against b, tol the thickness of the contact
+ * region): a sphere's one point; the corners of a contact region (a segment's two
+ * ends, a polygon's corners), each against the plane of the face side; or the one
+ * closest pair.  At most max written; returns the count (0 when out of memory). */
+int contact_cpoints(const body *a, const body *b, const closest_result *r, double tol, cpoint *out,
+                    int max);
+
+/* The gap of point cp with its objects in the states P and Q (> 0 apart), the
+ * unit normal there (from Q towards P) and the world point where they press (on
+ * P's surface). */
+double cpoint_eval(const cpoint *cp, const body *P, const body *Q, vec3 *n, vec3 *at);
+
+/* True when m, touching support s (r the closest result of m against s, normal
+ * from s to m), stands on a face of s with its centre of mass, projected along the
+ * normal, strictly inside the region they touch on (for a ball: the face): a
+ * frictionless face can then hold it without turning it.  *face is s's face (-1
+ * when s touches with no face). */
+bool contact_holds(const body *m, const body *s, const closest_result *r, double tol, int *face);
+
+/* Turns m about its centre of mass so that its face nearest s's face `face` lies
+ * flat on it, and moves it along that face's normal to `gap` from its plane:
+ * false (and m unchanged) when that face is more than max_tilt radians off.  w
+ * is recomputed from L. */
+bool contact_level(body *m, const body *s, int face, double max_tilt, double gap);
 
 /* Velocity of the material point of b at world point p. */
 vec3 contact_point_velocity(const body *b, vec3 p);
 
 /* Closing speed of a and b at p along n (from b to a): > 0 when approaching. */
 double contact_closing_speed(const body *a, const body *b, vec3 p, vec3 n);
-
-/* Applies the impulse that answers the collision of a and b at p with normal n
- * (from b to a) and restitution e, when they approach.  held = 1 holds a, 2 holds
- * b (0 neither): the held object does not turn and has infinite mass along the unit
- * vector s, the normal of what holds it, so that it moves across s only; with s
- * zero it does not move at all.  Returns what was done (impulse 0 when they do not
- * approach). */
-contact contact_respond(body *a, body *b, vec3 p, vec3 n, double e, int held, vec3 s);
 
 #endif

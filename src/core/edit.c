@@ -1,6 +1,7 @@
 /* edit.c: the changes a command makes to the world (edit.h). */
 #include "edit.h"
 
+#include <math.h>
 #include <stdio.h>
 
 #include "rest.h"
@@ -16,31 +17,90 @@ static int rebuild(body *b, shape_params old, char *err, size_t errlen)
     return 0;
 }
 
+/* Object i and every dynamic object pressed together with it move again, and find
+ * their modes anew when time next runs; when `moved`, what i touches is found anew
+ * too (its lasting contacts end).  (A scan of the pairs: the schedule's lists of
+ * them may be out of date while commands run.) */
+static void disturb(world *w, int i, bool moved)
+{
+    bool grew = true;
+    w->bodies[i]->woken = true;
+    while (grew) {
+        grew = false;
+        for (long k = 0; k < w->pairs.n; k++) {
+            pair *p = &w->pairs.p[k];
+            if (!p->touching || p->a >= w->n || p->b >= w->n) continue;
+            body *a = w->bodies[p->a], *b = w->bodies[p->b];
+            if (a->woken != b->woken) {
+                body *o = a->woken ? b : a;
+                if (!body_is_static(o)) {
+                    o->woken = true;
+                    grew = true;
+                }
+            }
+        }
+    }
+    for (int k = 0; k < w->n; k++) {
+        body *b = w->bodies[k];
+        if (b->woken && b->state == STATE_RESTING) rest_wake(w, k);
+    }
+    if (!moved) return;
+    w->bodies[i]->moved = true;
+    for (long k = 0; k < w->pairs.n; k++) {
+        pair *p = &w->pairs.p[k];
+        if (p->a == i || p->b == i) p->touching = false;
+    }
+}
+
+/* v, or v scaled down to length max when it is longer: for any finite v, since the
+ * length is taken of v over its largest component (no square overflows).  A
+ * length within rounding of max (a speed the simulation limited, saved and read
+ * back) is left to the last bit. */
+static vec3 limit_length(vec3 v, double max)
+{
+    double m = fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z)));
+    if (!(m > 0)) return v;
+    vec3 u = v3(v.x / m, v.y / m, v.z / m);
+    double l = v3_len(u); /* 1 to sqrt(3) */
+    if (m <= max / l * (1 + 1e-12)) return v;
+    return v3_scale(u, max / l);
+}
+
 int edit_property(world *w, int i, size_t off, const double *num, char *err, size_t errlen)
 {
     body *b = w->bodies[i];
     vec3 v = v3(num[0], num[1], num[2]);
     shape_params old = b->sp;
-    /* anything but the look or the sound of an object wakes it */
-    if (off != offsetof(body, color) && off != offsetof(body, volume)) {
-        if (b->state == STATE_RESTING) b->state = STATE_DYNAMIC;
-        b->slide = -1;
-    }
-    /* objects resting on this one lose their support's old place */
-    rest_wake_on(w, i);
+    /* the look or the sound of an object change nothing else */
     switch (off) {
-    case offsetof(body, v): b->v = v; return 0;
-    case offsetof(body, w): body_set_angular_vel(b, v); return 0;
-    case offsetof(body, elasticity): b->elasticity = num[0]; return 0;
+    case offsetof(body, color):
+        for (int k = 0; k < 3; k++) b->color[k] = (int)num[k];
+        return 0;
+    case offsetof(body, volume): b->volume = num[0]; return 0;
+    case offsetof(body, elasticity):
+        b->elasticity = num[0];
+        disturb(w, i, false);
+        return 0;
+    case offsetof(body, v):
+        b->v = limit_length(v, w->set.max_linear);
+        disturb(w, i, false);
+        return 0;
+    case offsetof(body, w):
+        body_set_angular_vel(b, limit_length(v, w->set.max_angular));
+        disturb(w, i, false);
+        return 0;
     case offsetof(body, mass):
+        disturb(w, i, true);
         body_set_mass(b, num[0]);
         w->pairs.dirty = true; /* static objects have no pairs among themselves */
         return 0;
-    case offsetof(body, volume): b->volume = num[0]; return 0;
-    case offsetof(body, x): b->x = v; return 0;
-    case offsetof(body, rot_axis): body_set_rotation(b, v, num[3]); return 0;
-    case offsetof(body, color):
-        for (int k = 0; k < 3; k++) b->color[k] = (int)num[k];
+    case offsetof(body, x):
+        disturb(w, i, true);
+        b->x = v;
+        return 0;
+    case offsetof(body, rot_axis):
+        disturb(w, i, true);
+        body_set_rotation(b, v, num[3]);
         return 0;
     case offsetof(body, sp.radius): b->sp.radius = num[0]; break;
     case offsetof(body, sp.size): b->sp.size = v; break;
@@ -53,13 +113,31 @@ int edit_property(world *w, int i, size_t off, const double *num, char *err, siz
     case offsetof(body, sp.vres): b->sp.vres = (int)num[0]; break;
     default: snprintf(err, errlen, "no property at offset %zu", off); return -1;
     }
-    return rebuild(b, old, err, errlen);
+    if (rebuild(b, old, err, errlen) != 0) return -1;
+    disturb(w, i, true);
+    return 0;
 }
 
 void edit_force(world *w, dir_amount force)
 {
-    rest_wake_all(w); /* rest depends on the force */
+    /* rest and slides depend on the force */
+    for (int i = 0; i < w->n; i++) {
+        if (body_is_static(w->bodies[i])) continue;
+        w->bodies[i]->woken = true;
+        if (w->bodies[i]->state == STATE_RESTING) rest_wake(w, i);
+    }
     w->set.force = force;
+}
+
+void edit_delete(world *w, int i)
+{
+    for (long k = 0; k < w->pairs.n; k++) {
+        pair *p = &w->pairs.p[k];
+        if (!p->touching || (p->a != i && p->b != i)) continue;
+        int o = p->a == i ? p->b : p->a;
+        if (!body_is_static(w->bodies[o])) disturb(w, o, false);
+    }
+    world_delete(w, i);
 }
 
 void edit_done(world *w)

@@ -22,14 +22,19 @@
  *   elasticity, volume, color, and the shape's parameters sp.radius, sp.size,
  *   sp.exp1, sp.exp2, sp.a1, sp.a2, sp.a3, sp.ures, sp.vres (the shape is built
  *   again).
- * Anything but the colour or the loudness wakes the body and ends its slide; the
- * objects resting on it wake.  Returns 0, or -1 with a message in err when the
+ * Anything but the colour or the loudness wakes the body and everything pressed
+ * together with it, whose modes are found anew when time runs; placing, turning,
+ * reshaping or a new mass also end its lasting contacts, which are found anew
+ * (objects placed within SIM_TOUCH of each other touch).  Returns 0, or -1 with a message in err when the
  * shape cannot be built (the body keeps its old shape) or off names no property. */
 int edit_property(world *w, int i, size_t off, const double *num, char *err, size_t errlen);
 
 /* Sets the global force (a direction and a magnitude) and wakes every resting
  * object: rest depends on the force. */
 void edit_force(world *w, dir_amount force);
+
+/* Removes object i; what pressed on it moves again. */
+void edit_delete(world *w, int i);
 
 /* Something was changed from outside the simulation (a statement ran): the schedule
  * starts afresh, every pair due, and the simulation copies its bodies again. */

@@ -1,11 +1,16 @@
-/* flight.h: free flight of one body, and how its points move (the integrator).
+/* flight.h: how one body moves between events: its flight, evaluated at any time.
  *
- * A body flies under a constant acceleration (the global force as it feels it):
- * its centre of mass exactly, x += v h + a h^2 / 2, v += a h, with the step held
- * to max_linear; its rotation keeps its angular momentum L exactly (flight.c says
- * how), then the speed limits.  A body that slides on a support turning about the
- * support's normal only (as settling leaves it) keeps turning so.  Nothing here
- * knows the world: the caller gives the acceleration.
+ * A flight starts at time t0 from a body's state and gives the state at any later
+ * time exactly, with nothing accumulated in between (design.md, "Dynamics"):
+ *  - FLIGHT_FREE: the centre of mass flies its parabola under the force, x = c0 +
+ *    v0 t + a t^2 / 2, and the body turns freely with its angular momentum L kept,
+ *    by the exact torque-free motion (spin.h); energy and L are kept to rounding.
+ *  - FLIGHT_SLIDE: on a face of a still support with normal n, the centre flies
+ *    its parabola under the force less its part along -n, and the body turns about
+ *    n only, at a constant rate (what a frictionless face leaves free).
+ *  - FLIGHT_STILL: the body stays where it is (resting, static).
+ * No speed is limited in flight: max_linear and max_angular apply where a command
+ * or a collision sets a speed (edit.c, sim.c).
  */
 #ifndef VROC_FLIGHT_H
 #define VROC_FLIGHT_H
@@ -13,31 +18,54 @@
 #include <stdbool.h>
 
 #include "body.h"
+#include "spin.h"
 #include "vmath.h"
 
-/* Free flight of dynamic body b over h seconds under acceleration a, then the
- * speed limits. */
-void flight_fly(body *b, double h, vec3 a, double max_linear, double max_angular);
+typedef enum { FLIGHT_STILL, FLIGHT_FREE, FLIGHT_SLIDE } flight_kind;
 
-/* True when b slides on a support turning about the support's normal only (or
- * not at all off it): then its flight keeps it so. */
-bool flight_spins_on_support(const body *b);
+typedef struct {
+    flight_kind kind;
+    double t0;        /* when it starts */
+    vec3 c0, v0, a;   /* the centre of mass then, its velocity, its acceleration */
+    quat q0;          /* the orientation then (body to world) */
+    vec3 L;           /* the angular momentum (world axes): constant in FREE */
+    bool spins;       /* FREE: L is not zero, spin holds the motion */
+    free_spin spin;
+    vec3 n;           /* SLIDE: the support's normal, towards the body, */
+    double wn;        /*   and the rate it turns about it */
+    double rate;      /* no point of the body turns faster than rate (rad/s) */
+    long id;          /* a number no other flight of this world has */
+} flight;
 
-/* How a body moves at one instant of free flight, for the velocity and the
- * acceleration of its points. */
+/* Starts flight f of kind at time t0 from body b's state (x, q, v, L; b's w is
+ * taken as consistent with L): a the acceleration of the centre of mass (FREE,
+ * SLIDE), n the support's normal (SLIDE: b turns about n only, at w . n). */
+void flight_start(flight *f, const body *b, flight_kind kind, double t0, vec3 a, vec3 n, long id);
+
+/* Writes the state at time t (t >= t0) into out, a copy of the flight's body:
+ * x, q, v, L and w. */
+void flight_at(const flight *f, const body *shape_of, double t, body *out);
+
+/* The centre of mass's velocity and acceleration at time t. */
+static inline vec3 flight_velocity(const flight *f, double t)
+{
+    return f->kind == FLIGHT_STILL ? v3(0, 0, 0) : v3_mad(f->v0, f->a, t - f->t0);
+}
+
+/* How body b moves at one instant, for the velocity and the acceleration of its
+ * points. */
 typedef struct {
     vec3 c, v, w, a, dw; /* centre of mass, its velocity, spin, acceleration; dw/dt */
 } flight_motion;
 
-/* Body b's motion now, a the acceleration it flies under: nothing for a static
- * or resting body; velocity and spin only for one that does not fly. */
-static inline flight_motion flight_motion_of(const body *b, vec3 a)
+/* Body b's motion at the state given (b as flight_at wrote it), a its centre's
+ * acceleration: nothing for a still body. */
+static inline flight_motion flight_motion_of(const body *b, bool moving, vec3 a)
 {
     flight_motion m = {body_com(b), v3(0, 0, 0), v3(0, 0, 0), v3(0, 0, 0), v3(0, 0, 0)};
-    if (body_is_static(b) || b->state == STATE_RESTING) return m;
+    if (!moving) return m;
     m.v = b->v;
     m.w = b->w;
-    if (b->state != STATE_DYNAMIC) return m;
     m.a = a;
     if (v3_len2(b->w) != 0) m.dw = v3_neg(body_inertia_inv_mulv(b, v3_cross(b->w, b->L)));
     return m;

@@ -1,7 +1,7 @@
 /* force.h: the global force (Table A.5's `force`, `gravity`) as each body feels it.
  *
  * The force is a uniform acceleration on every dynamic body.  A body sliding on a
- * support (rest.h) feels it less the part that presses it onto the support.
+ * face of a support (rest.h) feels it less the part that presses it onto the face.
  */
 #ifndef VROC_FORCE_H
 #define VROC_FORCE_H
@@ -24,7 +24,7 @@ static inline vec3 force_accel(dir_amount f)
 static inline vec3 force_on(dir_amount f, const body *b)
 {
     vec3 a = force_accel(f);
-    if (b->slide < 0) return a;
+    if (b->mode != MODE_SLIDE) return a;
     double an = v3_dot(a, b->slide_n);
     return an < 0 ? v3_mad(a, b->slide_n, -an) : a;
 }

@@ -41,6 +41,11 @@ long pair_index(const world *w, int a, int b)
     return lo < w->pairs.n && w->pairs.p[lo].a == a && w->pairs.p[lo].b == b ? lo : -1;
 }
 
+/* The pairs in lasting contact, by their objects (stable across a rebuild). */
+typedef struct {
+    const body *a, *b;
+} kept;
+
 int pairs_update(world *w)
 {
     if (!w->pairs.dirty) return 0;
@@ -49,53 +54,56 @@ int pairs_update(world *w)
         if (body_is_static(w->bodies[i])) st++;
         else d++;
     }
-    long n = d * (d - 1) / 2 + d * st;
+    long n = d * (d - 1) / 2 + d * st, nkeep = 0;
+    for (long i = 0; i < w->pairs.n; i++) nkeep += w->pairs.p[i].touching;
+    kept *keep = malloc((size_t)(nkeep ? nkeep : 1) * sizeof *keep);
+    if (!keep) return -1;
+    nkeep = 0;
+    for (long i = 0; i < w->pairs.n; i++) {
+        const pair *p = &w->pairs.p[i];
+        /* (a deleted object's pairs are gone: world_delete ended them) */
+        if (p->touching && p->a < w->n && p->b < w->n)
+            keep[nkeep++] = (kept){w->bodies[p->a], w->bodies[p->b]};
+    }
     if (n > w->pairs.cap) {
         pair *np = realloc(w->pairs.p, (size_t)n * sizeof *np);
         if (np) w->pairs.p = np;
         pair_hit *nh = realloc(w->pairs.hits, (size_t)n * sizeof *nh);
         if (nh) w->pairs.hits = nh;
-        if (!np || !nh) return -1;
+        if (!np || !nh) {
+            free(keep);
+            return -1;
+        }
         w->pairs.cap = n;
     }
     long k = 0;
     for (int i = 0; i < w->n; i++) {
         for (int j = i + 1; j < w->n; j++) {
             if (body_is_static(w->bodies[i]) && body_is_static(w->bodies[j])) continue;
-            w->pairs.hits[k].t = NAN;
-            w->pairs.p[k++] = (pair){.a = i, .b = j, .toi_a = -1, .toi_b = -1};
+            w->pairs.p[k++] = (pair){.a = i, .b = j, .toi_fa = -1, .toi_fb = -1, .toi = HUGE_VAL};
         }
     }
     assert(k == n); /* every dynamic-dynamic and dynamic-static pair, once */
     w->pairs.n = k;
     w->pairs.dirty = false;
     w->sched_dirty = true; /* the heap holds the old pairs */
-    /* an object added or deleted elsewhere leaves a slide on a still support as
-     * it was: its pair is found again (the pairs are in the order of a, then b).
-     * A slide on a support that moves itself ends, as the schedule starts afresh. */
-    for (int i = 0; i < w->n; i++) {
-        body *m = w->bodies[i];
-        if (m->slide < 0) continue;
-        long at = -1;
-        if (m->state == STATE_DYNAMIC && w->bodies[m->slide]->state != STATE_DYNAMIC)
-            at = pair_index(w, i, m->slide);
-        m->slide = at >= 0 ? m->slide : -1;
-        m->slide_pair = at;
+    /* the lasting contacts, found again among the new pairs */
+    for (long i = 0; i < nkeep; i++) {
+        int a = -1, b = -1;
+        for (int j = 0; j < w->n; j++) {
+            if (w->bodies[j] == keep[i].a) a = j;
+            if (w->bodies[j] == keep[i].b) b = j;
+        }
+        long at = a >= 0 && b >= 0 ? pair_index(w, a, b) : -1;
+        if (at >= 0) w->pairs.p[at].touching = true;
     }
+    free(keep);
     return 0;
 }
 
 closest_result pair_query(world *w, pair *p, const body *a, const body *b)
 {
     closest_result r = body_distance(a, b, &p->cache);
-    w->st.pair_checks++;
-    if (r.restarted) w->st.restarts++;
-    return r;
-}
-
-closest_result pair_query_hit(world *w, pair *p, const body *a, const body *b)
-{
-    closest_result r = body_distance(a, b, &p->hit);
     w->st.pair_checks++;
     if (r.restarted) w->st.restarts++;
     return r;

@@ -1,22 +1,23 @@
-/* sim.c: frames, internal steps and collisions in time (thesis 3.2.3, 3.3, 3.4.2;
+/* sim.c: frames, internal steps and their events (thesis 3.2.3, 3.3, 3.4.2;
  * design.md, "Dynamics").
  *
- * An internal step (thesis 3.4.2, steps 3 to 5): save every moving object's
- * state, fly the whole step, check the due pairs.  If some pair touches or
- * penetrates, each such pair is traced back in time to its first contact (toi.h);
- * the earliest is answered at its instant (its two objects flown back there), and
- * the rest of the step starts over from there.  So collisions are answered in the
- * order they happen, simultaneous ones one after another.  Each object flies from
- * its own saved state (step.h), which only a collision that changes it renews:
- * going back in time leaves the others' flights, and their pairs' predictions,
- * exact; and a pair's first contact depends on the two flights alone, so the
- * schedule (schedule.h) cannot change it.
- *
- * The answer (collide): the impulse (contact.h), then the contact state (rest.h):
- * a collision that leaves an object barely bouncing on a support below it puts it
- * at rest, or sliding (settle); slow collisions under gravity part at the
- * collision envelope's speed, and a stack passes blows from above down to its
- * support.  Each collision answered goes into the frame's events.
+ * An internal step starts every moving object's flight afresh from where it is
+ * (flight.h) and then answers the step's events in the order they happen, each at
+ * its own instant:
+ *  - a pair's first contact (toi.h: conservative advancement, so nothing is
+ *    passed): the impulses of the colliding points and of every lasting contact of
+ *    the objects pressed together with them, answered together (impulse.h), then
+ *    the modes of all of them (rest.h);
+ *  - a slide whose object's centre of mass leaves the face (rest.h): the object
+ *    tips or pivots over the edge, or leaves it, as a cluster decides;
+ *  - the end of a cluster's step (cluster.h).
+ * Each event changes the flights of the objects it touches from its instant on;
+ * every other object flies on as it did, and what was found of its pairs holds.
+ * Events at the same instant are answered in a fixed order (pairs before objects,
+ * each by index), and which pairs are searched (the heap's due ones, or all of
+ * them) changes no answer: a search depends on its pair's flights alone.  The
+ * frame ends with the thesis's rule of rest (rest_frame_end).  Each collision
+ * answered goes into the frame's events.
  */
 #include "sim.h"
 
@@ -26,7 +27,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cluster.h"
 #include "contact.h"
+#include "impulse.h"
 #include "pairs.h"
 #include "rest.h"
 #include "schedule.h"
@@ -34,440 +37,432 @@
 #include "toi.h"
 #include "tolerance.h"
 
-/* A pair needs checking only when one of its objects moves. */
-static bool pair_moves(const world *w, const pair *p)
+/* ------------------------------------------------------------ objects and pairs */
+
+/* The contact distance of objects a and b. */
+static double touch_of(const body *a, const body *b) { return toi_touch(a, b); }
+
+/* Object i's motion at time t (its state o then), for the bounds. */
+static sched_move move_at(const world *w, int i, const body *o)
 {
-    return w->bodies[p->a]->state == STATE_DYNAMIC || w->bodies[p->b]->state == STATE_DYNAMIC;
+    const flight *f = &w->step.fl[i];
+    sched_move m = {.moves = step_moves(w, i) && f->kind != FLIGHT_STILL};
+    if (!m.moves) return m;
+    m.c = body_com(o);
+    m.v = o->v;
+    m.a = f->a;
+    m.rate = f->rate;
+    return m;
 }
 
-long sim_penetrations(world *w, sim_report report, void *ctx)
+/* True when pair p needs searching: one of its objects moves, and they are not
+ * pressed together. */
+static bool searched(const world *w, const pair *p)
 {
-    if (pairs_update(w) != 0) return -1;
-    long count = 0;
-    for (long i = 0; i < w->pairs.n; i++) {
-        pair *p = &w->pairs.p[i];
-        const body *a = w->bodies[p->a], *b = w->bodies[p->b];
-        closest_result r = pair_query(w, p, a, b);
-        if (r.status == CLOSEST_PENETRATING && r.distance < -SIM_SEPARATION) {
-            count++;
-            if (report) report(ctx, a, b, -r.distance);
+    return !p->touching && (step_moves(w, p->a) || step_moves(w, p->b));
+}
+
+/* Pair k's cheap bound from time t, as its objects fly now. */
+static double bound_from(world *w, long k, double t)
+{
+    pair *p = &w->pairs.p[k];
+    if (!searched(w, p)) return HUGE_VAL;
+    const body *a = step_flown(w, p->a, t, 1), *b = step_flown(w, p->b, t, 1);
+    sched_move ma = move_at(w, p->a, a), mb = move_at(w, p->b, b);
+    double dt = sched_sphere_time(a, &ma, b, &mb);
+    return dt == HUGE_VAL ? dt : t + dt;
+}
+
+/* Object i's flight changed at time t: what was found of its pairs holds no
+ * more; each gets its cheap bound. */
+static void reschedule(world *w, int i, double t)
+{
+    for (long j = w->sched.obj_first[i]; j < w->sched.obj_first[i + 1]; j++) {
+        long k = w->sched.obj_pairs[j];
+        w->pairs.p[k].toi_fa = w->pairs.p[k].toi_fb = -1;
+        sched_set(w, k, bound_from(w, k, t));
+    }
+}
+
+/* Object i's own next event. */
+static void set_event(world *w, int i, double t)
+{
+    w->step.event[i] = t;
+    sched_set(w, w->pairs.n + i, t);
+}
+
+/* Object i flies on from time t as it is now (a slide: until it leaves its face). */
+static void restart(world *w, int i, double t)
+{
+    step_start(w, i, t);
+    const body *b = w->bodies[i];
+    double ev = HUGE_VAL;
+    if (step_moves(w, i) && b->mode == MODE_SLIDE) ev = rest_slide_exit(w, i, t);
+    set_event(w, i, ev);
+    reschedule(w, i, t);
+}
+
+/* The clusters among the n objects of list (their states at time t) start a step:
+ * the kicks, then their flights until the step's end. */
+static void begin_clusters(world *w, const int *list, int n, double t, double t_end)
+{
+    int *k_list = malloc((size_t)w->n * sizeof *k_list);
+    if (!k_list) return;
+    for (int k = 0; k < n; k++) {
+        int i = list[k];
+        const body *b = w->bodies[i];
+        /* (a cluster begun already has its step's end as its objects' event) */
+        if (b->state != STATE_DYNAMIC || b->mode != MODE_GENERAL || w->step.event[i] != HUGE_VAL)
+            continue;
+        int m = rest_cluster(w, i, k_list);
+        double h = cluster_kick(w, k_list, m, t, t_end);
+        for (int j = 0; j < m; j++) {
+            restart(w, k_list[j], t);
+            set_event(w, k_list[j], t + h);
         }
     }
-    return count;
+    free(k_list);
 }
 
-/* The acceleration of body b, zero when it does not move. */
-static vec3 still_accel(const world *w, const body *b)
+/* The speed limits, where a collision set a speed: |v| <= max_linear, |w| <=
+ * max_angular (L scaled down). */
+static bool limit_speeds(world *w, body *b)
 {
-    return b->state == STATE_DYNAMIC ? world_body_accel(w, b) : v3(0, 0, 0);
-}
-
-/* Moves the dynamic objects of the pair apart along n until they are sep apart
- * (they are gap apart now), the lighter one more, so that their centre of mass
- * stays; when both move, their spins take back the angular momentum the shift
- * adds (s n x (va - vb)), so that it stays too. */
-static void separate(body *a, body *b, vec3 n, double gap, double sep)
-{
-    double need = sep - gap;
-    if (need <= 0) return;
-    double ia = a->state == STATE_DYNAMIC ? a->inv_mass : 0;
-    double ib = b->state == STATE_DYNAMIC ? b->inv_mass : 0;
-    if (ia + ib == 0) return;
-    double s = need / (ia + ib);
-    a->x = v3_mad(a->x, n, s * ia);
-    b->x = v3_mad(b->x, n, -s * ib);
-    if (ia > 0 && ib > 0) {
-        vec3 half = v3_scale(v3_cross(n, v3_sub(a->v, b->v)), 0.5 * s);
-        a->L = v3_sub(a->L, half);
-        b->L = v3_sub(b->L, half);
-        body_update_w(a);
+    double vl = v3_len(b->v), wl = v3_len(b->w);
+    bool cut = false;
+    if (vl > w->set.max_linear) {
+        b->v = v3_scale(b->v, w->set.max_linear / vl);
+        cut = true;
+    }
+    if (wl > w->set.max_angular) {
+        b->L = v3_scale(b->L, w->set.max_angular / wl);
         body_update_w(b);
+        cut = true;
     }
+    return cut;
 }
 
-/* Answers the collision of pair p now: the impulse, the separation, the log; and
- * the thesis's contact state for an object that barely bounces off a support below
- * it. */
-static void collide(world *w, pair *p)
+/* The speed limits on the n objects of list; true when one was cut. */
+static bool limit_all(world *w, const int *list, int n)
 {
-    body *a = w->bodies[p->a], *b = w->bodies[p->b];
-    /* where the time of impact stopped, when that is now: the same flights to the
-     * same instant, so the same states */
-    const pair_hit *h = &w->pairs.hits[p - w->pairs.p];
-    closest_result r;
-    if (h->t == w->time && p->toi_a == w->step.snap_id[p->a] && p->toi_b == w->step.snap_id[p->b]) {
-        r = h->r;
-        p->hit = h->cache;
-    } else {
-        r = pair_query_hit(w, p, a, b);
+    bool cut = false;
+    for (int j = 0; j < n; j++) cut = limit_speeds(w, w->bodies[list[j]]) || cut;
+    return cut;
+}
+
+/* ------------------------------------------------------------ answering */
+
+/* The rows of pair p's contact points (its objects in the states of w->bodies, r
+ * their closest result, e the restitution of every row) appended to rows; the
+ * count appended. */
+static int rows_of(world *w, const pair *p, const closest_result *r, double e, impulse_row *rows,
+                   int room)
+{
+    const body *A = w->bodies[p->a], *B = w->bodies[p->b];
+    cpoint cp[16];
+    double scale = A->shape.r_out + B->shape.r_out;
+    int nc = contact_cpoints(A, B, r, SIM_CONTACT_TOL * scale, cp, 16), n = 0;
+    for (int c = 0; c < nc && n < room; c++) {
+        impulse_row *row = &rows[n++];
+        row->p = cp[c].p == 0 ? p->a : p->b;
+        row->q = cp[c].p == 0 ? p->b : p->a;
+        row->e = e;
+        cpoint_eval(&cp[c], w->bodies[row->p], w->bodies[row->q], &row->n, &row->at);
     }
-    if (r.status == CLOSEST_INVALID) return;
-    double scale = a->shape.r_out + b->shape.r_out;
-    double tol = SIM_CONTACT_TOL * scale + d_max(0, -r.distance);
-    vec3 pt = contact_point(a, b, &r, tol);
-    /* the centre of the region moves apart, but a corner of it closes (a box
-     * turning as it lands on an edge): that corner strikes, or nothing would stop
-     * it */
-    if (contact_closing_speed(a, b, pt, r.normal) <= 0) pt = contact_closing_corner(a, b, &r, tol, pt);
-    double e = d_min(a->elasticity, b->elasticity);
-    vec3 g = world_accel(w);
-    vec3 up = v3_len2(g) > 0 ? v3_neg(v3_norm(g)) : v3(0, 0, 0);
-    /* a slow collision under gravity (the collision envelope of Mirtich and
-     * Canny): the pair leaves at least fast enough to rise SIM_HOP against the
-     * force that presses them together, or against gravity, so that an object
-     * pivoting, rocking or turning against another collides every few
-     * milliseconds, not every few microseconds */
-    double press = v3_dot(v3_sub(still_accel(w, b), still_accel(w, a)), r.normal);
-    double cs = contact_closing_speed(a, b, pt, r.normal);
-    double leave = sqrt(2 * d_max(press, v3_len(g)) * SIM_HOP);
-    bool slow = cs > 0 && cs < SIM_REST_SPEED;
-    if (slow && e * cs < leave) e = leave / cs;
-    /* in a stack, the object underneath passes a blow from above on to what holds
-     * it (shock propagation): it moves only along its support, if at all */
-    int held = 0;
-    vec3 s = v3(0, 0, 0);
-    if (press > 0 && v3_dot(r.normal, up) > SIM_SUPPORT_COS && rest_holds(b, r.normal, &s)) held = 2;
-    if (press > 0 && v3_dot(r.normal, up) < -SIM_SUPPORT_COS && rest_holds(a, v3_neg(r.normal), &s)) held = 1;
-    /* a sandwich: one of them pressed back against a still object it just struck */
-    if (!held && rest_pinned(w, p->a, r.normal, &s)) held = 1;
-    if (!held && rest_pinned(w, p->b, v3_neg(r.normal), &s)) held = 2;
-    /* a resting object hit by a moving one takes part as a dynamic one */
-    if (a->state == STATE_RESTING && b->state == STATE_DYNAMIC && held != 1) rest_wake(w, p->a);
-    if (b->state == STATE_RESTING && a->state == STATE_DYNAMIC && held != 2) rest_wake(w, p->b);
-    contact c = contact_respond(a, b, pt, r.normal, e, held, s);
-    if (c.impulse > 0) {
+    return n;
+}
+
+/* Answers pair k's contact at time t: the impulses of its points and of every
+ * lasting contact of the objects pressed together with them, answered together;
+ * then the modes and flights of all of them. */
+static void answer_contact(world *w, long k, double t, double t_end)
+{
+    pair *p = &w->pairs.p[k];
+    int seeds[2], ns = 0, *list = w->step.list;
+    if (!body_is_static(w->bodies[p->a])) seeds[ns++] = p->a;
+    if (!body_is_static(w->bodies[p->b])) seeds[ns++] = p->b;
+    int n = rest_component(w, seeds, ns, list);
+    int *mine = malloc((size_t)(n > 0 ? n : 1) * sizeof *mine);
+    if (!mine) return;
+    memcpy(mine, list, (size_t)n * sizeof *mine);
+    for (int j = 0; j < n; j++) step_sync(w, mine[j], t);
+    w->time = t;
+    /* the rows: the contact's own, then the lasting contacts' */
+    impulse_row rows[IMPULSE_MAX_ROWS];
+    const body *A = w->bodies[p->a], *B = w->bodies[p->b];
+    double e = d_min(A->elasticity, B->elasticity);
+    int own = rows_of(w, p, &w->pairs.hits[k].r, e, rows, IMPULSE_MAX_ROWS), nr = own;
+    bool *mobile = w->step.mark;
+    for (int j = 0; j < n; j++) mobile[mine[j]] = true;
+    for (int j = 0; j < n; j++) {
+        int i = mine[j];
+        for (long q = w->sched.obj_first[i]; q < w->sched.obj_first[i + 1]; q++) {
+            pair *o = &w->pairs.p[w->sched.obj_pairs[q]];
+            int other = w->sched.obj_other[q];
+            if (!o->touching || o == p || (mobile[other] && other < i)) continue;
+            closest_result r = pair_query(w, o, w->bodies[o->a], w->bodies[o->b]);
+            nr += rows_of(w, o, &r, 0, rows + nr, IMPULSE_MAX_ROWS - nr);
+        }
+    }
+    double u[IMPULSE_MAX_ROWS], lambda[IMPULSE_MAX_ROWS], closing = 0;
+    double scale = 1 + A->shape.r_out + B->shape.r_out;
+    for (int r = 0; r < nr; r++) {
+        u[r] = impulse_speed(&rows[r], w->step.now);
+        if (r < own) closing = d_max(closing, -u[r]);
+        /* a rebound too slow to see is no rebound: they stay in contact */
+        if (rows[r].e < 1 && rows[r].e * -u[r] < SIM_BOUNCE_SPEED) rows[r].e = 0;
+    }
+    bool solved = impulse_solve(rows, nr, w->step.now, mobile, u, lambda, w->step.lcp) == 0;
+    if (!solved && own < nr) /* too many: the contact's own points alone */
+        solved = impulse_solve(rows, own, w->step.now, mobile, u, lambda, w->step.lcp) == 0;
+    if (solved && limit_all(w, mine, n)) {
+        /* the limits must not turn a point back into its contact: those that would
+         * approach again stop there */
+        double u2[IMPULSE_MAX_ROWS], l2[IMPULSE_MAX_ROWS];
+        for (int r = 0; r < nr; r++) {
+            rows[r].e = 0;
+            u2[r] = d_min(0, impulse_speed(&rows[r], w->step.now));
+        }
+        if (impulse_solve(rows, nr, w->step.now, mobile, u2, l2, w->step.lcp) == 0)
+            for (int r = 0; r < nr; r++) lambda[r] += l2[r];
+    }
+    for (int j = 0; j < n; j++) mobile[mine[j]] = false;
+    if (!solved) w->st.restarts++;
+    /* the event: the contact's own impulses */
+    double j_sum = 0;
+    vec3 at = v3(0, 0, 0);
+    for (int r = 0; r < own && solved; r++) {
+        j_sum += lambda[r];
+        at = v3_mad(at, rows[r].at, lambda[r]);
+    }
+    if (j_sum > 0) {
         w->st.collisions++;
-        world_event(w, &(sim_event){w->time, p->a, p->b, c.point, c.normal, c.impulse, c.speed});
-        /* what struck a still object, for a sandwich */
-        if (a->state == STATE_DYNAMIC && b->state != STATE_DYNAMIC) rest_strike(a, p->b, r.normal, w->time);
-        if (b->state == STATE_DYNAMIC && a->state != STATE_DYNAMIC) rest_strike(b, p->a, v3_neg(r.normal), w->time);
+        vec3 nab = w->pairs.hits[k].r.normal; /* from b to a */
+        world_event(w, &(sim_event){t, p->a, p->b, v3_scale(at, 1 / j_sum), nab, j_sum, closing});
     }
-    /* the contact state: an object that barely bounces off a support under it rests
-     * on it, or slides on it when it still moves along it */
-    /* the pair is set apart, so that the step goes on and a later contact of
-     * theirs (a rocking object's other corner) is found from a gap, not from
-     * touching */
-    bool apart = r.distance < SIM_SEPARATION;
-    if (v3_len2(g) == 0) {
-        if (apart) separate(a, b, r.normal, r.distance, SIM_SEPARATION);
+    /* they stay in contact where a point of theirs no longer moves apart */
+    p->hit = w->pairs.hits[k].cache;
+    for (int r = 0; r < own; r++) {
+        /* (a lossy contact that opens too slowly to see a rebound: none) */
+        double open = rows[r].e < 1 || e < 1 ? SIM_BOUNCE_SPEED : 1e3 * SIM_SPEED_ROUND * scale;
+        if (impulse_speed(&rows[r], w->step.now) <= open) p->touching = true;
+    }
+    rest_classify(w, mine, n);
+    for (int j = 0; j < n; j++) restart(w, mine[j], t);
+    begin_clusters(w, mine, n, t, t_end);
+    free(mine);
+}
+
+/* Answers object i's own event at time t: a slide leaving its face, or the end
+ * of its cluster's step. */
+static void answer_object(world *w, int i, double t, double t_end)
+{
+    int *list = w->step.list;
+    body *b = w->bodies[i];
+    w->time = t;
+    if (b->mode == MODE_SLIDE) {
+        /* over the edge: the cluster's steps decide what it does there */
+        step_sync(w, i, t);
+        b->mode = MODE_GENERAL;
+        b->slide_on = -1;
+        restart(w, i, t);
+        begin_clusters(w, &i, 1, t, t_end);
         return;
     }
-    bool settled = false;
-    for (int k = 0; k < 2; k++) {
-        body *m = k == 0 ? a : b, *sup = k == 0 ? b : a;
-        int si = k == 0 ? p->b : p->a;
-        /* from the support to m */
-        bool face;
-        vec3 n = rest_support_normal(sup, k == 0 ? r.fb : r.fa, k == 0 ? r.normal : v3_neg(r.normal),
-                                     &face);
-        /* a support: a static or resting object, or one that slides itself */
-        if (m->state != STATE_DYNAMIC || (sup->state == STATE_DYNAMIC && sup->slide < 0)) continue;
-        double vn = v3_dot(m->v, n);
-        if (v3_dot(n, up) < SIM_SUPPORT_COS || vn > SIM_REST_SPEED) continue;
-        int how = rest_settle(w, k == 0 ? p->a : p->b, si, n, face, k == 0 ? r.pb : r.pa, p,
-                              v3_len(g), fmin(a->elasticity, b->elasticity));
-        if (how == SETTLE_LAID) return; /* placed apart already */
-        if (how == SETTLE_STANDS) settled = true;
-    }
-    if (apart || settled) separate(a, b, r.normal, r.distance, SIM_SEPARATION);
+    int n = rest_cluster(w, i, list);
+    int *mine = malloc((size_t)(n > 0 ? n : 1) * sizeof *mine);
+    if (!mine) return;
+    memcpy(mine, list, (size_t)n * sizeof *mine);
+    for (int j = 0; j < n; j++) step_sync(w, mine[j], t);
+    cluster_settle(w, mine, n, t);
+    rest_classify(w, mine, n);
+    for (int j = 0; j < n; j++) restart(w, mine[j], t);
+    if (t < t_end) begin_clusters(w, mine, n, t, t_end);
+    free(mine);
 }
 
-/* Checks pair i at the end of the step, t_end, for the step that began at now:
- * returns when it is next due, a time after t_end when it is apart, or the time
- * of its first contact when it penetrates.  Keeps in *first and *when the
- * earliest contact so far. */
-static double check_pair(world *w, long i, double now, double t_end, pair **first, double *when)
+/* ------------------------------------------------------------ finding the next */
+
+typedef struct {
+    double t;
+    int kind;  /* 0 a pair's contact, 1 an object's event */
+    long index;
+} next_event;
+
+/* True when x comes before y. */
+static bool earlier(const next_event *x, const next_event *y)
 {
-    pair *p = &w->pairs.p[i];
-    p->checked = HUGE_VAL;
-    p->along = false;
-    w->sched.parked[i] = false;
-    if (!pair_moves(w, p)) return HUGE_VAL;
-    if (w->set.collision_heap && (rest_slides_clear(w, p->a, p->b) || rest_slides_clear(w, p->b, p->a)))
+    if (x->t != y->t) return x->t < y->t;
+    if (x->kind != y->kind) return x->kind < y->kind;
+    return x->index < y->index;
+}
+
+/* Pair k's first contact in [t_step, t_end], searched from the later of its
+ * flights' starts and the step's (or known from the same flights): its time, or
+ * +inf with *again the time it must be searched again. */
+static double search(world *w, long k, double t_step, double t_end, double *again)
+{
+    pair *p = &w->pairs.p[k];
+    const flight *fa = &w->step.fl[p->a], *fb = &w->step.fl[p->b];
+    *again = HUGE_VAL;
+    if (p->toi_fa == fa->id && p->toi_fb == fb->id) {
+        if (p->toi <= t_end) return p->toi;
+        *again = p->next;
         return HUGE_VAL;
-    /* found touching in this step from the same flights (flight numbers are new
-     * each step), it touches still, and its first contact is known: no query, and
-     * no far bound (it is never later than that contact, within the step) */
-    bool known = p->toi_a == w->step.snap_id[p->a] && p->toi_b == w->step.snap_id[p->b];
-    /* far apart: the bounding spheres' gap bounds the distance from below, and is
-     * enough for a prediction beyond the frame (part of the schedule: without it
-     * every pair gets its closest-feature check, as in the thesis's Table 5.3).
-     * It is measured where the objects' flights start: a bound on how far they go
-     * from there holds through a collision later in the step that turns them
-     * back, so that such a collision leaves the pair's time as it is. */
-    p->far = false;
-    if (w->set.collision_heap && !known) {
-        if (sched_boxes_apart(w, p->a, p->b)) { /* parked until a box is made again */
-            w->sched.parked[i] = true;
-            return HUGE_VAL;
-        }
-        const body *a = step_at_start(w, p->a), *b = step_at_start(w, p->b);
-        bool turn_a, turn_b;
-        double from = step_flights_start(w, p), gap = sched_bound_gap(a, b, &turn_a, &turn_b);
-        double next = gap > 0 ? from + sched_predict_far(w, a, b, gap, turn_a, turn_b) : from;
-        if (next - t_end >= w->set.time_step) {
-            p->far = true;
-            p->far_slide_a = a->slide >= 0 && a->slide_steady;
-            p->far_slide_b = b->slide >= 0 && b->slide_steady;
-            p->checked = from;
-            p->jumped_a = a->jumped;
-            p->jumped_b = b->jumped;
-            p->speed_a = v3_len(a->v) + SCHED_SLACK;
-            p->speed_b = v3_len(b->v) + SCHED_SLACK;
-            return next;
-        }
     }
-    p->checked = t_end;
-    p->speed_a = v3_len(w->bodies[p->a]->v);
-    p->speed_b = v3_len(w->bodies[p->b]->v);
-    const body *a = w->bodies[p->a], *b = w->bodies[p->b];
-    closest_result r = {.status = CLOSEST_PENETRATING};
-    if (!known) r = pair_query_apart(w, p, a, b);
-    if (r.status != CLOSEST_PENETRATING) {
-        if (!w->set.collision_heap) return HUGE_VAL; /* without the heap no time is kept */
-        /* the bound from speeds, kept for a collision that changes an object, and
-         * the one along the normal, later where they do not come on straight */
-        double next = sched_predict_kept(w, a, b, r.distance, 0, 0, &w->sched.bound[i]);
-        double along = sched_predict_along(w, a, b, r.distance, v3_neg(r.normal), r.pa, r.pb);
-        p->along = along > next;
-        return t_end + (p->along ? along : next);
+    double from = t_step;
+    if (step_moves(w, p->a)) from = d_max(from, fa->t0);
+    if (step_moves(w, p->b)) from = d_max(from, fb->t0);
+    /* no further than either flight lasts: an object's own event ends it */
+    double to = d_min(t_end, d_min(w->step.event[p->a], w->step.event[p->b]));
+    toi_output o = toi_find(w, &(toi_input){p->a, p->b, p->hit, from, d_max(from, to)});
+    w->st.pair_checks += o.queries;
+    p->toi_fa = fa->id;
+    p->toi_fb = fb->id;
+    if (o.state == TOI_HIT) {
+        p->toi = o.t;
+        w->pairs.hits[k] = (pair_hit){o.r, o.cache};
+        return o.t;
     }
-    w->sched.bound[i].dist = 0; /* touching: nothing left to keep (repredict) */
-    /* the first contact is a function of the two flights alone, searched from
-     * where the later of them starts, so that whenever the pair is found the
-     * answer is the same (and is kept while both flights are) */
-    if (!known) {
-        double from = d_max(w->step.snap_t[p->a], w->step.snap_t[p->b]);
-        toi_output o = toi_find(w, &(toi_input){p->a, p->b, p->hit, from, t_end});
-        w->st.pair_checks += o.queries;
-        if (o.state == TOI_HIT) w->pairs.hits[i] = (pair_hit){o.r, o.cache, o.t};
-        else w->pairs.hits[i].t = NAN;
-        p->toi = d_max(o.t, now);
-        p->toi_a = w->step.snap_id[p->a];
-        p->toi_b = w->step.snap_id[p->b];
-    }
-    /* the earliest; among equals the first pair, whatever order the schedule gave
-     * them in, so that the heap changes nothing */
-    if (!*first || p->toi < *when || (p->toi == *when && p < *first)) {
-        *when = p->toi;
-        *first = p;
-    }
-    return p->toi; /* checked again once the earliest is answered */
+    p->toi = HUGE_VAL;
+    *again = o.t;
+    return HUGE_VAL;
 }
 
-/* Checks the pairs due by t_end (every pair without the heap); returns the pair
- * that collides first within the step, its time in *when, or NULL.  A due pair
- * is popped and pushed back at once with its new time, unless that is within the
- * step (it touches): such pairs wait aside until the others are done. */
-static pair *check_due(world *w, double now, double t_end, double *when)
+/* The step's next event at or before t_end, or kind -1.  With the heap, only the
+ * pairs due by then are searched, and only until what is found is earlier than
+ * anything left; without it, every pair. */
+static next_event find_next(world *w, double t_step, double t_end)
 {
-    pair *first = NULL;
-    *when = t_end;
+    next_event best = {HUGE_VAL, -1, -1};
     if (!w->set.collision_heap) {
-        for (long i = 0; i < w->pairs.n; i++) check_pair(w, i, now, t_end, &first, when);
-        return first;
+        for (long k = 0; k < w->pairs.n; k++) {
+            if (!searched(w, &w->pairs.p[k])) continue;
+            double again, t = search(w, k, t_step, t_end, &again);
+            next_event e = {t, 0, k};
+            if (t <= t_end && earlier(&e, &best)) best = e;
+        }
+        for (int i = 0; i < w->n; i++) {
+            next_event e = {w->step.event[i], 1, i};
+            if (e.t <= t_end && earlier(&e, &best)) best = e;
+        }
+        return best;
     }
     long aside = 0, i;
     double next;
-    while ((i = sched_top(w, &next)) >= 0 && next <= t_end) {
-        if (i >= w->pairs.n) { /* an object's box ends: made again from its flight */
-            int k = (int)(i - w->pairs.n);
-            bool moves = w->step.snap[k].state == STATE_DYNAMIC;
-            sched_box_renew(w, k, step_at_start(w, k), moves ? w->step.snap_t[k] : next, next, t_end);
-            continue;
+    while ((i = sched_top(w, &next)) >= 0 && next <= t_end && next <= best.t) {
+        next_event e = {next, 1, i - w->pairs.n};
+        if (i < w->pairs.n) {
+            w->st.heap_pops++;
+
+            double again;
+            e = (next_event){search(w, i, t_step, t_end, &again), 0, i};
+            if (e.t > t_end) {
+                sched_set(w, i, again);
+                continue;
+            }
         }
-        w->st.heap_pops++;
-        next = check_pair(w, i, now, t_end, &first, when);
-        if (next <= t_end) {
-            w->step.due[aside] = i;
-            w->step.due_next[aside++] = next;
-            next = HUGE_VAL;
-        }
-        sched_set(w, i, next);
+        if (earlier(&e, &best)) best = e;
+        /* aside until the others are done (it stays due at its time) */
+        w->step.due[aside] = i;
+        w->step.due_next[aside++] = e.t;
+        sched_set(w, i, HUGE_VAL);
     }
     for (long k = 0; k < aside; k++) sched_set(w, w->step.due[k], w->step.due_next[k]);
-    return first;
+    return best;
 }
 
-/* True when body b, from the state given, flies h seconds without reaching the
- * speed limits, so that its centre moves by the plain v h + a h^2 / 2 and its
- * surface turns at the spin it has. */
-static bool unlimited(const world *w, const body *b, double h)
-{
-    double acc = v3_len(world_body_accel(w, b));
-    return b->state != STATE_DYNAMIC ||
-           (v3_len(b->v) + acc * h < w->set.max_linear && v3_len(b->w) < w->set.max_angular);
-}
+/* ------------------------------------------------------------ steps and frames */
 
-/* A new time for near pair k of object i, which a collision at time t changed
- * from pre (moved by moved), from what is left of its distance then: the
- * distance when the pair was checked, less what the objects could close from the
- * check to t as the bound kept then assumed (they moved so until t), or, for a
- * check later than t (at the end of the step, with i's flight from before the
- * collision), less what they could have closed from t to the check; less the
- * move.  Object i moves on from t as it is now, and the other as it flies, no
- * faster than its speed where its flight starts plus what the force adds since.
- * Without a bound, the pair is due at t. */
-static void repredict(world *w, long k, int i, const body *pre, double moved, double t)
+/* One internal step of h seconds (thesis 3.4.2, steps 3 to 5). */
+static void internal_step(world *w, double h)
 {
-    pair *q = &w->pairs.p[k];
-    int j = q->a == i ? q->b : q->a;
-    const body *o = step_at_start(w, j);
-    double slack = o->state == STATE_DYNAMIC ? v3_len(world_body_accel(w, o)) * (t - w->step.snap_t[j]) : 0;
-    double left = -1;
-    if (q->checked <= t) {
-        left = sched_left(&w->sched.bound[k], t - q->checked) - moved;
-    } else if (unlimited(w, pre, q->checked - t) &&
-               unlimited(w, o, q->checked - w->step.snap_t[j])) {
-        double back = q->a == i ? sched_closing(w, pre, o, 0, slack, q->checked - t)
-                                : sched_closing(w, o, pre, slack, 0, q->checked - t);
-        left = w->sched.bound[k].dist - back - moved;
-    }
-    if (left <= 0) {
-        sched_set(w, k, t);
-        return;
-    }
-    const body *me = w->bodies[i];
-    double next = q->a == i ? sched_predict_kept(w, me, o, left, 0, slack, &w->sched.bound[k])
-                            : sched_predict_kept(w, o, me, left, slack, 0, &w->sched.bound[k]);
-    q->checked = t;
-    q->along = false;
-    q->speed_a = v3_len((q->a == i ? me : o)->v) + (q->a == i ? 0 : slack);
-    q->speed_b = v3_len((q->b == i ? me : o)->v) + (q->b == i ? 0 : slack);
-    sched_set(w, k, t + next);
-}
-
-/* Makes due at time t the pairs of object i, which a collision changed from a to
- * b, that its new motion may bring together before their time.  A pair's time
- * came from a bound on its objects' motion from its check on: each no faster than
- * its speed then (speed_a, speed_b) plus what the force adds since, turning no
- * faster than then; or, for a far pair, turning any way at all (its bound takes
- * all of R - r at once, or a sphere that no turn changes) and moved at once by up
- * to SCHED_JUMP in all (body.jumped); or, for a near pair whose time came along
- * the normal (pair.along), from exactly the motions then.  Where b keeps within
- * that, the pair keeps its time.  A near pair that does not gets a new one from
- * its kept bound (repredict), unless the collision turned the object or moved it
- * more than a separation: it is due then.  Parked pairs wait on: the object's
- * box still holds it (sched_box_holds), or is made again from t, which parks
- * them or makes them due. */
-static void reschedule(world *w, int i, const body *a, const body *b, double t, double t_end)
-{
-    double acc = v3_len(world_body_accel(w, a)), moved = v3_len(v3_sub(a->x, b->x));
-    bool turned = a->q.w != b->q.w || a->q.x != b->q.x || a->q.y != b->q.y || a->q.z != b->q.z;
-    if (a->state != STATE_DYNAMIC ||
-        (b->state == STATE_DYNAMIC && v3_len(world_body_accel(w, b)) > acc)) {
-        sched_object_due(w, i, t);
-        return;
-    }
-    /* its box holds, or is made again from here (its parked pairs wait on) */
-    if (w->set.collision_heap && !sched_box_holds(w, i, b, t)) sched_box_renew(w, i, b, t, t, t_end);
-    bool jolted = turned || moved > SIM_SEPARATION; /* beyond what a near bound keeps */
-    double v = v3_len(b->v);
-    bool spun = v3_len(b->L) > v3_len(a->L);
-    for (long j = w->sched.obj_first[i]; j < w->sched.obj_first[i + 1]; j++) {
-        long k = w->sched.obj_pairs[j];
-        const pair *q = &w->pairs.p[k];
-        if (w->sched.parked[k]) continue;
-        bool keep = q->checked <= t; /* found from speeds at an earlier instant */
-        if (keep) keep = v <= (q->a == i ? q->speed_a : q->speed_b) + acc * (t - q->checked);
-        if (keep && q->far)
-            keep = w->bodies[q->a]->jumped - q->jumped_a + w->bodies[q->b]->jumped - q->jumped_b <=
-                   SCHED_JUMP;
-        else if (keep)
-            keep = moved == 0 && !spun && !q->along;
-        if (keep || q->next <= t) continue;
-        if (!q->far && !jolted && q->checked < HUGE_VAL) repredict(w, k, i, a, moved, t);
-        else sched_set(w, k, t);
-    }
-}
-
-/* Answers the collision of pair p at time t, within the step that ends at t_end.
- * Only its two objects are flown there; the others stay at the end of the step,
- * where the next check wants them (settle flies the neighbours it looks at).  What
- * the answer changes flies on from t; what it leaves as it was flies back. */
-static void answer(world *w, pair *p, double t, double t_end)
-{
-    assert(p->a < p->b && t >= w->time && t <= t_end);
-    int ends[2] = {p->a, p->b};
-    for (int k = 0; k < 2; k++) {
-        int i = ends[k];
-        if (w->step.snap[i].state == STATE_DYNAMIC) step_fly_into(w, i, t, w->bodies[i]);
-        body_copy_state(&w->step.pre[i], w->bodies[i]);
-    }
-    for (int i = 0; i < w->n; i++) w->step.touched[i] = false;
-    w->time = t;
-    collide(w, p);
-    rest_wake_unsupported(w, w->step.touched);
-    for (int k = 0; k < 2; k++) {
-        int i = ends[k];
-        w->step.touched[i] = false;
-        if (memcmp((char *)&w->step.pre[i] + offsetof(body, x), (char *)w->bodies[i] + offsetof(body, x),
-                   sizeof(body) - offsetof(body, x)) == 0) {
-            /* as it was: at the end of the step again */
-            if (w->step.snap[i].state == STATE_DYNAMIC) step_fly_into(w, i, t_end, w->bodies[i]);
-            continue;
-        }
-        /* what the collision moved it by at once (setting it apart, settling it) */
-        w->bodies[i]->jumped += v3_len(v3_sub(body_com(w->bodies[i]), body_com(&w->step.pre[i])));
-        step_renew(w, i, t);
-        /* its motion changed: its pairs are due again, unless their times hold */
-        reschedule(w, i, &w->step.pre[i], w->bodies[i], t, t_end);
-    }
+    double t = w->time, t_end = t + h;
+    /* every moving object's flight starts afresh where it is */
     for (int i = 0; i < w->n; i++) {
-        if (!w->step.touched[i]) continue;
-        body *b = w->bodies[i];
-        if (w->step.snap[i].state == STATE_DYNAMIC) {
-            /* a moving object that slides no more: where it is at t, with that */
-            int slide = b->slide;
-            step_fly_into(w, i, t, b);
-            b->slide = slide;
-        }
-        step_renew(w, i, t);
+        if (!step_moves(w, i)) continue;
+        step_start(w, i, t);
+        const body *b = w->bodies[i];
+        double ev = b->mode == MODE_SLIDE ? rest_slide_exit(w, i, t) : HUGE_VAL;
+        set_event(w, i, ev);
     }
-}
-
+    /* clusters start their steps (their kicks change their flights) */
+    for (int i = 0; i < w->n; i++) {
+        const body *b = w->bodies[i];
+        if (step_moves(w, i) && b->mode == MODE_GENERAL && w->step.event[i] == HUGE_VAL)
+            begin_clusters(w, &i, 1, t, t_end);
+    }
+    for (int n = 0;; n++) {
+        next_event e = find_next(w, t, t_end);
+        if (e.kind < 0) break;
+        if (n >= SIM_MAX_EVENTS_PER_STEP) {
+            w->st.restarts++;
+            break;
+        }
+        if (e.kind == 0) answer_contact(w, e.index, e.t, t_end);
+        else answer_object(w, (int)e.index, e.t, t_end);
+    }
+    for (int i = 0; i < w->n; i++) step_sync(w, i, t_end);
+    w->time = t_end;
 #ifdef VROC_VALIDATE
-/* The validation build (make check runs it on every scene) checks after every
- * internal step what the simulation relies on and does not check as it goes: the
- * schedule's heap and marks, and every polyhedron's adjacency, planarity and
- * convexity (to 1e-9 of its size). */
-static void validate(const world *w)
-{
-    if (w->sched.heap) assert(sched_check(w) == 0);
+    assert(w->sched.heap == NULL || sched_check(w) == 0);
     for (int i = 0; i < w->n; i++) {
         const shape *s = &w->bodies[i]->shape;
         char err[256];
         if (s->hull) assert(poly_check(s->hull, 1e-9 * (1 + s->r_out), err, sizeof err) == 0);
     }
+#endif
 }
-#endif
 
-/* One internal step of h seconds (thesis 3.4.2, steps 3 to 5); its scratch is
- * in place (sim_prepare). */
-static void internal_step(world *w, double h)
+/* Finds what each object the commands moved touches (within the contact distance),
+ * and the modes of the objects they woke. */
+static void find_contacts(world *w)
 {
-    double now = w->time, t_end = now + h;
-    step_save(w, now);
-    for (int n = 0;; n++) {
-        step_fly_to_end(w, t_end);
-        double when;
-        pair *first = check_due(w, now, t_end, &when);
-        if (!first || n >= SIM_MAX_COLLISIONS_PER_STEP) break;
-        answer(w, first, when, t_end);
-        now = when;
+    bool any = false;
+    for (int i = 0; i < w->n; i++) any = any || w->bodies[i]->moved || w->bodies[i]->woken;
+    if (!any) return;
+    for (long k = 0; k < w->pairs.n; k++) {
+        pair *p = &w->pairs.p[k];
+        body *a = w->bodies[p->a], *b = w->bodies[p->b];
+        if (!a->moved && !b->moved) continue;
+        closest_result r = pair_query(w, p, a, b);
+        if (r.status == CLOSEST_INVALID) continue;
+        double touch = touch_of(a, b);
+        if (r.distance <= touch && r.distance >= -touch) {
+            p->touching = true;
+            p->hit = p->cache;
+            a->woken = b->woken = true;
+        }
     }
-    w->time = t_end;
-    rest_check_slides(w);
-#ifdef VROC_VALIDATE
-    validate(w);
-#endif
+    int *list = w->step.list, n = 0;
+    for (int i = 0; i < w->n; i++) {
+        body *b = w->bodies[i];
+        if (b->woken && !body_is_static(b)) {
+            if (b->state == STATE_RESTING) rest_wake(w, i);
+            list[n++] = i;
+        }
+        b->moved = b->woken = false;
+    }
+    int *mine = malloc((size_t)(n > 0 ? n : 1) * sizeof *mine);
+    if (!mine) return;
+    memcpy(mine, list, (size_t)n * sizeof *mine);
+    rest_classify(w, mine, n);
+    free(mine);
 }
 
 int sim_prepare(world *w)
 {
-    if (pairs_update(w) != 0 || (w->sched_dirty && sched_build(w, w->time) != 0) ||
-        step_prepare(w, w->sched_dirty) != 0)
-        return -1;
+    if (pairs_update(w) != 0) return -1;
+    bool changed = w->sched_dirty;
+    if ((changed && sched_build(w, w->time) != 0) || step_prepare(w, changed) != 0) return -1;
+    if (changed) {
+        find_contacts(w);
+        for (int i = 0; i < w->n; i++) {
+            step_start(w, i, w->time);
+            set_event(w, i, HUGE_VAL);
+        }
+        for (long k = 0; k < w->pairs.n; k++) sched_set(w, k, bound_from(w, k, w->time));
+    }
     w->sched_dirty = false;
     return 0;
 }
@@ -488,12 +483,16 @@ int sim_frame(world *w, char *err, size_t errlen)
     }
     double t0 = w->time, h = n > 0 ? w->set.time_step / (double)n : 0;
     w->nevents = 0;
-    rest_wake_unsupported(w, NULL);
     for (long k = 0; k < n; k++) {
         internal_step(w, h);
         w->st.subframes++;
     }
-    rest_frame_end(w);
+    if (rest_frame_end(w) > 0) {
+        for (int i = 0; i < w->n; i++) {
+            if (w->bodies[i]->state != STATE_RESTING) continue;
+            restart(w, i, w->time);
+        }
+    }
     if (w->set.time_step != w->base_step || w->time_base + (double)w->base_frames * w->base_step != t0) {
         w->time_base = t0;
         w->base_step = w->set.time_step;
@@ -504,4 +503,21 @@ int sim_frame(world *w, char *err, size_t errlen)
     w->frame++;
     w->st.frames++;
     return 0;
+}
+
+long sim_penetrations(world *w, sim_report report, void *ctx)
+{
+    if (pairs_update(w) != 0) return -1;
+    long count = 0;
+    for (long i = 0; i < w->pairs.n; i++) {
+        pair *p = &w->pairs.p[i];
+        if (p->touching) continue;
+        const body *a = w->bodies[p->a], *b = w->bodies[p->b];
+        closest_result r = pair_query(w, p, a, b);
+        if (r.status == CLOSEST_PENETRATING && r.distance < -touch_of(a, b)) {
+            count++;
+            if (report) report(ctx, a, b, -r.distance);
+        }
+    }
+    return count;
 }

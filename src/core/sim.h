@@ -1,13 +1,14 @@
 /* sim.h: advancing simulated time with collisions (thesis 3.2.3, 3.3.3, 3.4.2).
  *
- * A frame of time_step is cut into world_subframes() equal internal steps.  Within
- * an internal step every dynamic body flies freely under the global acceleration
- * (flight.h).  At the end of the step the due pairs are checked (schedule.h); a
- * pair found touching or penetrating is traced back in time to its first contact
- * (toi.h), the earliest such collision is answered (contact.h) with the objects it
- * concerns at that instant (the others fly on unchanged), and the rest of the step
- * goes on from there.  Objects whose motion dies down on a support come to rest or
- * settle (rest.h).  The collisions of a frame are left in world.events.
+ * A frame of time_step is cut into world_subframes() equal internal steps, the
+ * thesis's subframes.  Within a step the objects fly exactly (flight.h), and its
+ * events are answered in the order they happen, each at its own instant: a pair's
+ * first contact, found by conservative advancement (toi.h) for the pairs the
+ * schedule says could touch (schedule.h); a slide leaving its face; the end of a
+ * cluster's step (rest.h, cluster.h).  Collisions are answered together with
+ * every lasting contact of the objects they touch (impulse.h).  At the end of a
+ * frame, objects held still by their supports rest.  The collisions of a frame
+ * are left in world.events.
  */
 #ifndef VROC_SIM_H
 #define VROC_SIM_H

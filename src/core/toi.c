@@ -3,6 +3,7 @@
 
 #include <assert.h>
 #include <math.h>
+#include <stdlib.h>
 
 #include "contact.h"
 #include "flight.h"
@@ -33,6 +34,127 @@ static sched_move move_of(const world *w, int i, const body *o)
     return m;
 }
 
+/* Objects of at most this many vertices are bounded vertex by vertex as well
+ * (envelope_time). */
+#define TOI_ENVELOPE_VERTICES 1024
+
+/* A height along the normal that changes at a constant rate: h0 + h1 t. */
+typedef struct {
+    double h0, h1;
+} line;
+
+/* The lines of o's points (moving as mo) along side * n, from world point p:
+ * a ball's lowest point, or every vertex's; and *quad, the most their second
+ * derivative can take off them over t^2 (the centre's acceleration along side * n
+ * exactly, less a turn's w^2 R + |dw/dt| R, |dw/dt| <= w^2 for a free body).
+ * Returns the count, or 0 when o has too many vertices. */
+static int lines_of(const body *o, const sched_move *mo, vec3 n, double side, vec3 p, line *out,
+                    double *quad)
+{
+    vec3 sn = v3_scale(n, side);
+    vec3 v = mo->moves ? mo->v : v3(0, 0, 0), c = body_com(o);
+    *quad = mo->moves ? 0.5 * v3_dot(mo->a, sn) - mo->rate * mo->rate * o->shape.r_out : 0;
+    if (o->sp.kind == SHAPE_SPHERE) {
+        out[0] = (line){v3_dot(v3_sub(c, p), sn) - o->sp.radius, v3_dot(v, sn)};
+        *quad = mo->moves ? 0.5 * v3_dot(mo->a, sn) : 0; /* it turns into itself */
+        return 1;
+    }
+    const poly *h = o->shape.hull;
+    if (!h || h->nv > TOI_ENVELOPE_VERTICES) return 0;
+    vec3 w = mo->moves ? o->w : v3(0, 0, 0);
+    for (int i = 0; i < h->nv; i++) {
+        vec3 x = v3_add(o->x, q_rotate(o->q, h->v[i]));
+        vec3 u = v3_add(v, v3_cross(w, v3_sub(x, c)));
+        out[i] = (line){v3_dot(v3_sub(x, p), sn), v3_dot(u, sn)};
+    }
+    return h->nv;
+}
+
+/* A piece of a lower envelope: line l from time t on. */
+typedef struct {
+    double t;
+    line l;
+} piece;
+
+/* The lower envelope of the n lines over [0, T]: its pieces, in time order. */
+static int envelope(const line *ln, int n, double T, piece *out)
+{
+    int cur = 0, m = 0;
+    for (int i = 1; i < n; i++)
+        if (ln[i].h0 < ln[cur].h0 || (ln[i].h0 == ln[cur].h0 && ln[i].h1 < ln[cur].h1)) cur = i;
+    double t = 0;
+    for (;;) {
+        out[m++] = (piece){t, ln[cur]};
+        int next = -1;
+        double tx = HUGE_VAL;
+        for (int i = 0; i < n; i++) {
+            if (!(ln[i].h1 < ln[cur].h1)) continue;
+            double x = (ln[i].h0 - ln[cur].h0) / (ln[cur].h1 - ln[i].h1);
+            if (x < t) x = t;
+            if (x < tx || (x == tx && ln[i].h1 < ln[next].h1)) {
+                tx = x;
+                next = i;
+            }
+        }
+        if (next < 0 || !(tx < T) || m == n) return m;
+        cur = next;
+        t = tx;
+    }
+}
+
+/* The time, never late, before which a (moving as ma) and b (mb) cannot close
+ * their gap along n (the unit normal from b to a) down to target: the lowest of
+ * a's points along n less the highest of b's, each point's height bounded by its
+ * own rate now and the most it can accelerate.  Sharper than the surfaces' bound
+ * as a whole (|w| R) when the points that meet close slowly, as a box settling
+ * onto an edge does; valid whatever n is, and whatever the rounding of the
+ * closest points it came from.  HUGE_VAL when not within T, -1 when either has
+ * too many vertices. */
+static double envelope_time(const body *a, const sched_move *ma, const body *b,
+                            const sched_move *mb, vec3 n, vec3 p, double target, double T)
+{
+    static _Thread_local line la[TOI_ENVELOPE_VERTICES], lb[TOI_ENVELOPE_VERTICES];
+    static _Thread_local piece pa[TOI_ENVELOPE_VERTICES], pb[TOI_ENVELOPE_VERTICES];
+    double qa, qb;
+    int na = lines_of(a, ma, n, 1, p, la, &qa), nb = lines_of(b, mb, n, -1, p, lb, &qb);
+    if (na == 0 || nb == 0) return -1;
+    int ka = envelope(la, na, T, pa), kb = envelope(lb, nb, T, pb);
+    double q = qa + qb, margin = SIM_ROUND_REL * (1 + a->shape.r_out + b->shape.r_out);
+    int i = 0, j = 0;
+    for (double t0 = 0; t0 < T;) {
+        double t1 = T;
+        if (i + 1 < ka) t1 = d_min(t1, pa[i + 1].t);
+        if (j + 1 < kb) t1 = d_min(t1, pb[j + 1].t);
+        /* f(t) = c0 + c1 t + q t^2 - target on [t0, t1] */
+        double c0 = pa[i].l.h0 + pb[j].l.h0 - target - margin, c1 = pa[i].l.h1 + pb[j].l.h1;
+        double f0 = c0 + c1 * t0 + q * t0 * t0;
+        if (!(f0 > 0)) return t0;
+        double r = HUGE_VAL;
+        if (q == 0) {
+            if (c1 < 0) r = -c0 / c1;
+        } else {
+            double disc = c1 * c1 - 4 * q * c0;
+            if (disc >= 0) {
+                double m = -0.5 * (c1 + copysign(sqrt(disc), c1));
+                double r1 = m / q, r2 = m != 0 ? c0 / m : r1;
+                if (r1 >= t0 && r1 < r) r = r1;
+                if (r2 >= t0 && r2 < r) r = r2;
+            }
+        }
+        if (r <= t1) {
+            /* never late: back off until it checks out */
+            double t = r * (1 - 1e-12);
+            for (double f = 1e-9; t > t0 && c0 + c1 * t + q * t * t <= 0; f *= 2)
+                t = f < 0.5 ? d_max(t0, t * (1 - f)) : t0;
+            return t;
+        }
+        t0 = t1;
+        if (i + 1 < ka && pa[i + 1].t <= t0) i++;
+        if (j + 1 < kb && pb[j + 1].t <= t0) j++;
+    }
+    return HUGE_VAL;
+}
+
 /* How a (moving as ma) and b (mb), touching with closest result r, meet there: 1
  * when some point of their contact region closes (approach) or is pressed together
  * (the relative acceleration along the normal closes), else 0. */
@@ -57,6 +179,18 @@ static int meeting(const body *a, const sched_move *ma, const body *b, const sch
     return 0;
 }
 
+/* The time, never late, before which a and b (distance d apart, closest result
+ * r) cannot close their gap down to target: the later of the schedule's bound
+ * and the points' (envelope_time), looked for within T. */
+static double advance(const body *a, const sched_move *ma, const body *b, const sched_move *mb,
+                      const closest_result *r, double d, double target, double T)
+{
+    if (!(d > target)) return 0;
+    double dt = sched_ca_time(a, ma, b, mb, d, r->normal, r->pa, r->pb, target);
+    if (dt < T) dt = d_max(dt, envelope_time(a, ma, b, mb, r->normal, r->pb, target, T));
+    return dt;
+}
+
 toi_output toi_find(world *w, const toi_input *in)
 {
     assert(in->a != in->b && in->lo <= in->hi);
@@ -65,41 +199,54 @@ toi_output toi_find(world *w, const toi_input *in)
     double t = in->lo;
     const body *A0 = w->bodies[in->a], *B0 = w->bodies[in->b];
     double touch = toi_touch(A0, B0);
+    double depth0 = 0; /* how deep in the pair was when first found in (by rounding) */
     while (out.queries < TOI_MAX_QUERIES) {
         const body *a = step_flown(w, in->a, t, 0), *b = step_flown(w, in->b, t, 0);
         closest_result r = body_distance_apart(a, b, &cache);
         out.queries++;
         if (r.status == CLOSEST_INVALID) return out;
         sched_move ma = move_of(w, in->a, a), mb = move_of(w, in->b, b);
-        double d = r.status == CLOSEST_SEPARATED ? r.distance : 0, target = 0.5 * touch;
+        double d = r.status == CLOSEST_SEPARATED ? r.distance : 0, target = 0.5 * touch, inside = 0;
         if (d <= touch) {
             if (r.status != CLOSEST_SEPARATED) {
                 r = body_distance(a, b, &cache); /* the normal, with the depth */
                 out.queries++;
             }
-            if (r.status != CLOSEST_SEPARATED || meeting(a, &ma, b, &mb, &r, touch)) {
+            double thick = touch + (r.status == CLOSEST_SEPARATED ? 0 : -r.distance);
+            if (meeting(a, &ma, b, &mb, &r, thick)) {
                 out.state = TOI_HIT;
                 out.t = t;
                 out.r = r;
                 out.cache = cache;
                 return out;
             }
-            /* they graze: on, until they part or meet */
+            /* they graze, or part from a little way in: on, until they part or meet */
             target = 0.5 * d;
+            if (r.status != CLOSEST_SEPARATED) {
+                inside = -r.distance;
+                depth0 = d_max(depth0, inside);
+            }
         }
-        double dt = d > 0 ? sched_ca_time(a, &ma, b, &mb, d, r.normal, r.pa, r.pb, target) : 0;
-        if (!(dt > 0)) {
+        double dt = advance(a, &ma, b, &mb, &r, d, target, in->hi - t);
+        if (!(t + dt > t)) {
             /* apart by less than rounding, not meeting: the time to move a contact
              * distance at their relative speed */
             double s = v3_len(v3_sub(ma.moves ? ma.v : v3(0, 0, 0), mb.moves ? mb.v : v3(0, 0, 0)));
-            dt = touch / d_max(s + (ma.rate + mb.rate) * (A0->shape.r_out + B0->shape.r_out), 1e-3);
+            double depth = d_max(touch, d_max(inside, 0.1 * depth0));
+            dt = depth / d_max(s + (ma.rate + mb.rate) * (A0->shape.r_out + B0->shape.r_out), 1e-3);
         }
-        t += dt;
-        if (!(t <= in->hi)) {
-            out.t = t;
+        double nt = t + dt;
+        nt = nt > t ? nt : nextafter(t, HUGE_VAL);
+        if (!(nt <= in->hi)) {
+            /* apart through hi; they cannot touch before their gap could close to
+             * the contact distance (not the search's half of it: that is where it
+             * would look next) */
+            double key = d > touch ? t + advance(a, &ma, b, &mb, &r, d, touch, HUGE_VAL) : t;
+            out.t = d_max(key, nextafter(in->hi, HUGE_VAL));
             return out;
         }
+        t = nt;
     }
-    out.t = t; /* (a guard: searched again from here) */
+    out.t = nextafter(in->hi, HUGE_VAL); /* (a guard: never reached in the tests) */
     return out;
 }

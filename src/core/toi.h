@@ -1,14 +1,21 @@
-/* toi.h: the first contact of a pair within an internal step (the time of impact).
+/* toi.h: the first contact of a pair within an internal step, by conservative
+ * advancement (thesis 3.4.2, step 4; design.md, "Dynamics").
  *
- * Given two objects that are apart at time lo and touch or penetrate at hi, each
- * flying from its flight's start in the step (step.h), the search finds the
- * latest time it can show them apart: less than SIM_SEPARATION / 2 apart, or
- * within SIM_TOI_TIME of a time they are not (toi.c says how).  Input and output
- * are structs, as Box2D's b2TOIInput and b2TOIOutput.
+ * From the later of the two flights' starts (or the step's start), the pair is
+ * queried, advanced by the schedule's bound to the earliest time its gap could
+ * close to half the contact distance (schedule.h, sched_ca_time), and queried
+ * again, until it is within the contact distance and its objects approach or
+ * press together there (a contact), or the step ends.  The bound is never late,
+ * so no contact is passed, whatever the objects' spin, speed or thinness, and the
+ * first is found to within the contact distance.  The search depends on the two
+ * flights and the features it starts from alone, so whoever asks (the heap, or a
+ * check of every pair) gets the same answer.  Input and output are structs, as
+ * Box2D's b2TOIInput and b2TOIOutput.
  */
 #ifndef VROC_TOI_H
 #define VROC_TOI_H
 
+#include "body.h"
 #include "closest.h"
 
 typedef struct world world;
@@ -16,22 +23,26 @@ typedef struct world world;
 typedef struct {
     int a, b;             /* the two objects (body indices, a < b) */
     closest_cache cache;  /* the features to start from */
-    double lo, hi;        /* the bracket: absolute times, touching at hi */
+    double lo, hi;        /* search [lo, hi]: absolute times */
 } toi_input;
 
 typedef enum {
-    TOI_OVERLAPPED, /* touching or penetrating already at lo: t = lo */
-    TOI_HIT         /* apart at t, at their first contact */
+    TOI_NONE, /* apart through hi; t is when it must be searched again (> hi) */
+    TOI_HIT   /* in contact at t: they approach or press together there */
 } toi_state;
 
 typedef struct {
     toi_state state;
-    double t;             /* the time found */
-    closest_result r;     /* TOI_HIT: the pair there (the answer starts from it) */
+    double t;
+    closest_result r;     /* TOI_HIT: the pair there (with its depth when touching) */
     closest_cache cache;  /*   and the features the search ended on */
     long queries;         /* closest-feature queries made */
 } toi_output;
 
 toi_output toi_find(world *w, const toi_input *in);
+
+/* The contact distance between a and b: SIM_TOUCH, or more for objects so large
+ * that their distances round to more than it. */
+double toi_touch(const body *a, const body *b);
 
 #endif

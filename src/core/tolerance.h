@@ -2,9 +2,9 @@
  *
  * Lengths are metres, times seconds, speeds m/s.  "Relative" tolerances multiply
  * the size of what they compare (the sum of two objects' outer radii, say).  The
- * thresholds of rest and sliding follow the thesis's contact state (3.3.3); the
- * others are rounding margins, chosen far above double precision's and far below
- * anything a scene can show.
+ * thresholds of rest follow the thesis's contact state (3.3.3); the others are
+ * rounding margins, chosen far above double precision's and far below anything a
+ * scene can show.
  */
 #ifndef VROC_TOLERANCE_H
 #define VROC_TOLERANCE_H
@@ -12,51 +12,54 @@
 /* Most internal steps one frame may take; more is an error asking for fewer. */
 #define SIM_MAX_SUBFRAMES 1000000L
 
-/* Time of impact: the search stops when its bracket is this short (s). */
-#define SIM_TOI_TIME 1e-10
-/* After a collision the pair is set apart to at least this distance (m). */
-#define SIM_SEPARATION 1e-7
-/* A pair that collides slowly while a force presses them together (gravity, for
- * an object on a support) leaves at least as fast as it must to rise this far (m)
- * against that force: the collision envelope, which keeps an object that pivots or
- * rocks on a support from colliding every few microseconds. */
-#define SIM_HOP 1e-4
-/* Below this speed (m/s: |v| + |w| times the outer radius) an object on a support
- * underneath, against the global force, comes to rest (the thesis's contact state):
- * at once when it collides with the support, or at the end of a frame when it
- * slides on it.  Above it, an object that no longer bounces off such a support
- * slides on it: the part of the force that presses it onto the support is taken
- * away while it stays there. */
-#define SIM_REST_SPEED 0.05
-/* Settling (the limit of rocking, rest.c): an object with restitution below 1
- * barely bouncing on a support under it, whose rocking could not tip it more than
- * SIM_SETTLE_ANGLE (radians), is laid on the face it can stand on nearest to the
- * support, if that face is within the angle and nothing is in the way. */
-#define SIM_SETTLE_ANGLE 0.35
-/* A sandwich: an object that struck a still object less than SIM_PINNED_TIME (s)
- * ago, one of the last two it struck, and is still within SIM_PINNED_GAP (m) of
- * it, passes the part of a blow within 45 degrees of pressing it back against it
- * on to it, as a stack passes blows to its support. */
-#define SIM_PINNED_TIME 0.01
-#define SIM_PINNED_GAP 1e-5
-/* Collisions one internal step may answer before the step gives up and lets the
- * objects through (a guard against endless micro-collisions). */
-#define SIM_MAX_COLLISIONS_PER_STEP 1000
-/* A polyhedron of at most this many vertices is tried vertex by vertex by the
- * time of impact's search after a strike (toi.c). */
-#define SIM_PLANE_VERTICES 32
+/* Two objects this close (m) or closer touch: neither apart nor interpenetrating.
+ * A search stops at this distance (toi.h), and objects placed within it of each
+ * other are in contact. */
+#define SIM_TOUCH 1e-9
+/* Relative: distances between objects are known to this fraction of their size
+ * (the contact distance grows with it for very large objects). */
+#define SIM_ROUND_REL 1e-13
 
+/* An impact whose rebound would be slower than this (m/s: e times the closing
+ * speed) is perfectly inelastic, when e < 1: the objects stay in contact, and the
+ * ever smaller bounces a dropped ball makes before its Zeno time are summed at
+ * once. */
+#define SIM_BOUNCE_SPEED 0.02
+/* Below this speed (m/s: |v| + |w| times the outer radius) an object held by its
+ * supports, sliding or pressed on them, comes to rest at the end of a frame (the
+ * thesis's contact state): it stays put, costs nothing, and feels no force until
+ * something moves it.  Only where the contacts lose energy (e < 1), or the object
+ * is still. */
+#define SIM_REST_SPEED 0.05
+
+/* Relative: a speed (m/s) below this fraction of the objects' size is rounding
+ * (a normal speed of zero, a spin about the normal only). */
+#define SIM_SPEED_ROUND 1e-12
+/* Relative: an acceleration (m/s^2) below this fraction of the objects' size is
+ * rounding (the objects do not press together, an object is balanced). */
+#define SIM_ACCEL_ROUND 1e-9
 /* Relative: features within this fraction of a pair's size (the sum of the two
- * outer radii) of the contact plane are in contact (the contact region, standing,
- * footprints). */
+ * outer radii) of the contact plane are in contact (the contact region). */
 #define SIM_CONTACT_TOL 1e-6
+
+/* The gap (relative to the sizes, as SIM_CONTACT_TOL) at which lasting contacts
+ * are kept, by a cluster's kicks and a slide's start: a little way apart, so
+ * that their queries find them apart (cheap) rather than in (a depth to
+ * estimate), far inside a contact's thickness and far above rounding. */
+#define SIM_HOVER 1e-8
 /* Two unit normals n, m are the same direction when n . m > 1 - SIM_PARALLEL. */
 #define SIM_PARALLEL 1e-6
-/* A normal n holds against a direction u (a support under a body, a blow pressing
- * it back) when n . u > SIM_SUPPORT_COS: within 45 degrees. */
-#define SIM_SUPPORT_COS 0.7
-/* A speed (m/s) along a support's normal below this is rounding (1e-7 m in a
- * day). */
-#define SIM_SPEED_ROUND 1e-12
+
+/* A cluster of objects pressed together (cluster.h) moves in steps of at most
+ * this long (s), and short enough that none of its points moves more than
+ * SIM_CLUSTER_MOVE (m) in one. */
+#define SIM_CLUSTER_STEP 1e-3
+#define SIM_CLUSTER_MOVE 1e-3
+/* Rows of contact one cluster may hold (the corners of its contact regions). */
+#define SIM_CLUSTER_ROWS 64
+
+/* Events one internal step may answer before it gives up and lets the step end
+ * (a guard against a fault; counted in stats as a restart). */
+#define SIM_MAX_EVENTS_PER_STEP 100000
 
 #endif

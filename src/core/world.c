@@ -108,9 +108,20 @@ void world_delete(world *w, int i)
     w->pairs.dirty = true;
     for (int k = 0; k < w->n; k++) {
         body *b = w->bodies[k];
-        b->support = index_after(b->support, i);
-        b->slide = index_after(b->slide, i); /* its pair is found again (pairs_update) */
-        for (int s = 0; s < 2; s++) b->pinned_by[s] = index_after(b->pinned_by[s], i);
+        b->slide_on = index_after(b->slide_on, i);
+        if (b->slide_on < 0 && b->mode == MODE_SLIDE) b->mode = MODE_FREE;
+    }
+    /* the pairs keep their objects (pairs_update finds the lasting contacts again
+     * by them): those of i end */
+    for (long k = 0; k < w->pairs.n; k++) {
+        pair *p = &w->pairs.p[k];
+        if (p->a == i || p->b == i) {
+            p->touching = false;
+            p->a = p->b = 0;
+            continue;
+        }
+        p->a = index_after(p->a, i);
+        p->b = index_after(p->b, i);
     }
 }
 

@@ -78,7 +78,7 @@ cmd_status cmd_delete(shell *sh, const stmt *st)
         sh_error(sh, st, "no object named '%s'", st->word);
         return CMD_ERROR;
     }
-    world_delete(&sh->w, i);
+    edit_delete(&sh->w, i);
     fix_index(&sh->current, i);
     fix_index(&sh->selected, i);
     fix_index(&sh->prev_selected, i);

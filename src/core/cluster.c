@@ -1,0 +1,187 @@
+/* cluster.c: a cluster's steps (cluster.h). */
+#include "cluster.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "contact.h"
+#include "impulse.h"
+#include "lcp.h"
+#include "pairs.h"
+#include "schedule.h"
+#include "step.h"
+#include "tolerance.h"
+#include "world.h"
+
+/* Newton steps of the first kick, at most, and the gap it aims at (relative to
+ * the contact distance). */
+#define CLUSTER_NEWTON 6
+
+/* How fast a point that is in comes out (m/s). */
+#define CLUSTER_RECOVER_SPEED 1e-3
+
+
+/* A cluster's pressed points: the rows of its impulses and the points they
+ * follow. */
+typedef struct {
+    int n;
+    impulse_row row[SIM_CLUSTER_ROWS];
+    cpoint cp[SIM_CLUSTER_ROWS]; /* p and q renumbered as body indices */
+} points;
+
+/* The pressed points of the cluster's lasting contacts, its objects in the states
+ * of w->bodies (each pair once). */
+static void gather(world *w, const int *list, int n, points *pts, double reach)
+{
+    pts->n = 0;
+    bool *in = w->step.mark;
+    for (int k = 0; k < n; k++) in[list[k]] = true;
+    for (int k = 0; k < n; k++) {
+        int i = list[k];
+        for (long j = w->sched.obj_first[i]; j < w->sched.obj_first[i + 1]; j++) {
+            pair *p = &w->pairs.p[w->sched.obj_pairs[j]];
+            int o = w->sched.obj_other[j];
+            if (!p->touching || (in[o] && o < i)) continue;
+            const body *A = w->bodies[p->a], *B = w->bodies[p->b];
+            double scale = A->shape.r_out + B->shape.r_out;
+            closest_result r = pair_query(w, p, A, B);
+            if (r.status == CLOSEST_INVALID) continue;
+            cpoint cp[16];
+            int nc = contact_cpoints(A, B, &r, d_max(SIM_CONTACT_TOL * scale, reach), cp, 16);
+            for (int c = 0; c < nc && pts->n < SIM_CLUSTER_ROWS; c++) {
+                cpoint *x = &pts->cp[pts->n];
+                *x = cp[c];
+                x->p = cp[c].p == 0 ? p->a : p->b;
+                x->q = cp[c].p == 0 ? p->b : p->a;
+                impulse_row *row = &pts->row[pts->n++];
+                row->p = x->p;
+                row->q = x->q;
+                row->e = 0;
+                cpoint_eval(x, w->bodies[x->p], w->bodies[x->q], &row->n, &row->at);
+            }
+        }
+    }
+    for (int k = 0; k < n; k++) in[list[k]] = false;
+}
+
+/* The contact distance of point k's pair. */
+static double touch_at(const world *w, const cpoint *cp)
+{
+    const body *a = w->bodies[cp->p], *b = w->bodies[cp->q];
+    return d_max(SIM_TOUCH, SIM_ROUND_REL * (a->shape.r_out + b->shape.r_out));
+}
+
+/* The fastest any point of the cluster moves (m/s). */
+static double fastest(const world *w, const int *list, int n)
+{
+    double s = 0;
+    for (int k = 0; k < n; k++) {
+        const body *b = w->bodies[list[k]];
+        s = d_max(s, v3_len(b->v) + v3_len(b->w) * b->shape.r_out);
+    }
+    return s;
+}
+
+double cluster_kick(world *w, const int *list, int n, double t, double t_end)
+{
+    double h = d_min(SIM_CLUSTER_STEP, t_end - t);
+    double s = fastest(w, list, n) + v3_len(world_accel(w)) * h;
+    if (s * h > SIM_CLUSTER_MOVE) h = SIM_CLUSTER_MOVE / s;
+    points pts;
+    /* the points that could close within the step: its motion, twice over */
+    gather(w, list, n, &pts, 2 * s * h);
+    int m = pts.n;
+    if (m == 0 || !(h > 0)) return h;
+    body **bs = w->step.now;
+    bool *mobile = w->step.mark;
+    for (int k = 0; k < n; k++) mobile[list[k]] = true;
+    double A[SIM_CLUSTER_ROWS * SIM_CLUSTER_ROWS], q[SIM_CLUSTER_ROWS], lam[SIM_CLUSTER_ROWS],
+        next[SIM_CLUSTER_ROWS], wv[SIM_CLUSTER_ROWS], gap[SIM_CLUSTER_ROWS];
+    impulse_matrix(pts.row, m, bs, mobile, A);
+    for (int k = 0; k < m * m; k++) A[k] *= h;
+    for (int k = 0; k < m; k++) lam[k] = 0;
+    vec3 g = world_accel(w);
+    /* each pressed point is kept at a hover's gap; one already closer (or in, by
+     * the steps' rounding) goes no closer, and comes out slowly, so as to add no
+     * bounce */
+    double floor_gap[SIM_CLUSTER_ROWS];
+    for (int k = 0; k < m; k++) {
+        vec3 nn, at;
+        double g0 = cpoint_eval(&pts.cp[k], bs[pts.cp[k].p], bs[pts.cp[k].q], &nn, &at);
+        const body *P = w->bodies[pts.cp[k].p], *Q = w->bodies[pts.cp[k].q];
+        double hover = SIM_HOVER * (1 + P->shape.r_out + Q->shape.r_out);
+        floor_gap[k] = g0 >= hover ? hover : g0 >= 0 ? g0 : d_min(0, g0 + h * CLUSTER_RECOVER_SPEED);
+    }
+    for (int it = 0; it < CLUSTER_NEWTON; it++) {
+        /* the gaps at the step's end after kicks lam: each object's copy kicked,
+         * flown freely */
+        for (int k = 0; k < n; k++) {
+            body *c = &w->step.scratch[STEP_COPIES * list[k] + 2];
+            *c = *w->bodies[list[k]];
+            bs[list[k]] = c;
+        }
+        impulse_apply(pts.row, m, bs, mobile, lam);
+        for (int k = 0; k < n; k++) {
+            body *c = bs[list[k]];
+            flight f;
+            flight_start(&f, c, FLIGHT_FREE, t, g, v3(0, 0, 0), 0);
+            flight_at(&f, w->bodies[list[k]], t + h, c);
+        }
+        bool done = true;
+        for (int k = 0; k < m; k++) {
+            vec3 nn, at;
+            gap[k] = cpoint_eval(&pts.cp[k], bs[pts.cp[k].p], bs[pts.cp[k].q], &nn, &at) -
+                     floor_gap[k];
+            double tol = 1e-3 * touch_at(w, &pts.cp[k]);
+            if ((lam[k] > 0 && fabs(gap[k]) > tol) || gap[k] < -tol) done = false;
+        }
+        for (int k = 0; k < n; k++) bs[list[k]] = w->bodies[list[k]];
+        if (done) break;
+        /* Newton: gaps + h A (next - lam) >= 0, complementary to next >= 0 */
+        for (int k = 0; k < m; k++) {
+            q[k] = gap[k];
+            for (int j = 0; j < m; j++) q[k] -= A[k * m + j] * lam[j];
+        }
+        if (lcp_solve(m, A, q, next, wv, w->step.lcp) != 0) break;
+        for (int k = 0; k < m; k++) lam[k] = next[k];
+    }
+    impulse_apply(pts.row, m, bs, mobile, lam);
+    for (int k = 0; k < n; k++) mobile[list[k]] = false;
+    return h;
+}
+
+void cluster_settle(world *w, const int *list, int n, double t1)
+{
+    (void)t1;
+    points pts;
+    gather(w, list, n, &pts, 0);
+    body **bs = w->step.now;
+    bool *mobile = w->step.mark;
+    /* the touching points: those that stay in contact stop approaching */
+    impulse_row rows[SIM_CLUSTER_ROWS];
+    double u[SIM_CLUSTER_ROWS], lam[SIM_CLUSTER_ROWS];
+    int m = 0;
+    for (int k = 0; k < pts.n; k++) {
+        vec3 nn, at;
+        double gp = cpoint_eval(&pts.cp[k], w->bodies[pts.cp[k].p], w->bodies[pts.cp[k].q], &nn, &at);
+        if (gp <= touch_at(w, &pts.cp[k])) rows[m++] = pts.row[k];
+    }
+    for (int k = 0; k < n; k++) mobile[list[k]] = true;
+    for (int k = 0; k < m; k++) u[k] = impulse_speed(&rows[k], bs);
+    if (m > 0) impulse_solve(rows, m, bs, mobile, u, lam, w->step.lcp);
+    for (int k = 0; k < n; k++) mobile[list[k]] = false;
+    /* the lasting contacts that opened end */
+    for (int k = 0; k < n; k++) {
+        int i = list[k];
+        for (long j = w->sched.obj_first[i]; j < w->sched.obj_first[i + 1]; j++) {
+            pair *p = &w->pairs.p[w->sched.obj_pairs[j]];
+            if (!p->touching) continue;
+            const body *A = w->bodies[p->a], *B = w->bodies[p->b];
+            closest_result r = pair_query_apart(w, p, A, B);
+            /* (within the thickness of a contact, a rolling or rocking contact
+             * holds: its points come and go as it turns) */
+            double held = SIM_CONTACT_TOL * (1 + A->shape.r_out + B->shape.r_out);
+            if (r.status == CLOSEST_SEPARATED && r.distance > held) p->touching = false;
+        }
+    }
+}

@@ -1,0 +1,30 @@
+/* cluster.h: objects pressed together that move with the contact forces found as
+ * they go: tipping over an edge, pivoting on it, stacks and piles that move (the
+ * general mode of rest.h).
+ *
+ * A cluster steps by short steps of free flight (exact: flight.h), with kicks at
+ * each end that keep its lasting contacts closed (RATTLE, Andersen 1983; Hairer,
+ * Lubich and Wanner, "Geometric Numerical Integration", VII.1): at a step's start,
+ * the impulses that make every pressed point's gap at the step's end zero or
+ * positive (pushing only, zero where the gap is open: a complementarity problem,
+ * solved by Newton's method over the exact flights); at its end, the impulses that
+ * stop every touching point approaching.  The contact forces so do no work, the
+ * energy stays within the square of the step, and a contact opens where its
+ * push would have to pull: a ball pivoting on a table's edge leaves it where the
+ * textbook says.  Between the kicks the objects fly, so collisions with anything
+ * else are found as for any other flight.
+ */
+#ifndef VROC_CLUSTER_H
+#define VROC_CLUSTER_H
+
+typedef struct world world;
+
+/* The first kicks of a step of the cluster's n objects (their states at time t):
+ * applied to their states.  Returns the step's length (until t_end at most). */
+double cluster_kick(world *w, const int *list, int n, double t, double t_end);
+
+/* The last kicks of the step (the states at its end, t1): touching points no
+ * longer approach; lasting contacts whose gaps opened end. */
+void cluster_settle(world *w, const int *list, int n, double t1);
+
+#endif

@@ -1,0 +1,52 @@
+/* impulse.h: contacts answered together: the impulses of a collision, and the
+ * kicks that keep bodies pressed together apart (thesis 3.2.2, extended to many
+ * contacts at once; design.md, "Dynamics").
+ *
+ * Each row is a point where two objects press: p gets the impulse +lambda n, q
+ * gets -lambda n, n the unit normal from q to p, at the world point `at`.  The
+ * impulses can only push (lambda >= 0), and each row obeys Newton's law of
+ * restitution with its own e: the relative normal velocity after it is at least
+ * -e times the one before, and exactly that where it pushes (a linear
+ * complementarity problem, lcp.h, over the matrix J M^-1 J^T of the rows).  With e
+ * = 1 on every row no energy is lost; what rows that only rest (no approach)
+ * cannot absorb moves the objects.  Bodies not marked mobile have infinite mass.
+ */
+#ifndef VROC_IMPULSE_H
+#define VROC_IMPULSE_H
+
+#include <stdbool.h>
+
+#include "body.h"
+#include "lcp.h"
+
+/* Rows one problem may hold. */
+#define IMPULSE_MAX_ROWS 64
+
+typedef struct {
+    int p, q;    /* body indices */
+    vec3 n, at;  /* unit normal from q to p; where the impulse acts (world) */
+    double e;    /* restitution of this row */
+} impulse_row;
+
+/* The relative normal velocity of row r (> 0 separating) with the bodies in bs
+ * (indexed as the rows are). */
+double impulse_speed(const impulse_row *r, body *const *bs);
+
+/* The matrix A (n x n, row-major) of the rows: A[j][k] is row j's change of
+ * relative normal velocity for a unit impulse at row k. */
+void impulse_matrix(const impulse_row *rows, int n, body *const *bs, const bool *mobile,
+                    double *A);
+
+/* Applies impulses lambda at the rows to the mobile bodies of bs (their v, L, w). */
+void impulse_apply(const impulse_row *rows, int n, body *const *bs, const bool *mobile,
+                   const double *lambda);
+
+/* Solves the rows' impulses (Newton's law with each row's e; u_before the rows'
+ * relative normal velocities before, from impulse_speed) and applies them.
+ * lambda gets the impulses.  Returns 0, or -1 when the problem has too many rows or
+ * cannot be solved (nothing is applied then).  work: lcp_work_size(IMPULSE_MAX_ROWS)
+ * bytes. */
+int impulse_solve(const impulse_row *rows, int n, body *const *bs, const bool *mobile,
+                  const double *u_before, double *lambda, lcp_work *work);
+
+#endif
