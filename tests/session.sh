@@ -85,5 +85,11 @@ grep -q "^rotate = (1, 2, 3) 0.7$" "$TMP/p1" &&
 "$VROC" -b -q -c "read $TMP/saved.vroc; show" > "$TMP/s2" 2>&1
 same "save and read give the same show" "$TMP/s1" "$TMP/s2"
 
+# restart and quit end the logs, as trace's and events' pages say
+"$VROC" -b -q -c "sphere a; trace = $TMP/r.csv; events = $TMP/re.csv; restart; sphere b; run 2; show" > "$TMP/r.show" 2>&1
+grep -q '^trace = off$' "$TMP/r.show" && grep -q '^events = off$' "$TMP/r.show" && [ "$(wc -l < "$TMP/r.csv")" -eq 2 ] &&
+    ok "restart closes the trace and the events log" ||
+    notok "restart closes the trace and the events log" "$(grep -E '^(trace|events)' "$TMP/r.show")" "$(wc -l < "$TMP/r.csv") lines"
+
 # start in a script: time does not run by itself there
 expect "start in batch says how time runs" 0 "use run N in scripts" "$VROC" -b -c 'start; time'

@@ -3,8 +3,10 @@
  * round trips. */
 #include "check.h"
 
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include "shell/shell.h"
@@ -371,9 +373,49 @@ static void failed_record_stops_a_batch_run(void **state)
     assert_int_equal(g_sh.w.frame, 1);
     g_sh.stop_on_error = false; /* at the prompt */
     assert_int_equal(run("record = on; run 5\n"), CMD_OK);
-    assert_non_null(strstr(g_errbuf, "; recording turned off\n")); /* and time goes on */
+    assert_non_null(strstr(g_errbuf, "; record is now off\n")); /* and time goes on */
     assert_false(g_sh.view_set.record);
     assert_int_equal(g_sh.w.frame, 6);
+    g_sh.stop_on_error = true;
+}
+
+/* A log that fails in the middle of a run (here: it outgrows the file size limit,
+ * SIGXFSZ ignored) is closed with an error that names it and says why; at the
+ * prompt time goes on without it, a batch run stops at that frame. */
+static void failed_logs_are_turned_off(void **state)
+{
+    (void)state;
+    char path[256], text[400];
+    struct rlimit old, lim;
+    assert_int_equal(getrlimit(RLIMIT_FSIZE, &old), 0);
+    void (*old_xfsz)(int) = signal(SIGXFSZ, SIG_IGN);
+    lim = old;
+    lim.rlim_cur = 4096;
+    path_in_dir(path, sizeof path, "small.csv");
+    for (int batch = 0; batch < 2; batch++) {
+        g_sh.stop_on_error = batch;
+        snprintf(text, sizeof text, "restart; sphere a; linear_vel = (1, 0, 0); trace = \"%s\"\n",
+                 path);
+        assert_int_equal(run(text), CMD_OK);
+        assert_int_equal(setrlimit(RLIMIT_FSIZE, &lim), 0);
+        cmd_status r = run("run 200\n");
+        assert_int_equal(setrlimit(RLIMIT_FSIZE, &old), 0);
+        if (!strstr(g_errbuf, "error: trace: cannot write '") ||
+            !strstr(g_errbuf, "small.csv': File too large; trace is now off"))
+            fail_msg("run 200 said: '%s'", g_errbuf);
+        assert_null(g_sh.logs.trace);
+        assert_string_equal(g_sh.logs.trace_path, "");
+        if (batch) {
+            assert_int_equal(r, CMD_ERROR);
+            assert_non_null(strstr(g_errbuf, "small.csv': File too large; trace is now off, time stopped\n"));
+            assert_true(g_sh.w.frame < 200);
+        } else {
+            assert_int_equal(r, CMD_OK);
+            assert_non_null(strstr(g_errbuf, "small.csv': File too large; trace is now off\n"));
+            assert_int_equal(g_sh.w.frame, 200);
+        }
+    }
+    signal(SIGXFSZ, old_xfsz);
     g_sh.stop_on_error = true;
 }
 
@@ -429,6 +471,7 @@ int main(void)
         cmocka_unit_test(time_and_stats),
         cmocka_unit_test(failed_record_stops_a_batch_run),
         cmocka_unit_test(trace_writes_a_row_per_object_per_frame),
+        cmocka_unit_test(failed_logs_are_turned_off),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

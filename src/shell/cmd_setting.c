@@ -120,13 +120,13 @@ cmd_status cmd_tracker(shell *sh, const stmt *st)
 cmd_status cmd_log(shell *sh, const stmt *st)
 {
     bool trace = strcmp(st->cmd->name, "trace") == 0;
-    if (st->n == 1) {
-        if (trace) log_trace_close(&sh->logs);
-        else log_events_close(&sh->logs);
-        return CMD_OK;
-    }
-    char err[LOG_PATH_MAX + 64];
-    int r = trace ? log_trace_open(&sh->logs, &sh->w, st->word, err, sizeof err)
+    char err[LOG_PATH_MAX + 256];
+    int r;
+    if (st->n == 1) /* off: the last rows are checked as the file closes */
+        r = trace ? log_trace_close(&sh->logs, err, sizeof err)
+                  : log_events_close(&sh->logs, err, sizeof err);
+    else
+        r = trace ? log_trace_open(&sh->logs, &sh->w, st->word, err, sizeof err)
                   : log_events_open(&sh->logs, st->word, err, sizeof err);
     if (r != 0) {
         sh_error(sh, st, "%s: %s", st->cmd->name, err);

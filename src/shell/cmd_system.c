@@ -42,7 +42,17 @@ cmd_status cmd_stop(shell *sh, const stmt *st)
 
 cmd_status cmd_restart(shell *sh, const stmt *st)
 {
-    (void)st;
+    /* the logs end with the world they logged (commands/trace, commands/events) */
+    cmd_status r = CMD_OK;
+    char err[LOG_PATH_MAX + 256];
+    if (log_trace_close(&sh->logs, err, sizeof err) != 0) {
+        sh_error(sh, st, "trace: %s", err);
+        r = CMD_ERROR;
+    }
+    if (log_events_close(&sh->logs, err, sizeof err) != 0) {
+        sh_error(sh, st, "events: %s", err);
+        r = CMD_ERROR;
+    }
     world_free(&sh->w);
     world_init(&sh->w);
     sh->w.set = sh->startup.sim;
@@ -50,7 +60,7 @@ cmd_status cmd_restart(shell *sh, const stmt *st)
     sh->set = sh->startup.shell;
     sh->rng = sh->set.seed;
     sh->current = sh->selected = sh->prev_selected = -1;
-    return CMD_OK;
+    return r;
 }
 
 cmd_status cmd_quit(shell *sh, const stmt *st)

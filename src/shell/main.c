@@ -7,6 +7,7 @@
  * never reads standard input.  With -b, or when input is not a terminal, the first
  * error ends the run with status 1.  Status 2: a bad command line.
  */
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -147,9 +148,17 @@ int main(int argc, char **argv)
                    VROC_VERSION);
         status = shell_loop(&sh);
     }
+    /* the logs' last rows and standard output are checked too: a write that
+     * failed is never silent */
+    if (shell_close_outputs(&sh) != CMD_OK && sh.stop_on_error) status = 1;
     shell_free(&sh);
     free(cmds);
     free(files);
-    fflush(stdout);
+    errno = 0;
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fprintf(stderr, "error: cannot write the standard output: %s\n",
+                strerror(errno ? errno : EIO));
+        status = 1;
+    }
     return status;
 }
