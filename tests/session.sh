@@ -14,7 +14,7 @@ expect "the Simple scene: 6 subframes" 0 "subframes = 6" "$VROC" -b "$S/simple.v
 
 # batch: the first error stops the run with status 1, naming file and line
 printf 'sphere a\nradius = 0.5\n\nradius = -2\n' > "$TMP/bad.vroc"
-expect "batch: an error in a file exits 1 with file:line" 1 "bad.vroc:4: error: radius must be > 0 (got -2)" \
+expect "batch: an error in a file exits 1 with file:line" 1 "bad.vroc:4: error: radius must be between 1e-06 and 10000 (got -2)" \
     "$VROC" -b "$TMP/bad.vroc"
 out=$("$VROC" -b "$TMP/bad.vroc" -c 'print a' 2>&1)
 case "$out" in *"sphere a"*) notok "batch: nothing runs after the first error" "$out" ;;

@@ -1,6 +1,7 @@
 /* edit.c: the changes a command makes to the world (edit.h). */
 #include "edit.h"
 
+#include <math.h>
 #include <stdio.h>
 
 #include "rest.h"
@@ -16,6 +17,20 @@ static int rebuild(body *b, shape_params old, char *err, size_t errlen)
     return 0;
 }
 
+/* v, or v scaled down to length max when it is longer: for any finite v, since the
+ * length is taken of v over its largest component (no square overflows).  A
+ * length within rounding of max (a speed the simulation limited, saved and read
+ * back) is left to the last bit; the flight's own limit is the same. */
+static vec3 limit_length(vec3 v, double max)
+{
+    double m = fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z)));
+    if (!(m > 0)) return v;
+    vec3 u = v3(v.x / m, v.y / m, v.z / m);
+    double l = v3_len(u); /* 1 to sqrt(3) */
+    if (m <= max / l * (1 + 1e-12)) return v;
+    return v3_scale(u, max / l);
+}
+
 int edit_property(world *w, int i, size_t off, const double *num, char *err, size_t errlen)
 {
     body *b = w->bodies[i];
@@ -29,8 +44,8 @@ int edit_property(world *w, int i, size_t off, const double *num, char *err, siz
     /* objects resting on this one lose their support's old place */
     rest_wake_on(w, i);
     switch (off) {
-    case offsetof(body, v): b->v = v; return 0;
-    case offsetof(body, w): body_set_angular_vel(b, v); return 0;
+    case offsetof(body, v): b->v = limit_length(v, w->set.max_linear); return 0;
+    case offsetof(body, w): body_set_angular_vel(b, limit_length(v, w->set.max_angular)); return 0;
     case offsetof(body, elasticity): b->elasticity = num[0]; return 0;
     case offsetof(body, mass):
         body_set_mass(b, num[0]);
