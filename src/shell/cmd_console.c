@@ -56,6 +56,11 @@ cmd_status cmd_show(shell *sh, const stmt *st)
 
 cmd_status cmd_save(shell *sh, const stmt *st)
 {
+    char why[SHELL_PATH_MAX + 256];
+    if (outfile_allowed(st->word, why, sizeof why) != 0) {
+        sh_error(sh, st, "save: %s", why);
+        return CMD_ERROR;
+    }
     FILE *f = fopen(st->word, "w");
     if (!f) {
         sh_error(sh, st, "save: cannot write '%s': %s", st->word, strerror(errno));

@@ -14,6 +14,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "outfile.h"
 #include "shell.h"
 
 static void usage(FILE *f)
@@ -118,6 +119,14 @@ int main(int argc, char **argv)
     bool tty = isatty(STDIN_FILENO) && isatty(STDOUT_FILENO);
     sh.interactive = !batch && tty;
     sh.stop_on_error = batch || !isatty(STDIN_FILENO);
+    char why[1200];
+    if (outdir && outfile_allowed(outdir, why, sizeof why) != 0) {
+        fprintf(stderr, "vroc: -o: %s\n", why);
+        free(cmds);
+        free(files);
+        shell_free(&sh);
+        return 2;
+    }
     if (outdir) {
         snprintf(sh.view_set.output, sizeof sh.view_set.output, "%s", outdir);
         sh.startup.view = sh.view_set;

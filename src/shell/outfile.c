@@ -2,6 +2,8 @@
 #include "outfile.h"
 
 #include <errno.h>
+#include <stdbool.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* The message of a failed write; errno as the failing call left it, or EIO when
@@ -9,6 +11,23 @@
 static int failed(const char *path, int e, char *err, size_t errlen)
 {
     snprintf(err, errlen, "cannot write '%s': %s", path, strerror(e ? e : EIO));
+    return -1;
+}
+
+int outfile_allowed(const char *path, char *err, size_t errlen)
+{
+    const char *box = getenv("VROC_SANDBOX");
+    if (!box || !*box) return 0;
+    bool up = false;
+    for (const char *p = path; *p;) {
+        size_t n = strcspn(p, "/");
+        if (n == 2 && p[0] == '.' && p[1] == '.') up = true;
+        p += n;
+        while (*p == '/') p++;
+    }
+    if (path[0] != '/' && !up) return 0;
+    snprintf(err, errlen, "'%s' is outside the current folder, and VROC_SANDBOX allows writing "
+             "only below it", path);
     return -1;
 }
 

@@ -19,6 +19,13 @@
  * Returns 0, or -1 with "cannot write 'path': reason" in err. */
 int outfile_flush(FILE *f, const char *path, char *err, size_t errlen);
 
+/* Whether vroc may write at path.  Anywhere, unless the environment variable
+ * VROC_SANDBOX is set (to anything but ""): then only below the current folder,
+ * so a relative path without a ".." part (what the fuzz campaign runs with: vroc
+ * itself makes no links, so nothing it writes can leave that folder).  Returns 0,
+ * or -1 with a message in err. */
+int outfile_allowed(const char *path, char *err, size_t errlen);
+
 /* Checks f's writes as outfile_flush does, then closes it (NULL: nothing to do).
  * Returns 0, or -1 with the message in err; f is closed either way. */
 int outfile_close(FILE *f, const char *path, char *err, size_t errlen);
