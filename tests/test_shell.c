@@ -419,6 +419,34 @@ static void failed_logs_are_turned_off(void **state)
     g_sh.stop_on_error = true;
 }
 
+/* random's refusal is true: it says how many objects fit, adds none and leaves
+ * its sequence as it was, so that random with that many adds them; a larger box
+ * holds no more, since the objects grow with it. */
+static void random_says_how_many_fit(void **state)
+{
+    (void)state;
+    long fit[2];
+    for (int big = 0; big < 2; big++) {
+        assert_int_equal(run(big ? "restart; random_box = (50, 50, 50)\n" : "restart\n"), CMD_OK);
+        unsigned long long rng = g_sh.rng;
+        assert_int_equal(run("random 2000\n"), CMD_ERROR);
+        const char *m = strstr(g_errbuf, "random: only ");
+        assert_non_null(m);
+        assert_int_equal(sscanf(m, "random: only %ld of the 2000 objects found room", &fit[big]), 1);
+        assert_non_null(strstr(m, "so none was added"));
+        assert_int_equal(g_sh.w.n, 0);
+        assert_true(g_sh.rng == rng);
+        char text[64];
+        snprintf(text, sizeof text, "random %ld\n", fit[big]);
+        assert_int_equal(run(text), CMD_OK);
+        assert_int_equal(g_sh.w.n, fit[big]);
+        assert_int_equal(run("random 1\n"), CMD_ERROR); /* full: the second message */
+        assert_non_null(strstr(g_errbuf, "random: no room for an object in random_box"));
+    }
+    assert_true(fit[0] > 100);
+    assert_int_equal(fit[1], fit[0]);
+}
+
 static void trace_writes_a_row_per_object_per_frame(void **state)
 {
     (void)state;
@@ -472,6 +500,7 @@ int main(void)
         cmocka_unit_test(failed_record_stops_a_batch_run),
         cmocka_unit_test(trace_writes_a_row_per_object_per_frame),
         cmocka_unit_test(failed_logs_are_turned_off),
+        cmocka_unit_test(random_says_how_many_fit),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
