@@ -54,6 +54,33 @@ printf 'read b/inner.vroc\n' > "$TMP/a/outer.vroc"
 expect "read: paths relative to the reading file" 0 "inner" sh -c "cd / && '$VROC' -b '$TMP/a/outer.vroc' -c list"
 expect "read: the scenes folder is searched" 0 "objects = 4" \
     sh -c "cd '$TMP' && VROC_SCENES='$S' '$VROC' -b -c 'read simple.vroc; stats'"
+printf 'read simple.vroc\n' > "$TMP/a/scene-reader.vroc"
+expect "read: a file finds a scene in the scenes folder too" 0 "objects = 4" \
+    sh -c "cd / && VROC_SCENES='$S' '$VROC' -b '$TMP/a/scene-reader.vroc' -c stats"
+
+# files nest 16 deep, whether the first is named on the command line or read
+mkdir -p "$TMP/nest"
+for i in $(seq 1 17); do echo "read f$((i + 1)).vroc" > "$TMP/nest/f$i.vroc"; done
+echo "sphere deepest" > "$TMP/nest/f18.vroc"
+for how in "command line" read; do
+    for n in 16 17; do
+        first=$((19 - n))
+        if [ "$how" = read ]; then
+            out=$(cd "$TMP/nest" && "$VROC" -b -c "read f$first.vroc; list" 2>&1)
+        else
+            out=$(cd "$TMP/nest" && "$VROC" -b "f$first.vroc" -c list 2>&1)
+        fi
+        status=$?
+        if [ $n -eq 16 ]; then
+            case "$status:$out" in 0:deepest*) ok "$how: $n files reading each other run" ;;
+                *) notok "$how: $n files reading each other run" "status $status" "$out" ;; esac
+        else
+            case "$status:$out" in 1:*"f17.vroc:1: error: files read each other deeper than 16 levels (at 'f18.vroc')"*)
+                ok "$how: $n files reading each other are refused at the same place" ;;
+                *) notok "$how: $n files reading each other are refused at the same place" "status $status" "$out" ;; esac
+        fi
+    done
+done
 
 # a thrown sphere under gravity after run 10, to 1e-9, whatever internal_step
 for step in 0 0.001 0.03; do

@@ -145,6 +145,29 @@ static void the_catalogue_of_broken_statements(void **state)
     expect_error("sphere a; radius = 1; bogus\n", 1, "unknown command 'bogus'");
 }
 
+/* A number may be as long as a word: digits beyond a double's are rounded. */
+static void long_numbers(void **state)
+{
+    (void)state;
+    char text[2400];
+    for (int zeros = 120; zeros <= 1000; zeros += 440) {
+        int n = snprintf(text, sizeof text, "radius = 0.5");
+        memset(text + n, '0', (size_t)zeros);
+        snprintf(text + n + zeros, sizeof text - (size_t)(n + zeros), "1\nmass = 1.");
+        n = (int)strlen(text);
+        memset(text + n, '0', (size_t)zeros);
+        snprintf(text + n + zeros, sizeof text - (size_t)(n + zeros), "\n");
+        program *p = parse(text);
+        if (!p) fail_msg("a number of %d digits was refused: %s", zeros + 3, g_err);
+        assert_true(p->s[0].num[0] == 0.5);
+        assert_true(p->s[1].num[0] == 1);
+        program_free(p);
+    }
+    /* a tiny value keeps its value, and the message prints it so that it reads back */
+    expect_error("radius = 5e-324\n", 1, "radius must be between 1e-06 and 10000 (got 4.94065645841247e-324)");
+    expect_error("radius = 1e-400\n", 1, "(got 0)");
+}
+
 static void binary_garbage_and_huge_lines(void **state)
 {
     (void)state;
@@ -192,7 +215,7 @@ static program *parse_path(const char *name)
     char path[256];
     snprintf(path, sizeof path, "%s/%s", g_dir, name);
     lang_paths paths = {NULL, NULL};
-    return lang_parse_file(path, &paths, 0, NULL, 0, NULL, 0, g_err, sizeof g_err);
+    return lang_parse_file(path, &paths, 1, NULL, 0, NULL, 0, g_err, sizeof g_err);
 }
 
 static void files_read_files(void **state)
@@ -249,6 +272,13 @@ static void files_read_files(void **state)
     }
     assert_null(parse_path("d0.vroc"));
     assert_non_null(strstr(g_err, "deeper than 16 levels"));
+    write_file("d16.vroc", "sphere deep\n"); /* d0 to d16: 17 files */
+    assert_null(parse_path("d0.vroc"));
+    assert_non_null(strstr(g_err, "d15.vroc:1: error: files read each other deeper than 16 levels"));
+    write_file("d15.vroc", "sphere edge\n"); /* d0 to d15: 16 files, the limit */
+    p = parse_path("d0.vroc");
+    assert_non_null(p);
+    program_free(p);
     write_file("d10.vroc", "sphere shallow\n"); /* now 10 deep: fine */
     p = parse_path("d0.vroc");
     assert_non_null(p);
@@ -325,6 +355,7 @@ int main(void)
         cmocka_unit_test(accepts_the_language),
         cmocka_unit_test(the_catalogue_of_broken_statements),
         cmocka_unit_test(binary_garbage_and_huge_lines),
+        cmocka_unit_test(long_numbers),
         cmocka_unit_test(files_read_files),
         cmocka_unit_test(names),
         cmocka_unit_test(numbers_print_to_read_back_exactly),

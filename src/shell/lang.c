@@ -588,14 +588,14 @@ static bool file_exists(const char *path)
 
 int lang_resolve(const char *name, const lang_paths *paths, char *out, size_t outlen)
 {
-    if (name[0] == '/' || (paths && paths->base_dir)) {
-        if (name[0] == '/' || !paths->base_dir || strcmp(paths->base_dir, ".") == 0)
-            snprintf(out, outlen, "%s", name);
-        else
-            snprintf(out, outlen, "%s/%s", paths->base_dir, name);
+    if (name[0] == '/') {
+        snprintf(out, outlen, "%s", name);
         return file_exists(out) ? 0 : -1;
     }
-    snprintf(out, outlen, "%s", name);
+    if (paths && paths->base_dir && strcmp(paths->base_dir, ".") != 0)
+        snprintf(out, outlen, "%s/%s", paths->base_dir, name);
+    else
+        snprintf(out, outlen, "%s", name);
     if (file_exists(out)) return 0;
     if (paths && paths->scene_dir) {
         char alt[PATH_MAX];

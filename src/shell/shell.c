@@ -172,7 +172,8 @@ cmd_status shell_run_file(shell *sh, const char *path)
 {
     char err[1024];
     lang_paths paths = paths_of(sh);
-    program *p = lang_parse_file(path, &paths, 0, NULL, 0, NULL, 0, err, sizeof err);
+    /* level 1, as a file read at the prompt: one nesting limit for both */
+    program *p = lang_parse_file(path, &paths, 1, NULL, 0, NULL, 0, err, sizeof err);
     return run_parsed(sh, p, err);
 }
 

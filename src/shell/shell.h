@@ -66,7 +66,6 @@ typedef struct shell {
     bool stop_on_error;    /* -b, or input that is not a terminal */
     FILE *out, *err;
     const char *scene_dir; /* installed scenes folder */
-    int read_depth;        /* files being run */
     unsigned long long rng; /* state of `random`, reset by seed */
     bool found_apart;      /* shell_check_start found no overlap since the last
                             * statement began: time may run on unchecked */
