@@ -7,7 +7,8 @@
 # of the language, the simulation and the views can be reached.  It starts from
 # tests/fuzz/seeds/ (the scenes, and one script per command: its example) with a
 # dictionary made from commands/ (tools/fuzzdict.awk), and runs for FUZZ_TIME
-# seconds (60 by default) at nice 10.
+# seconds (60 by default) at nice 10.  FUZZ_SEEDS names another folder to start
+# from, such as an earlier campaign's out/default/queue.
 #
 # Nothing it writes can leave the scratch folder FUZZ_DIR (build-fuzz/run): vroc
 # runs with that folder's work/ as its working directory and HOME, and with
@@ -48,7 +49,8 @@ export AFL_NO_AFFINITY=1 AFL_SKIP_BIN_CHECK=0
 export ASAN_OPTIONS=abort_on_error=1:detect_leaks=0:symbolize=0:allocator_may_return_null=1
 export UBSAN_OPTIONS=halt_on_error=1:abort_on_error=1:print_stacktrace=1
 echo "fuzz: $time s in $scratch (nice 10)"
-nice -n 10 afl-fuzz -V "$time" -i "$root/tests/fuzz/seeds" -o "$scratch/out" \
+seeds=${FUZZ_SEEDS:-$root/tests/fuzz/seeds}
+nice -n 10 afl-fuzz -V "$time" -i "$seeds" -o "$scratch/out" \
     -x "$scratch/vroc.dict" -t 3000 -m none -- "$scratch/vroc" -b -q @@ > "$scratch/afl.log" 2>&1 || {
     tail -30 "$scratch/afl.log" >&2
     exit 1
