@@ -66,9 +66,9 @@ static int get_number(const token *t, const command *c, double *out, const where
     if (end == tmp || *end != '\0') {
         perr(at, "%s: expected a number, got %s", c->name, tok_text(t, buf));
         rc = -1;
-    } else if (!isfinite(x) || (errno == ERANGE && fabs(x) > 1)) {
-        /* overflow; an underflow keeps the tiny value strtod gives (or 0), which
-         * the limits then judge, and which messages print as it reads back */
+    } else if (!isfinite(x)) {
+        /* nan, inf or an overflow; an underflow keeps the tiny value strtod gives
+         * (or 0), which the limits then judge and messages print as it reads back */
         if (t->len <= 40) perr(at, "%s must be a finite number (got %s)", c->name, tmp);
         else perr(at, "%s must be a finite number (got %s)", c->name, tok_text(t, buf));
         rc = -1;
@@ -144,15 +144,14 @@ static const char *range_text(unsigned range, double lo, double hi, char buf[RAN
 
 /* The range checks of the table entry on one number; what names it in the
  * message ("radius", "size components", "rotate: the angle"). */
-static int check_range_of(const command *c, const char *what, unsigned range, double lo,
-                          double hi, double x, const where *at)
+static int check_range_of(const char *what, unsigned range, double lo, double hi, double x,
+                          const where *at)
 {
     char g[32], r[RANGE_TEXT];
     if ((range & R_NONZERO) && x == 0) {
         perr(at, "%s must not be 0", what);
         return -1;
     }
-    (void)c;
     if (!(range & R_RANGE) || in_range(range, lo, hi, x)) return 0;
     perr(at, "%s must be %s (got %s)", what, range_text(range, lo, hi, r),
          num_text(x, g));
@@ -161,7 +160,7 @@ static int check_range_of(const command *c, const char *what, unsigned range, do
 
 static int check_range(const command *c, double x, const where *at)
 {
-    return check_range_of(c, c->name, c->range, c->lo, c->hi, x, at);
+    return check_range_of(c->name, c->range, c->lo, c->hi, x, at);
 }
 
 /* The checks of a vector's components, and of a direction's length. */
@@ -170,7 +169,7 @@ static int check_vector(const command *c, const double *v, const where *at)
     char what[96];
     snprintf(what, sizeof what, "%s components", c->name);
     for (int k = 0; k < 3; k++)
-        if (check_range_of(c, what, c->range & ~(unsigned)R_NONZERO, c->lo, c->hi, v[k], at) != 0)
+        if (check_range_of(what, c->range & ~(unsigned)R_NONZERO, c->lo, c->hi, v[k], at) != 0)
             return -1;
     if (!(c->range & R_NONZERO_VEC)) return 0;
     bool zero = v[0] == 0 && v[1] == 0 && v[2] == 0;
@@ -316,7 +315,7 @@ static int parse_value(stmt *st, const token *t, int nt, const where *at)
             if (get_number(&t[i], c, &st->num[3], at) != 0) return -1;
             char what[96];
             snprintf(what, sizeof what, "%s: the %s", c->name, c->what2);
-            if (check_range_of(c, what, R_RANGE, c->lo2, c->hi2, st->num[3], at) != 0)
+            if (check_range_of(what, R_RANGE, c->lo2, c->hi2, st->num[3], at) != 0)
                 return -1;
             st->n = 4;
             i++;
@@ -333,7 +332,7 @@ static int parse_value(stmt *st, const token *t, int nt, const where *at)
         snprintf(what, sizeof what, "%s components", c->name);
         for (int k = 0; k < 2; k++)
             if (check_integer(c, st->num[k], at) != 0 ||
-                check_range_of(c, what, c->range, c->lo, c->hi, st->num[k], at) != 0)
+                check_range_of(what, c->range, c->lo, c->hi, st->num[k], at) != 0)
                 return -1;
         st->n = 2;
         break;
