@@ -43,10 +43,15 @@ case "$status:$out" in "1:error: events: cannot write 'e.csv': File too large; e
     *) notok "an events log that outgrows the limit stops the batch run, saying why" "status $status" "$out" ;; esac
 
 # frames: output is a folder, so only the size limit can fail them
+# (the sanitizer build may add LeakSanitizer's list of the suppressions it used:
+# Mesa's own memory, view.c; so the error is looked for as a whole line)
 out=$(limited 1 "$VROC" -b -c "sphere a; translate = (0, 3, 0); output = rec; record = on; run 5; print a" 2>&1); status=$?
-case "$status:$out" in "1:error: record: cannot write 'rec/frame-000001-left.png': File too large; record is now off, time stopped")
-    ok "a recorded frame that cannot be written stops the batch run, saying why" ;;
-    *) notok "a recorded frame that cannot be written stops the batch run, saying why" "status $status" "$out" ;; esac
+if [ $status -eq 1 ] && printf '%s\n' "$out" | grep -qxF "error: record: cannot write 'rec/frame-000001-left.png': File too large; record is now off, time stopped" &&
+    ! printf '%s\n' "$out" | grep -q "^sphere a"; then
+    ok "a recorded frame that cannot be written stops the batch run, saying why"
+else
+    notok "a recorded frame that cannot be written stops the batch run, saying why" "status $status" "$out"
+fi
 [ -e rec/frame-000001-left.png ] && notok "a frame that failed is not left half written" ||
     ok "a frame that failed is not left half written"
 expect "refresh that cannot write its frame is an error" 1 \
