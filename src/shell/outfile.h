@@ -3,11 +3,12 @@
  * vroc writes files while time runs (trace, events, frames; later the soundtrack
  * and the movie) and on command (save).  A write that fails is never silent: the
  * writer flushes what it wrote and asks the system whether it arrived, and a
- * failure becomes "cannot write 'PATH': REASON" with the system's reason.  What
- * follows is one rule, shell_output_failed (shell.h): the output is turned off and
- * said so; at the prompt time goes on, a batch run stops with status 1.  A writer
- * that does not use stdio (libsndfile, an encoder) only has to produce the same
- * message and call the same function.
+ * failure becomes "cannot write 'PATH': REASON" with the system's reason.  A
+ * statement that fails so (save, trace = FILE) is an error like any other; for an
+ * output written while time runs there is one rule, shell_output_failed
+ * (shell.h): the output is turned off and said so, at the prompt time goes on, a
+ * batch run stops with status 1.  A writer that does not use stdio (libsndfile,
+ * an encoder) only has to produce the same message and call the same function.
  */
 #ifndef VROC_OUTFILE_H
 #define VROC_OUTFILE_H
