@@ -6,6 +6,7 @@
 #   make demo          the main job: run a thesis scene and write its stereo frames
 #   make deps          install the missing Debian packages (apt-get, sudo when not root)
 #   make record-hashes record the scenes' trace hashes anew (after an intended change)
+#   make fuzz          an AFL++ campaign of FUZZ_TIME seconds (tools/fuzz.sh)
 #   make install       binary, man page and scenes under $(DESTDIR)$(PREFIX)
 #   make clean         remove what make built
 #
@@ -62,7 +63,7 @@ BENCHES  = $(patsubst bench/%.c,%,$(wildcard bench/bench_*.c))
 core_obj  = $(patsubst src/%.c,$(1)/%.o,$(CORE_SRC))
 upper_obj = $(patsubst src/%.c,$(1)/%.o,$(UPPER_SRC)) $(1)/help_data.o
 
-.PHONY: all check check-build bench demo deps install uninstall clean record-hashes
+.PHONY: all check check-build bench demo deps install uninstall clean record-hashes fuzz
 .DELETE_ON_ERROR:
 
 all: vroc man/vroc.1
@@ -91,23 +92,24 @@ build/gen/help_data.c: $(COMMANDS) tools/mkhelp.awk
 man/vroc.1: man/vroc.1.in $(COMMANDS) tools/mkhelp.awk
 	awk -f tools/mkhelp.awk -v mode=man -v template=man/vroc.1.in $(COMMANDS) > $@
 
-# ---- the three builds: $(1) the folder, $(2) its extra flags ----
+# ---- the builds: $(1) the folder, $(2) its extra flags, $(3) its compiler
+# when not $(CC) ----
 define BUILD
 $(1)/core/%.o: src/core/%.c build/flags
 	@mkdir -p $$(@D)
-	$$(CC) $$(CFLAGS_CORE) $(2) -MMD -MP -c -o $$@ $$<
+	$$(or $(3),$$(CC)) $$(CFLAGS_CORE) $(2) -MMD -MP -c -o $$@ $$<
 
 $(1)/shell/%.o: src/shell/%.c build/flags | build/gen/help_data.c
 	@mkdir -p $$(@D)
-	$$(CC) $$(CFLAGS_ALL) $(2) -MMD -MP -c -o $$@ $$<
+	$$(or $(3),$$(CC)) $$(CFLAGS_ALL) $(2) -MMD -MP -c -o $$@ $$<
 
 $(1)/view/%.o: src/view/%.c build/flags
 	@mkdir -p $$(@D)
-	$$(CC) $$(CFLAGS_ALL) $(2) -MMD -MP -c -o $$@ $$<
+	$$(or $(3),$$(CC)) $$(CFLAGS_ALL) $(2) -MMD -MP -c -o $$@ $$<
 
 $(1)/help_data.o: build/gen/help_data.c build/flags
 	@mkdir -p $$(@D)
-	$$(CC) $$(CFLAGS_ALL) $(2) -c -o $$@ $$<
+	$$(or $(3),$$(CC)) $$(CFLAGS_ALL) $(2) -c -o $$@ $$<
 
 $(1)/libvroc-core.a: $(call core_obj,$(1))
 	rm -f $$@
@@ -118,7 +120,7 @@ $(1)/libvroc.a: $(call upper_obj,$(1))
 	ar rcs $$@ $$^
 
 $(1)/vroc: $(1)/shell/main.o $(1)/libvroc.a $(1)/libvroc-core.a
-	$$(CC) $$(OPT) $(2) -o $$@ $$^ $$(LIBS) $$(LDFLAGS)
+	$$(or $(3),$$(CC)) $$(OPT) $(2) -o $$@ $$^ $$(LIBS) $$(LDFLAGS)
 
 $(addprefix $(1)/tests/,$(CORE_TESTS)): $(1)/tests/%: tests/%.c tests/check.h tests/worlds.h $(1)/libvroc-core.a build/flags
 	@mkdir -p $$(@D)
@@ -132,6 +134,9 @@ endef
 $(eval $(call BUILD,build,))
 $(eval $(call BUILD,build-san,$(SAN)))
 $(eval $(call BUILD,build-val,$(VAL)))
+# the fuzz target: AFL++'s instrumenting compiler, with the sanitizers
+FUZZ_CC ?= afl-clang-fast
+$(eval $(call BUILD,build-fuzz,$(SAN),$(FUZZ_CC)))
 
 vroc: build/vroc
 	cp build/vroc $@
@@ -159,6 +164,14 @@ bench: deps
 	@$(MAKE) --no-print-directory vroc $(addprefix build/bench/,$(BENCHES))
 	@sh bench/run.sh
 
+# ---- fuzzing: an AFL++ campaign of FUZZ_TIME seconds in a scratch folder; what
+# it finds goes into tests/fuzz/regress/, which check replays (tools/fuzz.sh) ----
+FUZZ_TIME ?= 60
+fuzz:
+	@sh tools/deps.sh fuzz
+	@$(MAKE) --no-print-directory build-fuzz/vroc
+	@FUZZ_TIME=$(FUZZ_TIME) sh tools/fuzz.sh
+
 # ---- the main job ----
 demo: deps
 	@$(MAKE) --no-print-directory vroc
@@ -179,6 +192,6 @@ uninstall:
 	rm -rf $(DESTDIR)$(PREFIX)/share/vroc
 
 clean:
-	rm -rf build build-san build-val vroc tests/out
+	rm -rf build build-san build-val build-fuzz vroc tests/out
 
 -include $(wildcard build*/core/*.d build*/shell/*.d build*/view/*.d build*/tests/*.d)

@@ -14,7 +14,7 @@ expect "the Simple scene: 6 subframes" 0 "subframes = 6" "$VROC" -b "$S/simple.v
 
 # batch: the first error stops the run with status 1, naming file and line
 printf 'sphere a\nradius = 0.5\n\nradius = -2\n' > "$TMP/bad.vroc"
-expect "batch: an error in a file exits 1 with file:line" 1 "bad.vroc:4: error: radius must be > 0 (got -2)" \
+expect "batch: an error in a file exits 1 with file:line" 1 "bad.vroc:4: error: radius must be between 1e-06 and 10000 (got -2)" \
     "$VROC" -b "$TMP/bad.vroc"
 out=$("$VROC" -b "$TMP/bad.vroc" -c 'print a' 2>&1)
 case "$out" in *"sphere a"*) notok "batch: nothing runs after the first error" "$out" ;;
@@ -54,6 +54,33 @@ printf 'read b/inner.vroc\n' > "$TMP/a/outer.vroc"
 expect "read: paths relative to the reading file" 0 "inner" sh -c "cd / && '$VROC' -b '$TMP/a/outer.vroc' -c list"
 expect "read: the scenes folder is searched" 0 "objects = 4" \
     sh -c "cd '$TMP' && VROC_SCENES='$S' '$VROC' -b -c 'read simple.vroc; stats'"
+printf 'read simple.vroc\n' > "$TMP/a/scene-reader.vroc"
+expect "read: a file finds a scene in the scenes folder too" 0 "objects = 4" \
+    sh -c "cd / && VROC_SCENES='$S' '$VROC' -b '$TMP/a/scene-reader.vroc' -c stats"
+
+# files nest 16 deep, whether the first is named on the command line or read
+mkdir -p "$TMP/nest"
+for i in $(seq 1 17); do echo "read f$((i + 1)).vroc" > "$TMP/nest/f$i.vroc"; done
+echo "sphere deepest" > "$TMP/nest/f18.vroc"
+for how in "command line" read; do
+    for n in 16 17; do
+        first=$((19 - n))
+        if [ "$how" = read ]; then
+            out=$(cd "$TMP/nest" && "$VROC" -b -c "read f$first.vroc; list" 2>&1)
+        else
+            out=$(cd "$TMP/nest" && "$VROC" -b "f$first.vroc" -c list 2>&1)
+        fi
+        status=$?
+        if [ $n -eq 16 ]; then
+            case "$status:$out" in 0:deepest*) ok "$how: $n files reading each other run" ;;
+                *) notok "$how: $n files reading each other run" "status $status" "$out" ;; esac
+        else
+            case "$status:$out" in 1:*"f17.vroc:1: error: files read each other deeper than 16 levels (at 'f18.vroc')"*)
+                ok "$how: $n files reading each other are refused at the same place" ;;
+                *) notok "$how: $n files reading each other are refused at the same place" "status $status" "$out" ;; esac
+        fi
+    done
+done
 
 # a thrown sphere under gravity after run 10, to 1e-9, whatever internal_step
 for step in 0 0.001 0.03; do
@@ -84,6 +111,12 @@ grep -q "^rotate = (1, 2, 3) 0.7$" "$TMP/p1" &&
 "$VROC" -b -q "$TMP/world.vroc" -c "show" > "$TMP/s1" 2>&1
 "$VROC" -b -q -c "read $TMP/saved.vroc; show" > "$TMP/s2" 2>&1
 same "save and read give the same show" "$TMP/s1" "$TMP/s2"
+
+# restart and quit end the logs, as trace's and events' pages say
+"$VROC" -b -q -c "sphere a; trace = $TMP/r.csv; events = $TMP/re.csv; restart; sphere b; run 2; show" > "$TMP/r.show" 2>&1
+grep -q '^trace = off$' "$TMP/r.show" && grep -q '^events = off$' "$TMP/r.show" && [ "$(wc -l < "$TMP/r.csv")" -eq 2 ] &&
+    ok "restart closes the trace and the events log" ||
+    notok "restart closes the trace and the events log" "$(grep -E '^(trace|events)' "$TMP/r.show")" "$(wc -l < "$TMP/r.csv") lines"
 
 # start in a script: time does not run by itself there
 expect "start in batch says how time runs" 0 "use run N in scripts" "$VROC" -b -c 'start; time'

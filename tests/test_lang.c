@@ -106,26 +106,26 @@ static void the_catalogue_of_broken_statements(void **state)
     expect_error("radius = 1e999\n", 1, "finite number");
     expect_error("translate = (0, -inf, 0)\n", 1, "finite number");
     expect_error("mass = 0\n", 1, "mass must not be 0");
-    expect_error("radius = -1\n", 1, "radius must be > 0 (got -1)");
+    expect_error("radius = -1\n", 1, "radius must be between 1e-06 and 10000 (got -1)");
     expect_error("size = (1, 1)\n", 1, "(x, y, z)");
-    expect_error("a2 = 0\n", 1, "a2 must be > 0 (got 0)");
-    expect_error("exp1 = -0.5\n", 1, "exp1 must be > 0");
-    expect_error("ures = 2\n", 1, "ures must be from 3 to 1000 (got 2)");
+    expect_error("a2 = 0\n", 1, "a2 must be between 1e-06 and 10000 (got 0)");
+    expect_error("exp1 = -0.5\n", 1, "exp1 must be between 0.001 and 100 (got -0.5)");
+    expect_error("ures = 2\n", 1, "ures must be between 3 and 1000 (got 2)");
     expect_error("vres = 3.5\n", 1, "vres must be a whole number (got 3.5)");
-    expect_error("elasticity = 1.5\n", 1, "elasticity must be from 0 to 1 (got 1.5)");
-    expect_error("color = (256, 0, 0)\n", 1, "0 to 255 (got 256)");
-    expect_error("color = (1.5, 0, 0)\n", 1, "0 to 255 (got 1.5)");
+    expect_error("elasticity = 1.5\n", 1, "elasticity must be between 0 and 1 (got 1.5)");
+    expect_error("color = (256, 0, 0)\n", 1, "whole numbers between 0 and 255 (got 256)");
+    expect_error("color = (1.5, 0, 0)\n", 1, "whole numbers between 0 and 255 (got 1.5)");
     expect_error("radius = 2 3\n", 1, "unexpected '3' after the value");
     expect_error("start now\n", 1, "unexpected 'now'");
     expect_error("start = 1\n", 1, "takes no '='");
-    expect_error("time_step = -0.1\n", 1, "time_step must be >= 0 (got -0.1)");
-    expect_error("collision_dist = 0\n", 1, "collision_dist must be > 0 (got 0)");
-    expect_error("max_linear = -1\n", 1, "max_linear must be >= 0");
+    expect_error("time_step = -0.1\n", 1, "time_step must be 0 or between 1e-06 and 1000 (got -0.1)");
+    expect_error("collision_dist = 0\n", 1, "collision_dist must be between 1e-06 and 10000 (got 0)");
+    expect_error("max_linear = -1\n", 1, "max_linear must be between 0 and 10000 (got -1)");
     expect_error("force = (0, 0, 0) 9.8\n", 1, "force: the direction (0, 0, 0)");
     expect_error("rotate = (0, 0, 0) 1\n", 1, "rotate: the direction (0, 0, 0)");
     expect_error("up = (0, 0, 0)\n", 1, "up must not be (0, 0, 0)");
-    expect_error("fov = 180\n", 1, "fov must be from 0 to 180");
-    expect_error("image_size = (8, 8)\n", 1, "image_size must be from 16 to 8192");
+    expect_error("fov = 180\n", 1, "fov must be between 0 and 180, limits excluded (got 180)");
+    expect_error("image_size = (8, 8)\n", 1, "image_size components must be between 16 and 8192 (got 8)");
     expect_error("stereo = quad\n", 1, "stereo must be one of pair|sbs|anaglyph|mono (got 'quad')");
     expect_error("record = yes\n", 1, "record must be on or off (got 'yes')");
     expect_error("sphere 3d\n", 1, "'3d' is not a valid object name");
@@ -134,15 +134,38 @@ static void the_catalogue_of_broken_statements(void **state)
     expect_error("ball.nosuch = 3\n", 1, "'nosuch' is not an object property");
     expect_error("ball.time_step = 3\n", 1, "'time_step' is not an object property");
     expect_error("read \"unterminated\n", 1, "unterminated string");
-    expect_error("run -1\n", 1, "run must be from 0 to 1000000000 (got -1)");
+    expect_error("run -1\n", 1, "run must be between 0 and 1000000000 (got -1)");
     expect_error("run 1.5\n", 1, "whole number");
     expect_error("(1, 2, 3)\n", 1, "expected a command, got '('");
     expect_error("= 3\n", 1, "expected a command, got '='");
     expect_error("distance a\n", 1, "distance: missing an object name");
-    expect_error("seed = -1\n", 1, "seed must be from 0");
+    expect_error("seed = -1\n", 1, "seed must be between 0 and 4294967295 (got -1)");
     expect_error("trace = \n", 1, "missing value");
     expect_error("output = \"\"\n", 1, "file name is empty");
     expect_error("sphere a; radius = 1; bogus\n", 1, "unknown command 'bogus'");
+}
+
+/* A number may be as long as a word: digits beyond a double's are rounded. */
+static void long_numbers(void **state)
+{
+    (void)state;
+    char text[2400];
+    for (int zeros = 120; zeros <= 1000; zeros += 440) {
+        int n = snprintf(text, sizeof text, "radius = 0.5");
+        memset(text + n, '0', (size_t)zeros);
+        snprintf(text + n + zeros, sizeof text - (size_t)(n + zeros), "1\nmass = 1.");
+        n = (int)strlen(text);
+        memset(text + n, '0', (size_t)zeros);
+        snprintf(text + n + zeros, sizeof text - (size_t)(n + zeros), "\n");
+        program *p = parse(text);
+        if (!p) fail_msg("a number of %d digits was refused: %s", zeros + 3, g_err);
+        assert_true(p->s[0].num[0] == 0.5);
+        assert_true(p->s[1].num[0] == 1);
+        program_free(p);
+    }
+    /* a tiny value keeps its value, and the message prints it so that it reads back */
+    expect_error("radius = 5e-324\n", 1, "radius must be between 1e-06 and 10000 (got 4.94065645841247e-324)");
+    expect_error("radius = 1e-400\n", 1, "(got 0)");
 }
 
 static void binary_garbage_and_huge_lines(void **state)
@@ -192,7 +215,7 @@ static program *parse_path(const char *name)
     char path[256];
     snprintf(path, sizeof path, "%s/%s", g_dir, name);
     lang_paths paths = {NULL, NULL};
-    return lang_parse_file(path, &paths, 0, NULL, 0, NULL, 0, g_err, sizeof g_err);
+    return lang_parse_file(path, &paths, 1, NULL, 0, NULL, 0, g_err, sizeof g_err);
 }
 
 static void files_read_files(void **state)
@@ -223,7 +246,7 @@ static void files_read_files(void **state)
     write_file("bad-inner.vroc", "sphere c\n\nradius = -1\n");
     write_file("bad-outer.vroc", "sphere a\nread bad-inner.vroc\n");
     assert_null(parse_path("bad-outer.vroc"));
-    assert_non_null(strstr(g_err, "bad-inner.vroc:3: error: radius must be > 0 (got -1)"));
+    assert_non_null(strstr(g_err, "bad-inner.vroc:3: error: radius must be between 1e-06 and 10000 (got -1)"));
 
     /* a file that reads itself, directly or in a cycle */
     write_file("self.vroc", "sphere a\nread self.vroc\n");
@@ -249,6 +272,13 @@ static void files_read_files(void **state)
     }
     assert_null(parse_path("d0.vroc"));
     assert_non_null(strstr(g_err, "deeper than 16 levels"));
+    write_file("d16.vroc", "sphere deep\n"); /* d0 to d16: 17 files */
+    assert_null(parse_path("d0.vroc"));
+    assert_non_null(strstr(g_err, "d15.vroc:1: error: files read each other deeper than 16 levels"));
+    write_file("d15.vroc", "sphere edge\n"); /* d0 to d15: 16 files, the limit */
+    p = parse_path("d0.vroc");
+    assert_non_null(p);
+    program_free(p);
     write_file("d10.vroc", "sphere shallow\n"); /* now 10 deep: fine */
     p = parse_path("d0.vroc");
     assert_non_null(p);
@@ -325,6 +355,7 @@ int main(void)
         cmocka_unit_test(accepts_the_language),
         cmocka_unit_test(the_catalogue_of_broken_statements),
         cmocka_unit_test(binary_garbage_and_huge_lines),
+        cmocka_unit_test(long_numbers),
         cmocka_unit_test(files_read_files),
         cmocka_unit_test(names),
         cmocka_unit_test(numbers_print_to_read_back_exactly),

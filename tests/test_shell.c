@@ -3,8 +3,10 @@
  * round trips. */
 #include "check.h"
 
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include "shell/shell.h"
@@ -126,7 +128,7 @@ static void the_bad_input_catalogue(void **state)
     bad("radius = nan\n", "radius must be a finite number (got nan)");
     bad("translate = (inf, 0, 0)\n", "translate must be a finite number (got inf)");
     bad("mass = 0\n", "mass must not be 0");
-    bad("radius = -1\n", "radius must be > 0 (got -1)");
+    bad("radius = -1\n", "radius must be between 1e-06 and 10000 (got -1)");
     bad("radius = 1 2\n", "unexpected '2'");
     /* the first statements of a bad line do not run either: parsed whole first */
     bad("radius = 0.5; translate = (0, 0, 0); bogus\n", "unknown command 'bogus'");
@@ -342,7 +344,7 @@ static void real_time_checks_overlap_once(void **state)
 static void time_and_stats(void **state)
 {
     (void)state;
-    assert_int_equal(run("restart; time_step = 1e6; run 1\n"), CMD_ERROR);
+    assert_int_equal(run("restart; time_step = 1000; collision_dist = 0.001; run 1\n"), CMD_ERROR);
     assert_non_null(strstr(g_errbuf, "internal steps per frame (limit 1000000)"));
     assert_int_equal(g_sh.w.frame, 0);
     assert_int_equal(run("restart; sphere a; cube t; mass = -1; translate = (0, 0, -5)\n"
@@ -371,10 +373,78 @@ static void failed_record_stops_a_batch_run(void **state)
     assert_int_equal(g_sh.w.frame, 1);
     g_sh.stop_on_error = false; /* at the prompt */
     assert_int_equal(run("record = on; run 5\n"), CMD_OK);
-    assert_non_null(strstr(g_errbuf, "; recording turned off\n")); /* and time goes on */
+    assert_non_null(strstr(g_errbuf, "; record is now off\n")); /* and time goes on */
     assert_false(g_sh.view_set.record);
     assert_int_equal(g_sh.w.frame, 6);
     g_sh.stop_on_error = true;
+}
+
+/* A log that fails in the middle of a run (here: it outgrows the file size limit,
+ * SIGXFSZ ignored) is closed with an error that names it and says why; at the
+ * prompt time goes on without it, a batch run stops at that frame. */
+static void failed_logs_are_turned_off(void **state)
+{
+    (void)state;
+    char path[256], text[400];
+    struct rlimit old, lim;
+    assert_int_equal(getrlimit(RLIMIT_FSIZE, &old), 0);
+    void (*old_xfsz)(int) = signal(SIGXFSZ, SIG_IGN);
+    lim = old;
+    lim.rlim_cur = 4096;
+    path_in_dir(path, sizeof path, "small.csv");
+    for (int batch = 0; batch < 2; batch++) {
+        g_sh.stop_on_error = batch;
+        snprintf(text, sizeof text, "restart; sphere a; linear_vel = (1, 0, 0); trace = \"%s\"\n",
+                 path);
+        assert_int_equal(run(text), CMD_OK);
+        assert_int_equal(setrlimit(RLIMIT_FSIZE, &lim), 0);
+        cmd_status r = run("run 200\n");
+        assert_int_equal(setrlimit(RLIMIT_FSIZE, &old), 0);
+        if (!strstr(g_errbuf, "error: trace: cannot write '") ||
+            !strstr(g_errbuf, "small.csv': File too large; trace is now off"))
+            fail_msg("run 200 said: '%s'", g_errbuf);
+        assert_null(g_sh.logs.trace);
+        assert_string_equal(g_sh.logs.trace_path, "");
+        if (batch) {
+            assert_int_equal(r, CMD_ERROR);
+            assert_non_null(strstr(g_errbuf, "small.csv': File too large; trace is now off, time stopped\n"));
+            assert_true(g_sh.w.frame < 200);
+        } else {
+            assert_int_equal(r, CMD_OK);
+            assert_non_null(strstr(g_errbuf, "small.csv': File too large; trace is now off\n"));
+            assert_int_equal(g_sh.w.frame, 200);
+        }
+    }
+    signal(SIGXFSZ, old_xfsz);
+    g_sh.stop_on_error = true;
+}
+
+/* random's refusal is true: it says how many objects fit, adds none and leaves
+ * its sequence as it was, so that random with that many adds them; a larger box
+ * holds no more, since the objects grow with it. */
+static void random_says_how_many_fit(void **state)
+{
+    (void)state;
+    long fit[2];
+    for (int big = 0; big < 2; big++) {
+        assert_int_equal(run(big ? "restart; random_box = (50, 50, 50)\n" : "restart\n"), CMD_OK);
+        unsigned long long rng = g_sh.rng;
+        assert_int_equal(run("random 2000\n"), CMD_ERROR);
+        const char *m = strstr(g_errbuf, "random: only ");
+        assert_non_null(m);
+        assert_int_equal(sscanf(m, "random: only %ld of the 2000 objects found room", &fit[big]), 1);
+        assert_non_null(strstr(m, "so none was added"));
+        assert_int_equal(g_sh.w.n, 0);
+        assert_true(g_sh.rng == rng);
+        char text[64];
+        snprintf(text, sizeof text, "random %ld\n", fit[big]);
+        assert_int_equal(run(text), CMD_OK);
+        assert_int_equal(g_sh.w.n, fit[big]);
+        assert_int_equal(run("random 1\n"), CMD_ERROR); /* full: the second message */
+        assert_non_null(strstr(g_errbuf, "random: no room for an object in random_box"));
+    }
+    assert_true(fit[0] > 100);
+    assert_int_equal(fit[1], fit[0]);
 }
 
 static void trace_writes_a_row_per_object_per_frame(void **state)
@@ -429,6 +499,8 @@ int main(void)
         cmocka_unit_test(time_and_stats),
         cmocka_unit_test(failed_record_stops_a_batch_run),
         cmocka_unit_test(trace_writes_a_row_per_object_per_frame),
+        cmocka_unit_test(failed_logs_are_turned_off),
+        cmocka_unit_test(random_says_how_many_fit),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -1,5 +1,6 @@
 #!/bin/sh
 # deps.sh: install the Debian packages vroc needs that this machine lacks.
+# `deps.sh fuzz` (make fuzz) also wants AFL++ (afl++), which nothing else needs.
 # Checks with pkg-config and command -v first; on a ready machine it installs
 # nothing and prints one line.  Runs apt-get directly as root, through sudo
 # otherwise.  Used by `make deps`, itself a prerequisite of check, bench, demo.
@@ -28,6 +29,7 @@ fi
 need_cmd tmux tmux
 need_cmd mandoc mandoc
 need_cmd valgrind valgrind
+if [ "${1:-}" = fuzz ]; then need_cmd afl-fuzz afl++; fi
 
 if [ -z "$missing" ]; then
     echo "deps: all present"

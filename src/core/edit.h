@@ -15,9 +15,13 @@
 
 #include "world.h"
 
-/* Sets the property of body i at offset off in body from num (one number, three
+/* The values must lie within core/limits.h's limits (the shell's command table
+ * checks them); every computation that follows then stays finite.
+ *
+ * Sets the property of body i at offset off in body from num (one number, three
  * for a vector or a colour, four for an axis and an angle), as a command does:
- *   v (linear_vel), w (angular_vel, in world axes as typed), x (translate),
+ *   v (linear_vel), w (angular_vel, in world axes as typed; each limited to
+ *   max_linear or max_angular, scaled down whatever its size), x (translate),
  *   rot_axis (rotate: num[3] the angle), mass (non-zero; negative: static),
  *   elasticity, volume, color, and the shape's parameters sp.radius, sp.size,
  *   sp.exp1, sp.exp2, sp.a1, sp.a2, sp.a3, sp.ures, sp.vres (the shape is built

@@ -322,18 +322,16 @@ static void qrun_end(qrun *r)
     free(r->coords);
 }
 
-/* Copies qhull's first message line into err. */
+/* qhull's failure in plain words: its own message (its first line) speaks of its
+ * options and roundoff, which a user of vroc never set; it stays in the log. */
 static void qrun_message(qrun *r, const char *what, char *err, size_t errlen)
 {
-    fflush(r->log);
-    const char *msg = r->logbuf ? r->logbuf : "";
-    while (*msg == '\n') msg++;
-    size_t len = strcspn(msg, "\n");
     if (r->exitcode == qh_ERRsingular)
         set_err(err, errlen, "%s: points are coplanar or collinear (no volume)", what);
     else
-        set_err(err, errlen, "%s: qhull failed (exit code %d): %.*s", what, r->exitcode,
-                (int)(len < 200 ? len : 200), msg);
+        set_err(err, errlen,
+                "%s: the points are too close together for their size to make a solid",
+                what);
 }
 
 /* Runs qhull on n points, with its default merging of facets coplanar to roundoff
@@ -733,7 +731,8 @@ poly *poly_hull_merge(const vec3 *pts, int n, double angle, char *err, size_t er
     poly *p = hull_once(pts, n, err, errlen);
     if (!p) return NULL;
     if (!(poly_mass(p).volume > 1e-12 * size * size * size)) {
-        set_err(err, errlen, "convex hull: points are nearly coplanar (no volume)");
+        set_err(err, errlen, "convex hull: the solid is too thin: its volume is under 1e-12 "
+                "of the cube around it");
         poly_free(p);
         return NULL;
     }

@@ -33,6 +33,14 @@ static void set_err(char *err, size_t errlen, const char *fmt, ...)
     va_end(ap);
 }
 
+/* A hull's failure (poly.h) for a message that names the shape: without the
+ * "convex hull: " it starts with. */
+static const char *strip_hull(const char *why)
+{
+    const char *p = "convex hull: ";
+    return strncmp(why, p, strlen(p)) == 0 ? why + strlen(p) : why;
+}
+
 shape_params shape_defaults(shape_kind kind)
 {
     return (shape_params){.kind = kind,
@@ -282,7 +290,8 @@ static int build_cube(shape *s, char *err, size_t errlen)
     char why[200];
     s->hull = poly_hull(c, 8, why, sizeof why);
     if (!s->hull) {
-        set_err(err, errlen, "cube: %s", why);
+        set_err(err, errlen, "cube: size (%.6g, %.6g, %.6g) cannot be built: %s", h.x, h.y, h.z,
+                strip_hull(why));
         return -1;
     }
     if (cube_mesh(h, &s->draw) < 0) {
@@ -310,7 +319,10 @@ static int build_superquadric(shape *s, char *err, size_t errlen)
     char why[200];
     s->hull = poly_hull(s->draw.pos, s->draw.nv, why, sizeof why);
     if (!s->hull) {
-        set_err(err, errlen, "superquadric: %s", why);
+        set_err(err, errlen,
+                "superquadric: a1 %.6g, a2 %.6g, a3 %.6g with exp1 %.6g, exp2 %.6g cannot be "
+                "built: %s",
+                s->p.a1, s->p.a2, s->p.a3, s->p.exp1, s->p.exp2, strip_hull(why));
         return -1;
     }
     s->mass = poly_mass(s->hull);

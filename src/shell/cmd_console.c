@@ -7,6 +7,7 @@
 
 #include "core/closest.h"
 #include "handlers.h"
+#include "outfile.h"
 #include "shell.h"
 #include "shell/help.h"
 #include "writer.h"
@@ -55,6 +56,11 @@ cmd_status cmd_show(shell *sh, const stmt *st)
 
 cmd_status cmd_save(shell *sh, const stmt *st)
 {
+    char why[SHELL_PATH_MAX + 256];
+    if (outfile_allowed(st->word, why, sizeof why) != 0) {
+        sh_error(sh, st, "save: %s", why);
+        return CMD_ERROR;
+    }
     FILE *f = fopen(st->word, "w");
     if (!f) {
         sh_error(sh, st, "save: cannot write '%s': %s", st->word, strerror(errno));
@@ -73,8 +79,9 @@ cmd_status cmd_save(shell *sh, const stmt *st)
     if (sh->current >= 0) fprintf(f, "# the current object\n%s %s\n",
                                   body_type_name(sh->w.bodies[sh->current]->sp.kind),
                                   sh->w.bodies[sh->current]->name);
-    if (fclose(f) != 0) {
-        sh_error(sh, st, "save: cannot write '%s': %s", st->word, strerror(errno));
+    char err[SHELL_PATH_MAX + 256];
+    if (outfile_close(f, st->word, err, sizeof err) != 0) {
+        sh_error(sh, st, "save: %s", err);
         return CMD_ERROR;
     }
     sh_info(sh, "saved %d objects to %s", sh->w.n, st->word);

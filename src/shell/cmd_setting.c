@@ -10,6 +10,7 @@
 
 #include "core/edit.h"
 #include "handlers.h"
+#include "outfile.h"
 #include "shell.h"
 
 cmd_status cmd_setting(shell *sh, const stmt *st)
@@ -28,9 +29,15 @@ cmd_status cmd_setting(shell *sh, const stmt *st)
         for (int k = 0; k < 3; k++) ((int *)field)[k] = (int)st->num[k];
         break;
     case VAL_ONOFF: *(bool *)field = st->num[0] != 0; break;
-    case VAL_FILE:
+    case VAL_FILE: { /* output: a folder vroc writes into */
+        char err[VIEW_PATH_MAX + 256];
+        if (outfile_allowed(st->word, err, sizeof err) != 0) {
+            sh_error(sh, st, "%s: %s", c->name, err);
+            return CMD_ERROR;
+        }
         snprintf(field, c->owner == OWN_VIEW ? VIEW_PATH_MAX : SHELL_PATH_MAX, "%s", st->word);
         break;
+    }
     default: break;
     }
     return CMD_OK;
@@ -120,13 +127,15 @@ cmd_status cmd_tracker(shell *sh, const stmt *st)
 cmd_status cmd_log(shell *sh, const stmt *st)
 {
     bool trace = strcmp(st->cmd->name, "trace") == 0;
-    if (st->n == 1) {
-        if (trace) log_trace_close(&sh->logs);
-        else log_events_close(&sh->logs);
-        return CMD_OK;
-    }
-    char err[LOG_PATH_MAX + 64];
-    int r = trace ? log_trace_open(&sh->logs, &sh->w, st->word, err, sizeof err)
+    char err[LOG_PATH_MAX + 256];
+    int r;
+    if (st->n != 1 && outfile_allowed(st->word, err, sizeof err) != 0)
+        r = -1;
+    else if (st->n == 1) /* off: the last rows are checked as the file closes */
+        r = trace ? log_trace_close(&sh->logs, err, sizeof err)
+                  : log_events_close(&sh->logs, err, sizeof err);
+    else
+        r = trace ? log_trace_open(&sh->logs, &sh->w, st->word, err, sizeof err)
                   : log_events_open(&sh->logs, st->word, err, sizeof err);
     if (r != 0) {
         sh_error(sh, st, "%s: %s", st->cmd->name, err);

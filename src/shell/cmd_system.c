@@ -42,7 +42,17 @@ cmd_status cmd_stop(shell *sh, const stmt *st)
 
 cmd_status cmd_restart(shell *sh, const stmt *st)
 {
-    (void)st;
+    /* the logs end with the world they logged (commands/trace, commands/events) */
+    cmd_status r = CMD_OK;
+    char err[LOG_PATH_MAX + 256];
+    if (log_trace_close(&sh->logs, err, sizeof err) != 0) {
+        sh_error(sh, st, "trace: %s", err);
+        r = CMD_ERROR;
+    }
+    if (log_events_close(&sh->logs, err, sizeof err) != 0) {
+        sh_error(sh, st, "events: %s", err);
+        r = CMD_ERROR;
+    }
     world_free(&sh->w);
     world_init(&sh->w);
     sh->w.set = sh->startup.sim;
@@ -50,7 +60,7 @@ cmd_status cmd_restart(shell *sh, const stmt *st)
     sh->set = sh->startup.shell;
     sh->rng = sh->set.seed;
     sh->current = sh->selected = sh->prev_selected = -1;
-    return CMD_OK;
+    return r;
 }
 
 cmd_status cmd_quit(shell *sh, const stmt *st)
@@ -60,17 +70,8 @@ cmd_status cmd_quit(shell *sh, const stmt *st)
     return CMD_QUIT;
 }
 
-cmd_status cmd_read(shell *sh, const stmt *st)
-{
-    if (sh->read_depth >= LANG_MAX_DEPTH) {
-        sh_error(sh, st, "read: files nested deeper than %d levels", LANG_MAX_DEPTH);
-        return CMD_ERROR;
-    }
-    sh->read_depth++;
-    cmd_status r = shell_run_program(sh, st->sub);
-    sh->read_depth--;
-    return r;
-}
+/* The file was parsed with the statement, nesting checked (lang.h). */
+cmd_status cmd_read(shell *sh, const stmt *st) { return shell_run_program(sh, st->sub); }
 
 cmd_status cmd_display(shell *sh, const stmt *st)
 {

@@ -45,9 +45,16 @@ typedef enum {
     VAL_FILE_OR_OFF,  /* a file name, or off */
 } arg_kind;
 
-/* range flags: the number must be > lo (not >=), < hi (not <=), != 0; a vector
- * must not be zero */
-enum { R_LO_OPEN = 1, R_HI_OPEN = 2, R_NONZERO = 4, R_NONZERO_VEC = 8, R_RANGE = 16 };
+/* Range flags.  R_RANGE: every number of the value (each component of a vector)
+ * must lie from lo to hi; > lo (not >=) with R_LO_OPEN, < hi with R_HI_OPEN; with
+ * R_ZERO, 0 is accepted too (time_step's halt); with R_ABS, the limits bound |x|
+ * and x may be negative (mass: static).  R_NONZERO: the number must not be 0.
+ * R_NONZERO_VEC: the vector is a direction, at least LIM_DIR_MIN long (with
+ * VAL_VECTOR_ANGLE, (0, 0, 0) is accepted when the number after it is 0).
+ * Every numeric command has R_RANGE, with limits from core/limits.h, under which
+ * the simulation stays finite; tests/test_limits.c walks them. */
+enum { R_LO_OPEN = 1, R_HI_OPEN = 2, R_NONZERO = 4, R_NONZERO_VEC = 8, R_RANGE = 16,
+       R_ZERO = 32, R_ABS = 64 };
 
 /* shape classes a property applies to */
 enum { C_SPHERE = 1 << SHAPE_SPHERE, C_CUBE = 1 << SHAPE_CUBE, C_SQ = 1 << SHAPE_SUPERQUADRIC,
@@ -71,6 +78,10 @@ typedef struct command {
     size_t off;          /* FORM_PROPERTY: offset of its field in body (edit.h);
                           * FORM_SETTING: offset of its field in its owner's */
     cmd_status (*run)(struct shell *sh, const struct stmt *st);
+    /* VAL_VECTOR_ANGLE: what the number after the vector is ("angle") and its
+     * limits (lo2 to hi2) */
+    const char *what2;
+    double lo2, hi2;
 } command;
 
 extern const command command_table[];

@@ -18,6 +18,7 @@
 #include <sys/stat.h>
 
 #include "core/body.h"
+#include "core/limits.h"
 #include "lex.h"
 #include "fmt.h"
 
@@ -53,29 +54,28 @@ static int get_number(const token *t, const command *c, double *out, const where
         perr(at, "%s: expected a number, got %s", c->name, tok_text(t, buf));
         return -1;
     }
-    char tmp[128];
-    if (t->len >= sizeof tmp) {
-        perr(at, "%s: expected a number, got %s", c->name, tok_text(t, buf));
+    char *tmp = tok_dup(t); /* a number may be as long as a word can be */
+    if (!tmp) {
+        perr(at, "out of memory");
         return -1;
     }
-    memcpy(tmp, t->s, t->len);
-    tmp[t->len] = '\0';
     char *end;
     errno = 0;
     double x = strtod(tmp, &end);
+    int rc = 0;
     if (end == tmp || *end != '\0') {
         perr(at, "%s: expected a number, got %s", c->name, tok_text(t, buf));
-        return -1;
+        rc = -1;
+    } else if (!isfinite(x)) {
+        /* nan, inf or an overflow; an underflow keeps the tiny value strtod gives
+         * (or 0), which the limits then judge and messages print as it reads back */
+        if (t->len <= 40) perr(at, "%s must be a finite number (got %s)", c->name, tmp);
+        else perr(at, "%s must be a finite number (got %s)", c->name, tok_text(t, buf));
+        rc = -1;
     }
-    if (!isfinite(x) || errno == ERANGE) {
-        if (errno == ERANGE && isfinite(x)) x = 0; /* underflow: tiny is fine */
-        else {
-            perr(at, "%s must be a finite number (got %s)", c->name, tmp);
-            return -1;
-        }
-    }
+    free(tmp);
     *out = x;
-    return 0;
+    return rc;
 }
 
 /* '(' n numbers ')' starting at t[*i]; advances *i past it. */
@@ -116,26 +116,80 @@ static int get_tuple(const token *t, int nt, int *i, int n, const command *c, do
 
 static const char *num_text(double x, char buf[32]) { return fmt_num(buf, x); }
 
-/* The range checks of the table entry on one number. */
-static int check_range(const command *c, double x, const where *at)
+/* Whether x lies within lo and hi as the range flags say. */
+static bool in_range(unsigned range, double lo, double hi, double x)
 {
-    char a[32], b[32], g[32];
-    if ((c->range & R_NONZERO) && x == 0) {
-        perr(at, "%s must not be 0", c->name);
+    if ((range & R_ZERO) && x == 0) return true;
+    if (range & R_ABS) x = fabs(x);
+    bool lo_ok = (range & R_LO_OPEN) ? x > lo : x >= lo;
+    bool hi_ok = (range & R_HI_OPEN) ? x < hi : x <= hi;
+    return lo_ok && hi_ok;
+}
+
+/* "between LO and HI" as the flags say, for a message. */
+#define RANGE_TEXT 200
+static const char *range_text(unsigned range, double lo, double hi, char buf[RANGE_TEXT])
+{
+    size_t len = RANGE_TEXT;
+    char a[32], b[32];
+    const char *excl = (range & (R_LO_OPEN | R_HI_OPEN)) ? ", limits excluded" : "";
+    num_text(lo, a);
+    num_text(hi, b);
+    if (range & R_ABS) /* the negative side, larger magnitude first */
+        snprintf(buf, len, "between %s and %s or between -%s and -%s%s", a, b, b, a, excl);
+    else
+        snprintf(buf, len, "%sbetween %s and %s%s", (range & R_ZERO) ? "0 or " : "", a, b, excl);
+    return buf;
+}
+
+/* The range checks of the table entry on one number; what names it in the
+ * message ("radius", "size components", "rotate: the angle"). */
+static int check_range_of(const char *what, unsigned range, double lo, double hi, double x,
+                          const where *at)
+{
+    char g[32], r[RANGE_TEXT];
+    if ((range & R_NONZERO) && x == 0) {
+        perr(at, "%s must not be 0", what);
         return -1;
     }
-    if (!(c->range & R_RANGE)) return 0;
-    bool lo_ok = (c->range & R_LO_OPEN) ? x > c->lo : x >= c->lo;
-    bool hi_ok = (c->range & R_HI_OPEN) ? x < c->hi : x <= c->hi;
-    if (lo_ok && hi_ok) return 0;
-    if (isinf(c->hi))
-        perr(at, "%s must be %s %s (got %s)", c->name, (c->range & R_LO_OPEN) ? ">" : ">=",
-             num_text(c->lo, a), num_text(x, g));
-    else
-        perr(at, "%s must be from %s to %s%s (got %s)", c->name, num_text(c->lo, a),
-             num_text(c->hi, b),
-             (c->range & (R_LO_OPEN | R_HI_OPEN)) ? ", limits excluded" : "", num_text(x, g));
+    if (!(range & R_RANGE) || in_range(range, lo, hi, x)) return 0;
+    perr(at, "%s must be %s (got %s)", what, range_text(range, lo, hi, r),
+         num_text(x, g));
     return -1;
+}
+
+static int check_range(const command *c, double x, const where *at)
+{
+    return check_range_of(c->name, c->range, c->lo, c->hi, x, at);
+}
+
+/* The checks of a vector's components, and of a direction's length. */
+static int check_vector(const command *c, const double *v, const where *at)
+{
+    char what[96];
+    snprintf(what, sizeof what, "%s components", c->name);
+    for (int k = 0; k < 3; k++)
+        if (check_range_of(what, c->range & ~(unsigned)R_NONZERO, c->lo, c->hi, v[k], at) != 0)
+            return -1;
+    if (!(c->range & R_NONZERO_VEC)) return 0;
+    bool zero = v[0] == 0 && v[1] == 0 && v[2] == 0;
+    if (zero && c->arg == VAL_VECTOR_ANGLE) return 0; /* with a 0 after it: checked later */
+    if (zero) {
+        perr(at, "%s must not be (0, 0, 0)", c->name);
+        return -1;
+    }
+    /* scaled, so that no square underflows or overflows */
+    double m = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
+    double len = m * sqrt((v[0] / m) * (v[0] / m) + (v[1] / m) * (v[1] / m) +
+                          (v[2] / m) * (v[2] / m));
+    if (len < LIM_DIR_MIN) {
+        char a[32], b[32], d[32], e[32];
+        perr(at, "%s: the direction (%s, %s, %s) is too short: it must be at least %s long",
+             c->name, num_text(v[0], a), num_text(v[1], b), num_text(v[2], d),
+             num_text(LIM_DIR_MIN, e));
+        return -1;
+    }
+    return 0;
 }
 
 static int check_integer(const command *c, double x, const where *at)
@@ -251,6 +305,7 @@ static int parse_value(stmt *st, const token *t, int nt, const where *at)
     case VAL_VECTOR:
     case VAL_VECTOR_ANGLE:
         if (get_tuple(t, nt, &i, 3, c, st->num, at) != 0) return -1;
+        if (check_vector(c, st->num, at) != 0) return -1;
         st->n = 3;
         if (c->arg == VAL_VECTOR_ANGLE) {
             if (i >= nt) {
@@ -258,32 +313,37 @@ static int parse_value(stmt *st, const token *t, int nt, const where *at)
                 return -1;
             }
             if (get_number(&t[i], c, &st->num[3], at) != 0) return -1;
+            char what[96];
+            snprintf(what, sizeof what, "%s: the %s", c->name, c->what2);
+            if (check_range_of(what, R_RANGE, c->lo2, c->hi2, st->num[3], at) != 0)
+                return -1;
             st->n = 4;
             i++;
-        }
-        if ((c->range & R_NONZERO_VEC) && st->num[0] == 0 && st->num[1] == 0 &&
-            st->num[2] == 0 && (c->arg == VAL_VECTOR || st->num[3] != 0)) {
-            if (c->arg == VAL_VECTOR)
-                perr(at, "%s must not be (0, 0, 0)", c->name);
-            else
-                perr(at, "%s: the direction (0, 0, 0) needs a magnitude or angle of 0", c->name);
-            return -1;
+            if ((c->range & R_NONZERO_VEC) && st->num[0] == 0 && st->num[1] == 0 &&
+                st->num[2] == 0 && st->num[3] != 0) {
+                perr(at, "%s: the direction (0, 0, 0) needs the %s to be 0", c->name, c->what2);
+                return -1;
+            }
         }
         break;
-    case VAL_SIZE2:
+    case VAL_SIZE2: {
         if (get_tuple(t, nt, &i, 2, c, st->num, at) != 0) return -1;
+        char what[96];
+        snprintf(what, sizeof what, "%s components", c->name);
         for (int k = 0; k < 2; k++)
-            if (check_integer(c, st->num[k], at) != 0 || check_range(c, st->num[k], at) != 0)
+            if (check_integer(c, st->num[k], at) != 0 ||
+                check_range_of(what, c->range, c->lo, c->hi, st->num[k], at) != 0)
                 return -1;
         st->n = 2;
         break;
+    }
     case VAL_COLOR:
         if (get_tuple(t, nt, &i, 3, c, st->num, at) != 0) return -1;
         for (int k = 0; k < 3; k++) {
-            if (st->num[k] != floor(st->num[k]) || st->num[k] < 0 || st->num[k] > 255) {
-                char g[32];
-                perr(at, "%s components must be whole numbers from 0 to 255 (got %s)", c->name,
-                     num_text(st->num[k], g));
+            if (st->num[k] != floor(st->num[k]) || !in_range(c->range, c->lo, c->hi, st->num[k])) {
+                char g[32], r[RANGE_TEXT];
+                perr(at, "%s components must be whole numbers %s (got %s)", c->name,
+                     range_text(c->range, c->lo, c->hi, r), num_text(st->num[k], g));
                 return -1;
             }
         }
@@ -527,14 +587,14 @@ static bool file_exists(const char *path)
 
 int lang_resolve(const char *name, const lang_paths *paths, char *out, size_t outlen)
 {
-    if (name[0] == '/' || (paths && paths->base_dir)) {
-        if (name[0] == '/' || !paths->base_dir || strcmp(paths->base_dir, ".") == 0)
-            snprintf(out, outlen, "%s", name);
-        else
-            snprintf(out, outlen, "%s/%s", paths->base_dir, name);
+    if (name[0] == '/') {
+        snprintf(out, outlen, "%s", name);
         return file_exists(out) ? 0 : -1;
     }
-    snprintf(out, outlen, "%s", name);
+    if (paths && paths->base_dir && strcmp(paths->base_dir, ".") != 0)
+        snprintf(out, outlen, "%s/%s", paths->base_dir, name);
+    else
+        snprintf(out, outlen, "%s", name);
     if (file_exists(out)) return 0;
     if (paths && paths->scene_dir) {
         char alt[PATH_MAX];

@@ -15,6 +15,7 @@
 
 #include "commands.h"
 
+/* How deep files may read each other, counting the first (lang_parse_file). */
 #define LANG_MAX_DEPTH 16
 
 struct program;
@@ -55,7 +56,10 @@ typedef struct {
 program *lang_parse(const char *text, size_t len, const char *name, int first_line,
                     const lang_paths *paths, int depth, const char **stack, int n_stack, char *err, size_t errlen);
 
-/* Reads and parses the file at path (resolved as `read` resolves it from paths). */
+/* Reads and parses the file at path (resolved as `read` resolves it from paths),
+ * which is at nesting level depth: 1 for a file named on the command line or read
+ * from the prompt or -c, one more for each file between it and them.  A file
+ * deeper than LANG_MAX_DEPTH is an error: files nest LANG_MAX_DEPTH deep. */
 program *lang_parse_file(const char *path, const lang_paths *paths, int depth,
                          const char **stack, int n_stack, const char *from_file, int from_line,
                          char *err, size_t errlen);
@@ -63,8 +67,9 @@ program *lang_parse_file(const char *path, const lang_paths *paths, int depth,
 void program_free(program *p);
 
 /* Resolves a file name for `read` into out: absolute names as they are; relative
- * names from paths->base_dir when set, else the current folder, then
- * paths->scene_dir.  Returns 0 when the file exists, else -1 (out holds the first
+ * names from paths->base_dir when set, else the current folder, then from
+ * paths->scene_dir (so a script can read the installed scenes as the prompt
+ * can).  Returns 0 when the file exists, else -1 (out holds the first
  * candidate). */
 int lang_resolve(const char *name, const lang_paths *paths, char *out, size_t outlen);
 

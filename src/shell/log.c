@@ -1,11 +1,14 @@
 /* log.c: trace and event logs as CSV (language.md, "Commands a console tool
- * needs"). */
+ * needs").  Every frame's rows are flushed and checked (outfile.h). */
 #include "log.h"
 
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "outfile.h"
+
+/* Opens path and writes the header; the caller writes its first rows and checks. */
 static FILE *open_log(const char *path, const char *header, char *err, size_t errlen)
 {
     FILE *f = fopen(path, "w");
@@ -17,40 +20,55 @@ static FILE *open_log(const char *path, const char *header, char *err, size_t er
     return f;
 }
 
+/* The old log of *slot closed and f put in its place, at path. */
+static int replace_log(FILE **slot, char *slot_path, FILE *f, const char *path, char *err,
+                       size_t errlen)
+{
+    int rc = outfile_close(*slot, slot_path, err, errlen);
+    *slot = f;
+    snprintf(slot_path, LOG_PATH_MAX, "%s", path);
+    return rc;
+}
+
 int log_trace_open(shell_logs *l, const world *w, const char *path, char *err, size_t errlen)
 {
     FILE *f = open_log(path, "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,state", err,
                        errlen);
     if (!f) return -1;
-    log_trace_close(l);
-    l->trace = f;
-    snprintf(l->trace_path, sizeof l->trace_path, "%s", path);
-    log_trace_frame(l, w);
-    return 0;
+    shell_logs first = {f, "", NULL, ""};
+    snprintf(first.trace_path, sizeof first.trace_path, "%s", path);
+    if (log_trace_frame(&first, w, err, errlen) != 0) {
+        fclose(f);
+        return -1;
+    }
+    return replace_log(&l->trace, l->trace_path, f, path, err, errlen);
 }
 
 int log_events_open(shell_logs *l, const char *path, char *err, size_t errlen)
 {
     FILE *f = open_log(path, "time,a,b,px,py,pz,nx,ny,nz,impulse,speed", err, errlen);
     if (!f) return -1;
-    log_events_close(l);
-    l->events = f;
-    snprintf(l->events_path, sizeof l->events_path, "%s", path);
-    return 0;
+    if (outfile_flush(f, path, err, errlen) != 0) {
+        fclose(f);
+        return -1;
+    }
+    return replace_log(&l->events, l->events_path, f, path, err, errlen);
 }
 
-void log_trace_close(shell_logs *l)
+int log_trace_close(shell_logs *l, char *err, size_t errlen)
 {
-    if (l->trace) fclose(l->trace);
+    int rc = outfile_close(l->trace, l->trace_path, err, errlen);
     l->trace = NULL;
     l->trace_path[0] = '\0';
+    return rc;
 }
 
-void log_events_close(shell_logs *l)
+int log_events_close(shell_logs *l, char *err, size_t errlen)
 {
-    if (l->events) fclose(l->events);
+    int rc = outfile_close(l->events, l->events_path, err, errlen);
     l->events = NULL;
     l->events_path[0] = '\0';
+    return rc;
 }
 
 const char *log_state_name(body_state s)
@@ -63,30 +81,33 @@ const char *log_state_name(body_state s)
     return "?";
 }
 
-void log_trace_frame(shell_logs *l, const world *w)
+int log_trace_frame(shell_logs *l, const world *w, char *err, size_t errlen)
 {
-    if (!l->trace) return;
+    if (!l->trace) return 0;
     for (int i = 0; i < w->n; i++) {
         const body *b = w->bodies[i];
-        fprintf(l->trace,
+        /* (the reason is the failing write's: a later flush may have none) */
+        if (fprintf(l->trace,
                 "%ld,%.17g,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,"
                 "%.17g,%.17g,%.17g,%s\n",
                 w->frame, w->time, b->name, b->x.x, b->x.y, b->x.z, b->q.w, b->q.x, b->q.y,
                 b->q.z, b->v.x, b->v.y, b->v.z, b->w.x, b->w.y, b->w.z,
-                log_state_name(b->state));
+                log_state_name(b->state)) < 0)
+            return outfile_failed(l->trace_path, errno, err, errlen);
     }
-    fflush(l->trace);
+    return outfile_flush(l->trace, l->trace_path, err, errlen);
 }
 
-void log_events_frame(shell_logs *l, const world *w)
+int log_events_frame(shell_logs *l, const world *w, char *err, size_t errlen)
 {
-    if (!l->events || w->nevents == 0) return;
+    if (!l->events || w->nevents == 0) return 0;
     for (long k = 0; k < w->nevents; k++) {
         const sim_event *e = &w->events[k];
         vec3 p = e->p, n = e->n;
-        fprintf(l->events, "%.17g,%s,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", e->t,
-                w->bodies[e->a]->name, w->bodies[e->b]->name, p.x, p.y, p.z, n.x, n.y, n.z, e->j,
-                e->speed);
+        if (fprintf(l->events, "%.17g,%s,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
+                    e->t, w->bodies[e->a]->name, w->bodies[e->b]->name, p.x, p.y, p.z, n.x, n.y,
+                    n.z, e->j, e->speed) < 0)
+            return outfile_failed(l->events_path, errno, err, errlen);
     }
-    fflush(l->events);
+    return outfile_flush(l->events, l->events_path, err, errlen);
 }

@@ -7,12 +7,14 @@
  * never reads standard input.  With -b, or when input is not a terminal, the first
  * error ends the run with status 1.  Status 2: a bad command line.
  */
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "outfile.h"
 #include "shell.h"
 
 static void usage(FILE *f)
@@ -117,6 +119,14 @@ int main(int argc, char **argv)
     bool tty = isatty(STDIN_FILENO) && isatty(STDOUT_FILENO);
     sh.interactive = !batch && tty;
     sh.stop_on_error = batch || !isatty(STDIN_FILENO);
+    char why[1200];
+    if (outdir && outfile_allowed(outdir, why, sizeof why) != 0) {
+        fprintf(stderr, "vroc: -o: %s\n", why);
+        free(cmds);
+        free(files);
+        shell_free(&sh);
+        return 2;
+    }
     if (outdir) {
         snprintf(sh.view_set.output, sizeof sh.view_set.output, "%s", outdir);
         sh.startup.view = sh.view_set;
@@ -147,9 +157,17 @@ int main(int argc, char **argv)
                    VROC_VERSION);
         status = shell_loop(&sh);
     }
+    /* the logs' last rows and standard output are checked too: a write that
+     * failed is never silent */
+    if (shell_close_outputs(&sh) != CMD_OK && sh.stop_on_error) status = 1;
     shell_free(&sh);
     free(cmds);
     free(files);
-    fflush(stdout);
+    errno = 0;
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fprintf(stderr, "error: cannot write the standard output: %s\n",
+                strerror(errno ? errno : EIO));
+        status = 1;
+    }
     return status;
 }

@@ -50,6 +50,7 @@ cmd_status cmd_random(shell *sh, const stmt *st)
     vec3 box = sh->set.random_box;
     double scale = fmin(box.x, fmin(box.y, box.z));
     int first = w->n;
+    unsigned long long rng0 = sh->rng; /* a refused statement changes nothing */
     char err[256];
     for (long k = 0; k < n; k++) {
         body *b = malloc(sizeof *b);
@@ -90,10 +91,19 @@ cmd_status cmd_random(shell *sh, const stmt *st)
         if (!placed) {
             body_free(b);
             free(b);
-            sh_error(sh, st,
-                     "random: no free place for object %ld of %ld inside random_box; enlarge "
-                     "random_box or add fewer objects",
-                     k + 1, n);
+            /* the objects' sizes scale with the box, so a larger box holds no more
+             * of them; with the sequence restored, random k adds the k that fit */
+            if (k > 0)
+                sh_error(sh, st,
+                         "random: only %ld of the %ld objects found room in random_box, so "
+                         "none was added; random %ld adds those %ld (a larger random_box holds "
+                         "no more: the objects grow with it)",
+                         k, n, k, k);
+            else
+                sh_error(sh, st,
+                         "random: no room for an object in random_box, so none was added: the "
+                         "objects already there fill it (a larger random_box holds no more: the "
+                         "objects grow with it)");
             goto undo;
         }
         body_set_rotation(b, rng_unit(&sh->rng), rng_uniform(&sh->rng, 0, M_PI));
@@ -107,5 +117,6 @@ oom:
     sh_error(sh, st, "out of memory");
 undo:
     while (w->n > first) world_delete(w, w->n - 1);
+    sh->rng = rng0;
     return CMD_ERROR;
 }

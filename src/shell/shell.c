@@ -59,11 +59,25 @@ void shell_init(shell *sh, FILE *out, FILE *err)
     sh->err = err;
 }
 
+cmd_status shell_close_outputs(shell *sh)
+{
+    char err[LOG_PATH_MAX + 256];
+    cmd_status r = CMD_OK;
+    if (log_trace_close(&sh->logs, err, sizeof err) != 0) {
+        sh_error(sh, NULL, "trace: %s", err);
+        r = CMD_ERROR;
+    }
+    if (log_events_close(&sh->logs, err, sizeof err) != 0) {
+        sh_error(sh, NULL, "events: %s", err);
+        r = CMD_ERROR;
+    }
+    return r;
+}
+
 void shell_free(shell *sh)
 {
     world_free(&sh->w);
-    log_trace_close(&sh->logs);
-    log_events_close(&sh->logs);
+    shell_close_outputs(sh);
     view_free(sh->view);
     sh->view = NULL;
 }
@@ -131,7 +145,13 @@ static cmd_status run_parsed(shell *sh, program *p, const char *err)
     }
     cmd_status r = shell_run_program(sh, p);
     program_free(p);
-    fflush(sh->out);
+    /* what the statements printed is checked like any file written */
+    errno = 0;
+    if (fflush(sh->out) != 0 || ferror(sh->out)) {
+        sh_error(sh, NULL, "cannot write the standard output: %s", strerror(errno ? errno : EIO));
+        clearerr(sh->out);
+        if (r == CMD_OK) r = CMD_ERROR;
+    }
     return r;
 }
 
@@ -152,7 +172,8 @@ cmd_status shell_run_file(shell *sh, const char *path)
 {
     char err[1024];
     lang_paths paths = paths_of(sh);
-    program *p = lang_parse_file(path, &paths, 0, NULL, 0, NULL, 0, err, sizeof err);
+    /* level 1, as a file read at the prompt: one nesting limit for both */
+    program *p = lang_parse_file(path, &paths, 1, NULL, 0, NULL, 0, err, sizeof err);
     return run_parsed(sh, p, err);
 }
 
@@ -189,13 +210,44 @@ cmd_status shell_check_start(shell *sh, const stmt *st)
     return CMD_OK;
 }
 
+cmd_status shell_output_failed(shell *sh, const stmt *st, const char *what, const char *err)
+{
+    sh_error(sh, st, "%s: %s; %s is now off%s", what, err, what,
+             sh->stop_on_error ? ", time stopped" : "");
+    return sh->stop_on_error ? CMD_ERROR : CMD_OK;
+}
+
+/* Writes what the frame just advanced gives the outputs: the events' and the
+ * trace's rows, and the views when record is on.  An output that fails is turned
+ * off (shell_output_failed); returns CMD_ERROR when the run must stop. */
+static cmd_status write_frame(shell *sh, const stmt *st)
+{
+    char err[1024], ignored[8];
+    cmd_status r = CMD_OK;
+    if (log_events_frame(&sh->logs, &sh->w, err, sizeof err) != 0) {
+        log_events_close(&sh->logs, ignored, sizeof ignored);
+        r = shell_output_failed(sh, st, "events", err);
+    }
+    if (r == CMD_OK && log_trace_frame(&sh->logs, &sh->w, err, sizeof err) != 0) {
+        log_trace_close(&sh->logs, ignored, sizeof ignored);
+        r = shell_output_failed(sh, st, "trace", err);
+    }
+    if (r == CMD_OK && sh->view_set.record &&
+        view_refresh(&sh->view, &sh->w, &sh->view_set, sh->w.frame, &sh->view_st, err,
+                     sizeof err) != 0) {
+        sh->view_set.record = false;
+        r = shell_output_failed(sh, st, "record", err);
+    }
+    return r;
+}
+
 cmd_status shell_advance(shell *sh, const stmt *st, long n)
 {
     char err[1024];
     if (n > 0 && !sh->found_apart && shell_check_start(sh, st) != CMD_OK) return CMD_ERROR;
     double t0 = shell_clock();
     cmd_status r = CMD_OK;
-    for (long k = 0; k < n; k++) {
+    for (long k = 0; k < n && r == CMD_OK; k++) {
         if (shell_interrupted) {
             shell_interrupted = 0;
             char a[32];
@@ -207,20 +259,7 @@ cmd_status shell_advance(shell *sh, const stmt *st, long n)
             r = CMD_ERROR;
             break;
         }
-        log_events_frame(&sh->logs, &sh->w);
-        log_trace_frame(&sh->logs, &sh->w);
-        if (sh->view_set.record && view_refresh(&sh->view, &sh->w, &sh->view_set, sh->w.frame,
-                                                &sh->view_st, err, sizeof err) != 0) {
-            /* at the prompt the simulation goes on without the pictures; a batch
-             * run stops at its first error */
-            sh->view_set.record = false;
-            sh_error(sh, st, "record: %s; recording turned off%s", err,
-                     sh->stop_on_error ? ", time stopped" : "");
-            if (sh->stop_on_error) {
-                r = CMD_ERROR;
-                break;
-            }
-        }
+        r = write_frame(sh, st);
     }
     sh->wall_time += shell_clock() - t0;
     return r;

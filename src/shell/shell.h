@@ -66,7 +66,6 @@ typedef struct shell {
     bool stop_on_error;    /* -b, or input that is not a terminal */
     FILE *out, *err;
     const char *scene_dir; /* installed scenes folder */
-    int read_depth;        /* files being run */
     unsigned long long rng; /* state of `random`, reset by seed */
     bool found_apart;      /* shell_check_start found no overlap since the last
                             * statement began: time may run on unchecked */
@@ -95,8 +94,20 @@ cmd_status shell_run_program(shell *sh, const program *p);
  * statements are not checked again (nothing but the simulation moved). */
 cmd_status shell_check_start(shell *sh, const stmt *st);
 
-/* Advances n frames (honouring Ctrl-C); records frames when record is on. */
+/* Advances n frames (honouring Ctrl-C); writes the logs' rows after each, and the
+ * views when record is on. */
 cmd_status shell_advance(shell *sh, const stmt *st, long n);
+
+/* The one rule for an output that could not be written (outfile.h): trace,
+ * events, the recorded frames, and any file written as time runs.  The caller has
+ * turned the output `what` off; this says so, with err ("cannot write 'PATH':
+ * REASON").  At the prompt time goes on without it (CMD_OK); a batch run
+ * (stop_on_error) stops there (CMD_ERROR, and vroc exits 1). */
+cmd_status shell_output_failed(shell *sh, const stmt *st, const char *what, const char *err);
+
+/* Closes the logs, checking their last writes; at the end of the program, before
+ * shell_free.  Returns CMD_ERROR (after saying why) when one failed. */
+cmd_status shell_close_outputs(shell *sh);
 
 /* Messages about statement st (NULL: no location). */
 void sh_error(shell *sh, const stmt *st, const char *fmt, ...)

@@ -6,34 +6,49 @@
  */
 #include "commands.h"
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
+#include "core/limits.h"
 #include "core/world.h"
 #include "handlers.h"
 #include "shell.h"
 #include "view/view.h"
 
-#define INF HUGE_VAL
+/* Every number has limits (core/limits.h), under which the simulation stays
+ * finite; a velocity may be any finite vector, since it is limited to max_linear
+ * or max_angular as it is set (edit.h). */
+#define POS LIM_POSITION_MAX
+/* the number after a VAL_VECTOR_ANGLE's vector (what it is, its limits): none */
+#define NO_AFTER NULL, 0, 0
 /* a property of the body, at field (of body) */
 #define PROP(name, arg, range, lo, hi, classes, field) \
-    {name, FORM_PROPERTY, arg, range, lo, hi, NULL, classes, OWN_NONE, offsetof(body, field), cmd_property}
+    {name, FORM_PROPERTY, arg, range, lo, hi, NULL, classes, OWN_NONE, offsetof(body, field), cmd_property, NO_AFTER}
 /* settings of the simulation, the views and the shell, at field of their struct */
 #define SIM(name, arg, range, lo, hi, field) \
-    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SIM, offsetof(sim_settings, field), cmd_setting}
+    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SIM, offsetof(sim_settings, field), cmd_setting, NO_AFTER}
 #define VIEW(name, arg, range, lo, hi, field) \
-    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_VIEW, offsetof(view_settings, field), cmd_setting}
+    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_VIEW, offsetof(view_settings, field), cmd_setting, NO_AFTER}
 #define VIEWF(name, arg, range, lo, hi, field, fn) \
-    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_VIEW, offsetof(view_settings, field), fn}
+    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_VIEW, offsetof(view_settings, field), fn, NO_AFTER}
 #define SHELL(name, arg, range, lo, hi, field) \
-    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SHELL, offsetof(shell_settings, field), cmd_setting}
+    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SHELL, offsetof(shell_settings, field), cmd_setting, NO_AFTER}
 #define SHELLF(name, arg, range, lo, hi, field, fn) \
-    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SHELL, offsetof(shell_settings, field), fn}
+    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SHELL, offsetof(shell_settings, field), fn, NO_AFTER}
 /* a setting kept elsewhere (the logs): its handler knows where */
-#define OTHER(name, arg, fn) {name, FORM_SETTING, arg, 0, 0, 0, NULL, 0, OWN_NONE, 0, fn}
-#define CHOICE(name, choices, fn) {name, FORM_SETTING, VAL_CHOICE, 0, 0, 0, choices, 0, OWN_VIEW, 0, fn}
-#define ACT(name, arg, fn) {name, FORM_ACTION, arg, 0, 0, 0, NULL, 0, OWN_NONE, 0, fn}
-#define COUNT(name, fn) {name, FORM_ACTION, ARG_COUNT, R_RANGE, 0, 1e9, NULL, 0, OWN_NONE, 0, fn}
+#define OTHER(name, arg, fn) {name, FORM_SETTING, arg, 0, 0, 0, NULL, 0, OWN_NONE, 0, fn, NO_AFTER}
+#define CHOICE(name, choices, fn) {name, FORM_SETTING, VAL_CHOICE, 0, 0, 0, choices, 0, OWN_VIEW, 0, fn, NO_AFTER}
+#define ACT(name, arg, fn) {name, FORM_ACTION, arg, 0, 0, 0, NULL, 0, OWN_NONE, 0, fn, NO_AFTER}
+#define COUNT(name, fn) {name, FORM_ACTION, ARG_COUNT, R_RANGE, 0, 1e9, NULL, 0, OWN_NONE, 0, fn, NO_AFTER}
+/* a vector and a number (VAL_VECTOR_ANGLE): what2 names the number, lo2 to hi2
+ * its limits */
+#define PROP_A(name, range, lo, hi, classes, field, what2, lo2, hi2) \
+    {name, FORM_PROPERTY, VAL_VECTOR_ANGLE, range, lo, hi, NULL, classes, OWN_NONE, offsetof(body, field), cmd_property, what2, lo2, hi2}
+#define SIM_A(name, range, lo, hi, field, what2, lo2, hi2) \
+    {name, FORM_SETTING, VAL_VECTOR_ANGLE, range, lo, hi, NULL, 0, OWN_SIM, offsetof(sim_settings, field), cmd_setting, what2, lo2, hi2}
+#define SHELL_A(name, range, lo, hi, field, what2, lo2, hi2) \
+    {name, FORM_SETTING, VAL_VECTOR_ANGLE, range, lo, hi, NULL, 0, OWN_SHELL, offsetof(shell_settings, field), cmd_setting, what2, lo2, hi2}
 
 /* In the order of help's groups; show and save write the settings in this order. */
 const command command_table[] = {
@@ -43,23 +58,24 @@ const command command_table[] = {
     ACT("superquadric", ARG_NAME, cmd_create),
     ACT("delete", ARG_NAME, cmd_delete),
     /* properties (Tables A.1 to A.4) */
-    PROP("linear_vel", VAL_VECTOR, 0, 0, 0, C_ALL, v),
-    PROP("angular_vel", VAL_VECTOR, 0, 0, 0, C_ALL, w),
+    PROP("linear_vel", VAL_VECTOR, R_RANGE, -DBL_MAX, DBL_MAX, C_ALL, v),
+    PROP("angular_vel", VAL_VECTOR, R_RANGE, -DBL_MAX, DBL_MAX, C_ALL, w),
     PROP("elasticity", VAL_NUMBER, R_RANGE, 0, 1, C_ALL, elasticity),
-    PROP("mass", VAL_NUMBER, R_NONZERO, 0, 0, C_ALL, mass),
-    PROP("volume", VAL_NUMBER, R_RANGE, 0, INF, C_ALL, volume),
-    PROP("translate", VAL_VECTOR, 0, 0, 0, C_ALL, x),
-    PROP("rotate", VAL_VECTOR_ANGLE, R_NONZERO_VEC, 0, 0, C_ALL, rot_axis),
-    PROP("color", VAL_COLOR, 0, 0, 0, C_ALL, color),
-    PROP("radius", VAL_NUMBER, R_RANGE | R_LO_OPEN, 0, INF, C_SPHERE, sp.radius),
+    PROP("mass", VAL_NUMBER, R_NONZERO | R_RANGE | R_ABS, LIM_MASS_MIN, LIM_MASS_MAX, C_ALL, mass),
+    PROP("volume", VAL_NUMBER, R_RANGE, 0, LIM_LOUD_MAX, C_ALL, volume),
+    PROP("translate", VAL_VECTOR, R_RANGE, -POS, POS, C_ALL, x),
+    PROP_A("rotate", R_NONZERO_VEC | R_RANGE, -POS, POS, C_ALL, rot_axis,
+           "angle", -LIM_ANGLE_MAX, LIM_ANGLE_MAX),
+    PROP("color", VAL_COLOR, R_RANGE, 0, 255, C_ALL, color),
+    PROP("radius", VAL_NUMBER, R_RANGE, LIM_LENGTH_MIN, LIM_LENGTH_MAX, C_SPHERE, sp.radius),
     PROP("ures", VAL_INTEGER, R_RANGE, 3, 1000, C_SPHERE | C_SQ, sp.ures),
     PROP("vres", VAL_INTEGER, R_RANGE, 3, 1000, C_SPHERE | C_SQ, sp.vres),
-    PROP("size", VAL_VECTOR, 0, 0, 0, C_CUBE, sp.size),
-    PROP("exp1", VAL_NUMBER, R_RANGE | R_LO_OPEN, 0, INF, C_SQ, sp.exp1),
-    PROP("exp2", VAL_NUMBER, R_RANGE | R_LO_OPEN, 0, INF, C_SQ, sp.exp2),
-    PROP("a1", VAL_NUMBER, R_RANGE | R_LO_OPEN, 0, INF, C_SQ, sp.a1),
-    PROP("a2", VAL_NUMBER, R_RANGE | R_LO_OPEN, 0, INF, C_SQ, sp.a2),
-    PROP("a3", VAL_NUMBER, R_RANGE | R_LO_OPEN, 0, INF, C_SQ, sp.a3),
+    PROP("size", VAL_VECTOR, R_RANGE, LIM_LENGTH_MIN, LIM_LENGTH_MAX, C_CUBE, sp.size),
+    PROP("exp1", VAL_NUMBER, R_RANGE, LIM_EXP_MIN, LIM_EXP_MAX, C_SQ, sp.exp1),
+    PROP("exp2", VAL_NUMBER, R_RANGE, LIM_EXP_MIN, LIM_EXP_MAX, C_SQ, sp.exp2),
+    PROP("a1", VAL_NUMBER, R_RANGE, LIM_LENGTH_MIN, LIM_LENGTH_MAX, C_SQ, sp.a1),
+    PROP("a2", VAL_NUMBER, R_RANGE, LIM_LENGTH_MIN, LIM_LENGTH_MAX, C_SQ, sp.a2),
+    PROP("a3", VAL_NUMBER, R_RANGE, LIM_LENGTH_MIN, LIM_LENGTH_MAX, C_SQ, sp.a3),
     /* system (Table A.5) */
     ACT("read", ARG_FILE, cmd_read),
     ACT("display", ARG_NONE, cmd_display),
@@ -71,15 +87,16 @@ const command command_table[] = {
     ACT("refresh", ARG_NONE, cmd_refresh),
     ACT("help", ARG_OPT_WORD, cmd_help),
     ACT("quit", ARG_NONE, cmd_quit),
-    SIM("time_step", VAL_NUMBER, R_RANGE, 0, INF, time_step),
-    SIM("collision_dist", VAL_NUMBER, R_RANGE | R_LO_OPEN, 0, INF, collision_dist),
-    SIM("internal_step", VAL_NUMBER, R_RANGE, 0, INF, internal_step),
-    SIM("max_linear", VAL_NUMBER, R_RANGE, 0, INF, max_linear),
-    SIM("max_angular", VAL_NUMBER, R_RANGE, 0, INF, max_angular),
-    SIM("force", VAL_VECTOR_ANGLE, R_NONZERO_VEC, 0, 0, force),
+    SIM("time_step", VAL_NUMBER, R_RANGE | R_ZERO, LIM_TIME_MIN, LIM_TIME_MAX, time_step),
+    SIM("collision_dist", VAL_NUMBER, R_RANGE, LIM_LENGTH_MIN, LIM_LENGTH_MAX, collision_dist),
+    SIM("internal_step", VAL_NUMBER, R_RANGE | R_ZERO, LIM_TIME_MIN, LIM_TIME_MAX, internal_step),
+    SIM("max_linear", VAL_NUMBER, R_RANGE, 0, LIM_SPEED_MAX, max_linear),
+    SIM("max_angular", VAL_NUMBER, R_RANGE, 0, LIM_SPIN_MAX, max_angular),
+    SIM_A("force", R_NONZERO_VEC | R_RANGE, -POS, POS, force,
+          "magnitude", -LIM_ACCEL_MAX, LIM_ACCEL_MAX),
     ACT("gravity", ARG_NONE, cmd_gravity),
     SHELLF("collision_sound", VAL_FILE, 0, 0, 0, collision_sound, cmd_collision_sound),
-    SHELL("collision_vol", VAL_NUMBER, R_RANGE, 0, INF, collision_vol),
+    SHELL("collision_vol", VAL_NUMBER, R_RANGE, 0, LIM_LOUD_MAX, collision_vol),
     /* console */
     COUNT("run", cmd_run),
     ACT("time", ARG_NONE, cmd_time),
@@ -93,22 +110,24 @@ const command command_table[] = {
     OTHER("trace", VAL_FILE_OR_OFF, cmd_log),
     SIM("collision_heap", VAL_ONOFF, 0, 0, 0, collision_heap),
     COUNT("random", cmd_random),
-    SHELLF("random_box", VAL_VECTOR, 0, 0, 0, random_box, cmd_random_box),
+    SHELLF("random_box", VAL_VECTOR, R_RANGE, LIM_RANDOM_BOX_MIN, LIM_LENGTH_MAX, random_box,
+           cmd_random_box),
     SHELLF("seed", VAL_INTEGER, R_RANGE, 0, 4294967295.0, seed, cmd_seed),
     /* views and hand */
-    VIEW("head", VAL_VECTOR, 0, 0, 0, head),
-    VIEW("look_at", VAL_VECTOR, 0, 0, 0, look_at),
-    VIEW("up", VAL_VECTOR, R_NONZERO_VEC, 0, 0, up),
-    VIEW("ipd", VAL_NUMBER, R_RANGE, 0, INF, ipd),
+    VIEW("head", VAL_VECTOR, R_RANGE, -POS, POS, head),
+    VIEW("look_at", VAL_VECTOR, R_RANGE, -POS, POS, look_at),
+    VIEW("up", VAL_VECTOR, R_NONZERO_VEC | R_RANGE, -POS, POS, up),
+    VIEW("ipd", VAL_NUMBER, R_RANGE, 0, LIM_LENGTH_MAX, ipd),
     VIEW("fov", VAL_NUMBER, R_RANGE | R_LO_OPEN | R_HI_OPEN, 0, 180, fov),
     VIEWF("image_size", VAL_SIZE2, R_RANGE, 16, 8192, image_w, cmd_image_size),
     VIEW("output", VAL_FILE, 0, 0, 0, output),
     CHOICE("stereo", "pair|sbs|anaglyph|mono", cmd_stereo),
-    VIEW("background", VAL_COLOR, 0, 0, 0, background),
+    VIEW("background", VAL_COLOR, R_RANGE, 0, 255, background),
     CHOICE("real", "solid|wire|hidden", cmd_real),
     VIEW("record", VAL_ONOFF, 0, 0, 0, record),
-    SHELL("hand", VAL_VECTOR, 0, 0, 0, hand),
-    SHELL("hand_rotate", VAL_VECTOR_ANGLE, R_NONZERO_VEC, 0, 0, hand_rotate),
+    SHELL("hand", VAL_VECTOR, R_RANGE, -POS, POS, hand),
+    SHELL_A("hand_rotate", R_NONZERO_VEC | R_RANGE, -POS, POS, hand_rotate,
+            "angle", -LIM_ANGLE_MAX, LIM_ANGLE_MAX),
     SHELL("trigger", VAL_ONOFF, 0, 0, 0, trigger),
     ACT("select", ARG_OPT_ONOFF, cmd_select),
     ACT("reselect", ARG_NONE, cmd_reselect),

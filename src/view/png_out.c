@@ -23,14 +23,17 @@ png_out_opts png_out_default(void)
     return (png_out_opts){.level = 1, .filters = PNG_FILTER_NONE, .strategy = Z_DEFAULT_STRATEGY};
 }
 
-/* libpng's error callback: keeps the message for the caller and unwinds. */
+/* libpng's error callback: keeps the message for the caller and unwinds.  A
+ * failed write (libpng says only "Write Error") keeps the system's reason too. */
 typedef struct {
     char msg[256];
+    int errno_then; /* errno when libpng gave up */
 } png_out_failure;
 
 static void png_out_error(png_structp png, png_const_charp msg)
 {
     png_out_failure *f = png_get_error_ptr(png);
+    f->errno_then = errno;
     snprintf(f->msg, sizeof f->msg, "%s", msg);
     png_longjmp(png, 1);
 }
@@ -88,13 +91,17 @@ int png_write_rgb_opts(const char *path, const unsigned char *rgb, int width, in
         return -1;
     }
     setvbuf(fp, NULL, _IOFBF, 1 << 16);
-    png_out_failure f = {{0}};
+    png_out_failure f = {{0}, 0};
+    errno = 0;
     int rc = png_out_encode(fp, rgb, width, height, opts, &f);
     int saved = errno;
+    if (rc != 0 && ferror(fp) && f.errno_then) /* the file failed, not the encoder */
+        snprintf(f.msg, sizeof f.msg, "%s", strerror(f.errno_then));
     if (rc == 0 && ferror(fp)) {
         rc = -1;
-        snprintf(f.msg, sizeof f.msg, "%s", strerror(saved));
+        snprintf(f.msg, sizeof f.msg, "%s", strerror(saved ? saved : EIO));
     }
+    errno = 0;
     if (fclose(fp) != 0 && rc == 0) {
         rc = -1;
         snprintf(f.msg, sizeof f.msg, "%s", strerror(errno));

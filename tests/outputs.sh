@@ -1,0 +1,69 @@
+#!/bin/sh
+# outputs.sh: a write that fails is never silent.  The trace, the events, save,
+# the frames (record and refresh) and standard output each fail loudly: an error
+# that names the file and the system's reason, and in a batch run exit status 1
+# at the first failure.  /dev/full fails every write (ENOSPC); `ulimit -f` with
+# SIGXFSZ ignored makes a file fail when it outgrows the limit (EFBIG), which is
+# how a log or a frame fails in the middle of a run.
+. "$(dirname "$0")/lib.sh"
+S=$(cd "$(dirname "$0")/../scenes" && pwd)
+cd "$TMP" || exit 1
+
+expect "trace = /dev/full is an error" 1 "error: trace: cannot write '/dev/full': No space left on device" \
+    "$VROC" -b -c 'sphere a; trace = /dev/full; run 30'
+expect "events = /dev/full is an error" 1 "error: events: cannot write '/dev/full': No space left on device" \
+    "$VROC" -b -c 'sphere a; events = /dev/full; run 30'
+expect "save /dev/full is an error" 1 "error: save: cannot write '/dev/full': No space left on device" \
+    "$VROC" -b -c 'sphere a; save /dev/full'
+out=$("$VROC" -b -c 'sphere a; trace = /dev/full; print a' 2>/dev/null); status=$?
+[ $status -eq 1 ] && [ -z "$out" ] && ok "the failed trace stops the batch run before print" ||
+    notok "the failed trace stops the batch run before print" "status $status" "$out"
+
+# standard output: what print and show write is checked too
+out=$("$VROC" -b -c 'sphere a; show' 2>&1 >/dev/full); status=$?
+case "$status:$out" in "1:error: cannot write the standard output: No space left on device")
+    ok "show > /dev/full exits 1 and says why" ;;
+    *) notok "show > /dev/full exits 1 and says why" "status $status" "$out" ;; esac
+
+# a file size limit: the failure comes in the middle of the run
+limited() { # BLOCKS CMD...: CMD with the file size limit, SIGXFSZ ignored
+    blocks=$1
+    shift
+    (trap '' XFSZ; ulimit -f "$blocks" && "$@")
+}
+out=$(limited 40 "$VROC" -b "$S/bounce.vroc" -c "trace = t.csv; run 200; print ball1" 2>&1); status=$?
+case "$status:$out" in "1:error: trace: cannot write 't.csv': File too large; trace is now off, time stopped")
+    ok "a trace that outgrows the file size limit stops the batch run, saying why" ;;
+    *) notok "a trace that outgrows the file size limit stops the batch run, saying why" "status $status" "$out" ;; esac
+[ -s t.csv ] && [ "$(wc -c < t.csv)" -le 40960 ] && ok "the trace was written up to the limit" ||
+    notok "the trace was written up to the limit" "$(ls -l t.csv 2>&1)"
+out=$(limited 4 "$VROC" -b "$S/bounce.vroc" -c "events = e.csv; run 300; print ball1" 2>&1); status=$?
+case "$status:$out" in "1:error: events: cannot write 'e.csv': File too large; events is now off, time stopped")
+    ok "an events log that outgrows the limit stops the batch run, saying why" ;;
+    *) notok "an events log that outgrows the limit stops the batch run, saying why" "status $status" "$out" ;; esac
+
+# frames: output is a folder, so only the size limit can fail them
+# (the sanitizer build may add LeakSanitizer's list of the suppressions it used:
+# Mesa's own memory, view.c; so the error is looked for as a whole line)
+out=$(limited 1 "$VROC" -b -c "sphere a; translate = (0, 3, 0); output = rec; record = on; run 5; print a" 2>&1); status=$?
+if [ $status -eq 1 ] && printf '%s\n' "$out" | grep -qxF "error: record: cannot write 'rec/frame-000001-left.png': File too large; record is now off, time stopped" &&
+    ! printf '%s\n' "$out" | grep -q "^sphere a"; then
+    ok "a recorded frame that cannot be written stops the batch run, saying why"
+else
+    notok "a recorded frame that cannot be written stops the batch run, saying why" "status $status" "$out"
+fi
+[ -e rec/frame-000001-left.png ] && notok "a frame that failed is not left half written" ||
+    ok "a frame that failed is not left half written"
+expect "refresh that cannot write its frame is an error" 1 \
+    "error: refresh: cannot write 'ref/frame-000000-left.png': File too large" \
+    limited 1 "$VROC" -b -c "sphere a; translate = (0, 3, 0); output = ref; refresh"
+# the same limit lets a trace of a few rows through: the test itself can fail
+expect "under the same limit a small trace is written" 0 "sphere a" \
+    limited 1 "$VROC" -b -c "sphere a; trace = small.csv; run 1; trace = off; print a"
+
+# read from a pipe, the first failure also ends the run with status 1
+out=$(printf 'sphere a\ntrace = /dev/full\nprint a\n' | "$VROC" 2>&1); status=$?
+case "$status:$out" in "1:<stdin>:2: error: trace: cannot write '/dev/full': No space left on device")
+    ok "piped input: a failed trace exits 1 with <stdin>:LINE" ;;
+    *) notok "piped input: a failed trace exits 1 with <stdin>:LINE" "status $status" "$out" ;; esac
+exit 0
