@@ -32,7 +32,7 @@ static void heap_keeps_its_order(void **state)
     assert_int_equal(w.pairs.n, 40 * 39 / 2);
     unsigned long long s = 5;
     for (int k = 0; k < 20000; k++) {
-        long i = (long)urand(&s, 0, (double)w.pairs.n);
+        long i = sched_pair_id(&w.sched, (long)urand(&s, 0, (double)w.pairs.n));
         sched_set(&w, i, urand(&s, 0, 100));
         if (k % 1000 == 0) assert_int_equal(sched_check(&w), 0);
     }

@@ -38,9 +38,8 @@ static void gather(world *w, const int *list, int n, points *pts, double reach)
     for (int k = 0; k < n; k++) in[list[k]] = true;
     for (int k = 0; k < n; k++) {
         int i = list[k];
-        for (long j = w->sched.obj_first[i]; j < w->sched.obj_first[i + 1]; j++) {
-            pair *p = &w->pairs.p[w->sched.obj_pairs[j]];
-            int o = w->sched.obj_other[j];
+        FOR_PAIRS_OF(w, i, link, p) {
+            int o = link->other;
             if (!p->touching || (in[o] && o < i)) continue;
             const body *A = w->bodies[p->a], *B = w->bodies[p->b];
             double scale = A->shape.r_out + B->shape.r_out;
@@ -173,8 +172,7 @@ void cluster_settle(world *w, const int *list, int n, double t1)
     /* the lasting contacts that opened end */
     for (int k = 0; k < n; k++) {
         int i = list[k];
-        for (long j = w->sched.obj_first[i]; j < w->sched.obj_first[i + 1]; j++) {
-            pair *p = &w->pairs.p[w->sched.obj_pairs[j]];
+        FOR_PAIRS_OF(w, i, link, p) {
             if (!p->touching) continue;
             const body *A = w->bodies[p->a], *B = w->bodies[p->b];
             closest_result r = pair_query_apart(w, p, A, B);

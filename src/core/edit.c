@@ -29,7 +29,7 @@ static void disturb(world *w, int i, bool moved)
         grew = false;
         for (long k = 0; k < w->pairs.n; k++) {
             pair *p = &w->pairs.p[k];
-            if (!p->touching || p->a >= w->n || p->b >= w->n) continue;
+            if (p->a < 0 || !p->touching || p->a >= w->n || p->b >= w->n) continue;
             body *a = w->bodies[p->a], *b = w->bodies[p->b];
             if (a->woken != b->woken) {
                 body *o = a->woken ? b : a;
@@ -48,7 +48,7 @@ static void disturb(world *w, int i, bool moved)
     w->bodies[i]->moved = true;
     for (long k = 0; k < w->pairs.n; k++) {
         pair *p = &w->pairs.p[k];
-        if (p->a == i || p->b == i) p->touching = false;
+        if (p->a >= 0 && (p->a == i || p->b == i)) p->touching = false;
     }
 }
 
@@ -133,7 +133,7 @@ void edit_delete(world *w, int i)
 {
     for (long k = 0; k < w->pairs.n; k++) {
         pair *p = &w->pairs.p[k];
-        if (!p->touching || (p->a != i && p->b != i)) continue;
+        if (p->a < 0 || !p->touching || (p->a != i && p->b != i)) continue;
         int o = p->a == i ? p->b : p->a;
         if (!body_is_static(w->bodies[o])) disturb(w, o, false);
     }

@@ -16,10 +16,9 @@
 /* ---- who presses on whom ---- */
 
 /* Calls visit for every lasting contact of object i: the pair and the other. */
-#define FOR_TOUCHING(w, i, pr, other)                                                     \
-    for (long j_ = (w)->sched.obj_first[i]; j_ < (w)->sched.obj_first[(i) + 1]; j_++)      \
-        for (pair *pr = &(w)->pairs.p[(w)->sched.obj_pairs[j_]]; pr; pr = NULL)            \
-            for (int other = (w)->sched.obj_other[j_]; pr && pr->touching; pr = NULL)
+#define FOR_TOUCHING(w, i, pr, oth)                                                        \
+    FOR_PAIRS_OF(w, i, link_, pr)                                                         \
+        for (int oth = link_->other; pr && pr->touching; pr = NULL)
 
 /* The objects reached from the seeds through lasting contacts, to objects that
  * qualify (dynamic; general when general_only). */

@@ -170,7 +170,7 @@ double sched_sphere_time(const body *a, const sched_move *ma, const body *b, con
 static void place(world *w, long pos, sched_entry e)
 {
     w->sched.heap[pos] = e;
-    w->sched.heap_pos[e.pair] = pos;
+    w->sched.heap_pos[e.id] = pos;
 }
 
 static void sift_up(world *w, long pos)
@@ -211,87 +211,102 @@ void sched_free(schedule *s)
 {
     free(s->heap);
     free(s->heap_pos);
-    free(s->obj_first);
-    free(s->obj_pairs);
-    free(s->obj_other);
     sched_init(s);
+}
+
+/* Room for ids below n (and as many entries).  Returns 0 or -1. */
+static int reserve(schedule *s, long n)
+{
+    if (n <= s->cap) return 0;
+    long cap = s->cap ? s->cap : 64;
+    while (cap < n) cap *= 2;
+    sched_entry *heap = realloc(s->heap, (size_t)(cap + 1) * sizeof *heap);
+    if (heap) s->heap = heap;
+    long *pos = realloc(s->heap_pos, (size_t)cap * sizeof *pos);
+    if (pos) s->heap_pos = pos;
+    if (!heap || !pos) return -1;
+    for (long k = s->cap; k < cap; k++) pos[k] = -1;
+    s->cap = cap;
+    return 0;
 }
 
 int sched_build(world *w, double t)
 {
-    long np = w->pairs.n, nh = np + w->n;
-    sched_entry *heap = malloc((size_t)(nh + 1) * sizeof *heap); /* and an end mark */
-    long *pos = malloc((size_t)(nh ? nh : 1) * sizeof *pos);
-    long *first = malloc((size_t)(w->n + 1) * sizeof *first);
-    long *list = malloc((size_t)(2 * np + 1) * sizeof *list);
-    int *other = malloc((size_t)(2 * np + 1) * sizeof *other);
-    long *fill = malloc((size_t)(w->n + 1) * sizeof *fill);
-    if (!heap || !pos || !first || !list || !other || !fill) {
-        free(heap);
-        free(pos);
-        free(first);
-        free(list);
-        free(other);
-        free(fill);
-        return -1;
-    }
-    sched_free(&w->sched);
-    w->sched.heap = heap;
-    w->sched.heap_pos = pos;
-    w->sched.obj_first = first;
-    w->sched.obj_pairs = list;
-    w->sched.obj_other = other;
-    w->sched.nheap = nh;
-    for (int k = 0; k <= w->n; k++) first[k] = 0;
-    for (long i = 0; i < np; i++) {
-        first[w->pairs.p[i].a + 1]++;
-        first[w->pairs.p[i].b + 1]++;
-    }
-    for (int k = 0; k < w->n; k++) first[k + 1] += first[k];
-    for (int k = 0; k <= w->n; k++) fill[k] = first[k];
-    for (long i = 0; i < np; i++) {
-        int a = w->pairs.p[i].a, b = w->pairs.p[i].b;
-        other[fill[a]] = b;
-        list[fill[a]++] = i;
-        other[fill[b]] = a;
-        list[fill[b]++] = i;
-    }
-    free(fill);
-    for (long i = 0; i < np; i++) {
+    schedule *s = &w->sched;
+    s->nobj = w->n;
+    if (reserve(s, w->n + w->pairs.n + 1) != 0) return -1;
+    long m = 0;
+    for (long i = 0; i < w->pairs.n; i++) {
+        s->heap_pos[sched_pair_id(s, i)] = -1;
+        if (w->pairs.p[i].a < 0) continue;
         w->pairs.p[i].next = t;
-        place(w, i, (sched_entry){t, i}); /* all equal: already a heap */
+        place(w, m++, (sched_entry){t, sched_pair_id(s, i)});
     }
-    for (int k = 0; k < w->n; k++) place(w, np + k, (sched_entry){HUGE_VAL, np + k});
-    heap[nh] = (sched_entry){HUGE_VAL, -1}; /* nothing comes after it */
+    /* (the pairs all at t, then the objects at +inf: already a heap) */
+    for (int k = 0; k < w->n; k++) place(w, m++, (sched_entry){HUGE_VAL, sched_obj_id(k)});
+    s->nheap = m;
+    s->heap[m] = (sched_entry){HUGE_VAL, -1}; /* nothing comes after it */
     return 0;
 }
 
-void sched_set(world *w, long i, double next)
+void sched_set(world *w, long id, double next)
 {
-    long pos = w->sched.heap_pos[i];
+    long pos = w->sched.heap_pos[id];
     double old = w->sched.heap[pos].next;
-    if (i < w->pairs.n) w->pairs.p[i].next = next;
+    long nobj = w->sched.nobj;
+    if (id >= nobj) w->pairs.p[id - nobj].next = next;
     w->sched.heap[pos].next = next;
     if (next < old) sift_up(w, pos);
     else if (next > old) sift_down(w, pos);
+}
+
+int sched_add(world *w, long slot, double next)
+{
+    schedule *s = &w->sched;
+    long id = sched_pair_id(s, slot);
+    if (reserve(s, id + 1) != 0 || reserve(s, s->nheap + 2) != 0) return -1;
+    w->pairs.p[slot].next = next;
+    long pos = s->nheap++;
+    s->heap[s->nheap] = (sched_entry){HUGE_VAL, -1};
+    place(w, pos, (sched_entry){next, id});
+    sift_up(w, pos);
+    return 0;
+}
+
+void sched_remove(world *w, long slot)
+{
+    schedule *s = &w->sched;
+    long id = sched_pair_id(s, slot), pos = s->heap_pos[id];
+    if (pos < 0) return;
+    s->heap_pos[id] = -1;
+    long last = --s->nheap;
+    sched_entry e = s->heap[last];
+    s->heap[last] = (sched_entry){HUGE_VAL, -1};
+    if (pos == last) return;
+    double old = s->heap[pos].next;
+    place(w, pos, e);
+    if (e.next < old) sift_up(w, pos);
+    else sift_down(w, pos);
 }
 
 long sched_top(const world *w, double *next)
 {
     if (w->sched.nheap == 0) return -1;
     *next = w->sched.heap[0].next;
-    return w->sched.heap[0].pair;
+    return w->sched.heap[0].id;
 }
 
 int sched_check(const world *w)
 {
-    if (w->sched.nheap != w->pairs.n + w->n || w->sched.heap[w->sched.nheap].next != HUGE_VAL)
+    const schedule *s = &w->sched;
+    if (s->nheap != w->pairs.live + s->nobj || s->heap[s->nheap].next != HUGE_VAL)
         return -1; /* the end mark */
-    for (long pos = 0; pos < w->sched.nheap; pos++) {
-        long i = w->sched.heap[pos].pair;
-        if (i < 0 || i >= w->sched.nheap || w->sched.heap_pos[i] != pos) return -1;
-        if (i < w->pairs.n && w->pairs.p[i].next != w->sched.heap[pos].next) return -1;
-        if (pos > 0 && w->sched.heap[pos].next < w->sched.heap[(pos - 1) / 2].next) return -1;
+    for (long pos = 0; pos < s->nheap; pos++) {
+        long i = s->heap[pos].id;
+        if (i < 0 || i >= s->cap || s->heap_pos[i] != pos) return -1;
+        if (i >= s->nobj && (w->pairs.p[i - s->nobj].a < 0 || w->pairs.p[i - s->nobj].next != s->heap[pos].next))
+            return -1;
+        if (pos > 0 && s->heap[pos].next < s->heap[(pos - 1) / 2].next) return -1;
     }
     return 0;
 }

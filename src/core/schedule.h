@@ -52,24 +52,23 @@ double sched_sphere_time(const body *a, const sched_move *ma, const body *b, con
  * whether the gap is to a's box or to b's, which turns with it. */
 double sched_bound_gap(const body *a, const body *b, bool *turn_a, bool *turn_b);
 
-/* An entry of the heap: a pair's time, kept next to its index so that sifting
- * reads no pair; or object k's own next event (index npairs + k). */
+/* An entry of the heap: its time, kept next to its id so that sifting reads no
+ * pair.  Ids: object k's own next event is k; the pair in slot s is nobj + s. */
 typedef struct {
     double next;
-    long pair;
+    long id;
 } sched_entry;
 
-/* The schedule's state, made by sched_build for the pairs of the moment. */
+/* The schedule's state, made by sched_build for the pairs of the moment, and kept
+ * in step as pairs come and go (sched_add, sched_remove). */
 typedef struct {
-    sched_entry *heap;    /* a binary min-heap of (next, entry) over the pairs and the
+    sched_entry *heap;    /* a binary min-heap of (next, id) over the pairs and the
                            * objects (nheap entries), and after the last an end mark
                            * that no time precedes */
-    long *heap_pos;       /* each entry's place in it (apart from the pairs, so that
-                           * sifting writes no pair) */
-    long nheap;
-    long *obj_first;      /* the pairs of object k: obj_pairs[obj_first[k] .. */
-    long *obj_pairs;      /*   obj_first[k + 1] - 1], */
-    int *obj_other;       /*   and the other object of each */
+    long *heap_pos;       /* each id's place in it, -1 when out (apart from the
+                           * pairs, so that sifting writes no pair) */
+    long nheap, cap;      /* entries, and room for ids (and entries) */
+    int nobj;             /* objects when it was built: pairs' ids start there */
 } schedule;
 
 /* An empty schedule (no heap: sched_build makes it). */
@@ -77,13 +76,20 @@ void sched_init(schedule *s);
 void sched_free(schedule *s);
 
 /* Builds the heap over every pair, all due at time t, and every object, with no
- * event of its own; and the lists of each object's pairs.  Returns 0, or -1 when
- * out of memory. */
+ * event of its own.  Returns 0, or -1 when out of memory. */
 int sched_build(world *w, double t);
 
-/* Sets entry i's time to next and restores the heap: pair i's, or, for i >=
- * npairs, object i - npairs's own event. */
-void sched_set(world *w, long i, double next);
+/* The id of the pair in slot s, and of object k's own event. */
+static inline long sched_pair_id(const schedule *s, long slot) { return s->nobj + slot; }
+static inline long sched_obj_id(int k) { return k; }
+
+/* Sets entry id's time to next and restores the heap. */
+void sched_set(world *w, long id, double next);
+
+/* Adds the pair in slot s, due at next; removes it.  sched_add returns 0, or -1
+ * when out of memory. */
+int sched_add(world *w, long slot, double next);
+void sched_remove(world *w, long slot);
 
 /* The entry due first, or -1 for none; its time in *next. */
 long sched_top(const world *w, double *next);

@@ -27,6 +27,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "broad.h"
 #include "cluster.h"
 #include "contact.h"
 #include "impulse.h"
@@ -77,18 +78,35 @@ static double bound_from(world *w, long k, double t)
  * more; each gets its cheap bound. */
 static void reschedule(world *w, int i, double t)
 {
-    for (long j = w->sched.obj_first[i]; j < w->sched.obj_first[i + 1]; j++) {
-        long k = w->sched.obj_pairs[j];
-        w->pairs.p[k].toi_fa = w->pairs.p[k].toi_fb = -1;
-        sched_set(w, k, bound_from(w, k, t));
+    FOR_PAIRS_OF(w, i, link, p) {
+        p->toi_fa = p->toi_fb = -1;
+        sched_set(w, sched_pair_id(&w->sched, link->slot), bound_from(w, link->slot, t));
     }
+}
+
+/* The pairs the broad phase made since the last call get their cheap bounds from
+ * time t. */
+static void schedule_fresh(world *w, double t)
+{
+    long n;
+    const long *fresh = pairs_take_fresh(w, &n);
+    for (long k = 0; k < n; k++)
+        if (w->pairs.p[fresh[k]].a >= 0)
+            sched_set(w, sched_pair_id(&w->sched, fresh[k]), bound_from(w, fresh[k], t));
 }
 
 /* Object i's own next event. */
 static void set_event(world *w, int i, double t)
 {
     w->step.event[i] = t;
-    sched_set(w, w->pairs.n + i, t);
+    sched_set(w, sched_obj_id(i), t);
+}
+
+/* The broad phase holds moving object i, flying from time t, until the end of the
+ * step (broad.h). */
+static void hold(world *w, int i, double t)
+{
+    if (step_moves(w, i) && broad_hold(w, i, t, w->step.t_end) != 0) w->out_of_memory = true;
 }
 
 /* Object i flies on from time t as it is now (a slide: until it leaves its face). */
@@ -99,7 +117,9 @@ static void restart(world *w, int i, double t)
     double ev = HUGE_VAL;
     if (step_moves(w, i) && b->mode == MODE_SLIDE) ev = rest_slide_exit(w, i, t);
     set_event(w, i, ev);
-    reschedule(w, i, t);
+    hold(w, i, t);
+    reschedule(w, i, t); /* (the pairs its box just made among them) */
+    w->pairs.nfresh = 0;
 }
 
 /* The clusters among the n objects of list (their states at time t) start a step:
@@ -196,9 +216,8 @@ static void answer_contact(world *w, long k, double t, double t_end)
     for (int j = 0; j < n; j++) mobile[mine[j]] = true;
     for (int j = 0; j < n; j++) {
         int i = mine[j];
-        for (long q = w->sched.obj_first[i]; q < w->sched.obj_first[i + 1]; q++) {
-            pair *o = &w->pairs.p[w->sched.obj_pairs[q]];
-            int other = w->sched.obj_other[q];
+        FOR_PAIRS_OF(w, i, link, o) {
+            int other = link->other;
             if (!o->touching || o == p || (mobile[other] && other < i)) continue;
             closest_result r = pair_query(w, o, w->bodies[o->a], w->bodies[o->b]);
             nr += rows_of(w, o, &r, 0, rows + nr, IMPULSE_MAX_ROWS - nr);
@@ -286,16 +305,27 @@ static void answer_object(world *w, int i, double t, double t_end)
 typedef struct {
     double t;
     int kind;  /* 0 a pair's contact, 1 an object's event */
-    long index;
+    long index;  /* the pair's slot, or the object */
+    int a, b;    /* the pair's objects (an object's: itself twice) */
 } next_event;
 
-/* True when x comes before y. */
+/* True when x comes before y: by time, pairs before objects, then by the objects'
+ * indices (not the pairs' slots, which depend on when they were made). */
 static bool earlier(const next_event *x, const next_event *y)
 {
     if (x->t != y->t) return x->t < y->t;
     if (x->kind != y->kind) return x->kind < y->kind;
-    return x->index < y->index;
+    if (x->a != y->a) return x->a < y->a;
+    return x->b < y->b;
 }
+
+/* Pair k's contact, or object i's event, at time t. */
+static next_event pair_event(const world *w, double t, long k)
+{
+    return (next_event){t, 0, k, w->pairs.p[k].a, w->pairs.p[k].b};
+}
+
+static next_event object_event(double t, int i) { return (next_event){t, 1, i, i, i}; }
 
 /* Pair k's first contact in [t_step, t_end], searched from the later of its
  * flights' starts and the step's (or known from the same flights): its time, or
@@ -320,6 +350,10 @@ static double search(world *w, long k, double t_step, double t_end, double *agai
     p->toi_fa = fa->id;
     p->toi_fb = fb->id;
     if (o.state == TOI_HIT) {
+        if (!p->near) w->st.late_pairs++;
+#ifdef VROC_VALIDATE
+        assert(p->near); /* the broad phase is never late */
+#endif
         p->toi = o.t;
         w->pairs.hits[k] = (pair_hit){o.r, o.cache};
         return o.t;
@@ -334,29 +368,32 @@ static double search(world *w, long k, double t_step, double t_end, double *agai
  * anything left; without it, every pair. */
 static next_event find_next(world *w, double t_step, double t_end)
 {
-    next_event best = {HUGE_VAL, -1, -1};
+    next_event best = {HUGE_VAL, -1, -1, -1, -1};
     if (!w->set.collision_heap) {
         for (long k = 0; k < w->pairs.n; k++) {
-            if (!searched(w, &w->pairs.p[k])) continue;
+            if (w->pairs.p[k].a < 0 || !searched(w, &w->pairs.p[k])) continue;
             double again, t = search(w, k, t_step, t_end, &again);
-            next_event e = {t, 0, k};
+            next_event e = pair_event(w, t, k);
             if (t <= t_end && earlier(&e, &best)) best = e;
         }
         for (int i = 0; i < w->n; i++) {
-            next_event e = {w->step.event[i], 1, i};
+            next_event e = object_event(w->step.event[i], i);
             if (e.t <= t_end && earlier(&e, &best)) best = e;
         }
         return best;
     }
-    long aside = 0, i;
+    if (w->step.capdue < w->sched.nheap && step_reserve_due(w, w->sched.nheap) != 0) {
+        w->out_of_memory = true;
+        return best;
+    }
+    long aside = 0, i, nobj = w->sched.nobj;
     double next;
     while ((i = sched_top(w, &next)) >= 0 && next <= t_end && next <= best.t) {
-        next_event e = {next, 1, i - w->pairs.n};
-        if (i < w->pairs.n) {
+        next_event e = object_event(next, (int)i);
+        if (i >= nobj) {
             w->st.heap_pops++;
-
             double again;
-            e = (next_event){search(w, i, t_step, t_end, &again), 0, i};
+            e = pair_event(w, search(w, i - nobj, t_step, t_end, &again), i - nobj);
             if (e.t > t_end) {
                 sched_set(w, i, again);
                 continue;
@@ -378,14 +415,18 @@ static next_event find_next(world *w, double t_step, double t_end)
 static void internal_step(world *w, double h)
 {
     double t = w->time, t_end = t + h;
-    /* every moving object's flight starts afresh where it is */
+    w->step.t_end = t_end;
+    /* every moving object's flight starts afresh where it is, and its box holds it
+     * to the step's end */
     for (int i = 0; i < w->n; i++) {
         if (!step_moves(w, i)) continue;
         step_start(w, i, t);
         const body *b = w->bodies[i];
         double ev = b->mode == MODE_SLIDE ? rest_slide_exit(w, i, t) : HUGE_VAL;
         set_event(w, i, ev);
+        hold(w, i, t);
     }
+    schedule_fresh(w, t);
     /* clusters start their steps (their kicks change their flights) */
     for (int i = 0; i < w->n; i++) {
         const body *b = w->bodies[i];
@@ -406,6 +447,11 @@ static void internal_step(world *w, double h)
     w->time = t_end;
 #ifdef VROC_VALIDATE
     assert(w->sched.heap == NULL || sched_check(w) == 0);
+    char why[256];
+    if (broad_check(w, why, sizeof why) != 0) {
+        fprintf(stderr, "broad phase: %s\n", why);
+        assert(!"the broad phase holds");
+    }
     for (int i = 0; i < w->n; i++) {
         const shape *s = &w->bodies[i]->shape;
         char err[256];
@@ -423,6 +469,7 @@ static void find_contacts(world *w)
     if (!any) return;
     for (long k = 0; k < w->pairs.n; k++) {
         pair *p = &w->pairs.p[k];
+        if (p->a < 0 || !p->near) continue;
         body *a = w->bodies[p->a], *b = w->bodies[p->b];
         if (!a->moved && !b->moved) continue;
         closest_result r = pair_query(w, p, a, b);
@@ -450,18 +497,29 @@ static void find_contacts(world *w)
     free(mine);
 }
 
-int sim_prepare(world *w)
+/* The pairs and the broad phase as the commands left the objects. */
+static int update_pairs(world *w)
 {
     if (pairs_update(w) != 0) return -1;
+    return w->sched_dirty ? broad_commands(w) : 0;
+}
+
+int sim_prepare(world *w)
+{
+    if (update_pairs(w) != 0) return -1;
     bool changed = w->sched_dirty;
     if ((changed && sched_build(w, w->time) != 0) || step_prepare(w, changed) != 0) return -1;
     if (changed) {
+        w->pairs.nfresh = 0;
+        w->step.t_end = w->time;
         find_contacts(w);
         for (int i = 0; i < w->n; i++) {
             step_start(w, i, w->time);
             set_event(w, i, HUGE_VAL);
         }
-        for (long k = 0; k < w->pairs.n; k++) sched_set(w, k, bound_from(w, k, w->time));
+        for (long k = 0; k < w->pairs.n; k++)
+            if (w->pairs.p[k].a >= 0)
+                sched_set(w, sched_pair_id(&w->sched, k), bound_from(w, k, w->time));
     }
     w->sched_dirty = false;
     return 0;
@@ -477,7 +535,8 @@ int sim_frame(world *w, char *err, size_t errlen)
                  w->set.time_step, n, SIM_MAX_SUBFRAMES);
         return -1;
     }
-    if (sim_prepare(w) != 0) {
+    if (sim_prepare(w) != 0 || w->out_of_memory) {
+        w->out_of_memory = false;
         snprintf(err, errlen, "out of memory");
         return -1;
     }
@@ -502,21 +561,28 @@ int sim_frame(world *w, char *err, size_t errlen)
     w->time = w->time_base + (double)w->base_frames * w->base_step;
     w->frame++;
     w->st.frames++;
+    if (w->out_of_memory) { /* (a pair or a box could not be made on the way) */
+        w->out_of_memory = false;
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
     return 0;
 }
 
 long sim_penetrations(world *w, sim_report report, void *ctx)
 {
-    if (pairs_update(w) != 0) return -1;
+    if (update_pairs(w) != 0) return -1;
     long count = 0;
-    for (long i = 0; i < w->pairs.n; i++) {
-        pair *p = &w->pairs.p[i];
-        if (p->touching) continue;
-        const body *a = w->bodies[p->a], *b = w->bodies[p->b];
-        closest_result r = pair_query(w, p, a, b);
-        if (r.status == CLOSEST_PENETRATING && r.distance < -touch_of(a, b)) {
-            count++;
-            if (report) report(ctx, a, b, -r.distance);
+    /* only near objects can meet: their pairs, in the order of a, then b */
+    for (int i = 0; i < w->n; i++) {
+        FOR_PAIRS_OF(w, i, link, p) {
+            if (link->other < i || !p->near || p->touching) continue;
+            const body *a = w->bodies[p->a], *b = w->bodies[p->b];
+            closest_result r = pair_query(w, p, a, b);
+            if (r.status == CLOSEST_PENETRATING && r.distance < -touch_of(a, b)) {
+                count++;
+                if (report) report(ctx, a, b, -r.distance);
+            }
         }
     }
     return count;

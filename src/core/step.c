@@ -18,6 +18,8 @@ void step_init(step_state *s)
     memset(s, 0, sizeof *s);
 }
 
+static int step_copy(world *w, bool changed);
+
 void step_free(step_state *s)
 {
     free(s->fl);
@@ -64,8 +66,15 @@ int step_prepare(world *w, bool changed)
         s->cap = w->n;
     }
     /* the heap holds the pairs and the objects' own events */
-    long due = w->pairs.n + w->n;
+    return step_reserve_due(w, w->pairs.n + w->n) != 0 ? -1 : step_copy(w, changed);
+}
+
+int step_reserve_due(world *w, long due)
+{
+    step_state *s = &w->step;
+    bool ok = true;
     if (due > s->capdue) {
+        due += due / 2;
         long *d = resized(s->due, sizeof *d, due, &ok);
         double *dn = resized(s->due_next, sizeof *dn, due, &ok);
         s->due = d;
@@ -77,6 +86,13 @@ int step_prepare(world *w, bool changed)
         memset(dn, 0, (size_t)due * sizeof *dn);
         s->capdue = due;
     }
+    return 0;
+}
+
+/* Copies the objects into the scratch when changed (step_prepare). */
+static int step_copy(world *w, bool changed)
+{
+    step_state *s = &w->step;
     if (!changed) return 0;
     for (int i = 0; i < w->n; i++) {
         for (int k = 0; k < STEP_COPIES; k++) s->scratch[STEP_COPIES * i + k] = *w->bodies[i];

@@ -39,7 +39,8 @@ typedef struct {
     int *list;            /* per object: a scratch list of objects */
     int cap;              /* objects the arrays above have room for */
     lcp_work *lcp;        /* room for the largest contact problem (lcp.h) */
-    long *due;            /* the pairs checked in a step, and their new times */
+    double t_end;         /* the end of the internal step under way */
+    long *due;            /* the entries checked in a step, and their new times */
     double *due_next;
     long capdue;
 } step_state;
@@ -51,6 +52,9 @@ void step_free(step_state *s);
  * changed something), copies the objects into the scratch, so that within a frame
  * only their states need copying.  Returns 0, or -1 when out of memory. */
 int step_prepare(world *w, bool changed);
+
+/* Makes room for due entries in the schedule's due list.  Returns 0 or -1. */
+int step_reserve_due(world *w, long due);
 
 /* Body i's state at time t (t at or after its flight's start) in out, a copy of
  * body i. */

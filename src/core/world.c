@@ -31,6 +31,7 @@ void world_init(world *w)
     memset(w, 0, sizeof *w);
     w->set = sim_settings_defaults();
     pairs_init(&w->pairs);
+    broad_init(&w->broad);
     sched_init(&w->sched);
     step_init(&w->step);
 }
@@ -48,6 +49,7 @@ void world_free(world *w)
     w->events = NULL;
     w->nevents = w->capevents = 0;
     pairs_free(&w->pairs);
+    broad_free(&w->broad);
     sched_free(&w->sched);
     step_free(&w->step);
 }
@@ -115,6 +117,7 @@ void world_delete(world *w, int i)
      * by them): those of i end */
     for (long k = 0; k < w->pairs.n; k++) {
         pair *p = &w->pairs.p[k];
+        if (p->a < 0) continue; /* a free slot */
         if (p->a == i || p->b == i) {
             p->touching = false;
             p->a = p->b = 0;

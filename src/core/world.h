@@ -17,6 +17,7 @@
 #include <stdbool.h>
 
 #include "body.h"
+#include "broad.h"
 #include "force.h"
 #include "pairs.h"
 #include "schedule.h"
@@ -43,6 +44,8 @@ typedef struct {
     long restarts;        /* closest-feature walks redone from scratch */
     long heap_pops;       /* pairs taken from the schedule to be checked */
     long events_lost;     /* collisions not reported in events (out of memory) */
+    long late_pairs;      /* (heap off) contacts found of pairs the broad phase did
+                           * not hold near: it was late; never expected */
 } sim_stats;
 
 /* One collision answered: at time t, bodies a and b (indices) at point p, with
@@ -69,11 +72,13 @@ typedef struct world {
     long nevents;         /*   empties it as it starts) */
     long capevents;
     pair_list pairs;      /* pairs.h */
+    broad_phase broad;    /* broad.h */
     schedule sched;       /* schedule.h */
     step_state step;      /* step.h */
     bool sched_dirty;     /* something changed other than by the simulation: every
                            * pair is due, and the simulation copies its bodies
                            * afresh (edit.h sets it) */
+    bool out_of_memory;   /* a frame ran out of memory on the way (sim_frame says so) */
 } world;
 
 /* The start-up values of Table A.5 (time_step 0.1, collision_dist 0.25,

@@ -1,0 +1,434 @@
+/* broad.c: the broad phase: the objects' boxes, their trees, and the pairs they
+ * make and end (broad.h). */
+#include "broad.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "pairs.h"
+#include "step.h"
+#include "tolerance.h"
+#include "world.h"
+
+/* A new box reaches this far (s) along the object's flight past the end of the
+ * internal step, and is widened on every side by BROAD_MARGIN_REL of the object's
+ * outer radius plus BROAD_MARGIN (m): room to go on, and to turn back after a
+ * collision, before it must be made again. */
+#define BROAD_LOOKAHEAD 0.05
+#define BROAD_MARGIN_REL 0.25
+#define BROAD_MARGIN 0.02
+
+/* ---- boxes ---- */
+
+static aabb box_union(aabb a, aabb b) { return (aabb){v3_min(a.lo, b.lo), v3_max(a.hi, b.hi)}; }
+
+static bool box_meets(aabb a, aabb b)
+{
+    return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y &&
+           a.lo.z <= b.hi.z && b.lo.z <= a.hi.z;
+}
+
+static bool box_holds(aabb outer, aabb inner)
+{
+    return outer.lo.x <= inner.lo.x && outer.lo.y <= inner.lo.y && outer.lo.z <= inner.lo.z &&
+           outer.hi.x >= inner.hi.x && outer.hi.y >= inner.hi.y && outer.hi.z >= inner.hi.z;
+}
+
+/* The surface area (the insertion's cost). */
+static double box_area(aabb a)
+{
+    vec3 d = v3_sub(a.hi, a.lo);
+    return 2 * (d.x * d.y + d.y * d.z + d.z * d.x);
+}
+
+static aabb box_grow(aabb a, double r) { return (aabb){v3_sub(a.lo, v3(r, r, r)), v3_add(a.hi, v3(r, r, r))}; }
+
+/* How much wider than an object's shape its box must be: the contact distance
+ * (each box takes its half of the pair's, toi_touch), and far more than the
+ * rounding of positions as large as c and reaches as long as reach. */
+static double slack(const body *b, vec3 c, double reach)
+{
+    double m = fmax(fabs(c.x), fmax(fabs(c.y), fabs(c.z)));
+    return SIM_TOUCH + SIM_ROUND_REL * b->shape.r_out + 1e-9 * (b->shape.r_out + m + reach);
+}
+
+/* The box of object b's shape where it stands (its body-axes box turned). */
+static aabb still_box(const body *b)
+{
+    vec3 lo = b->shape.box_lo, hi = b->shape.box_hi;
+    vec3 mid = v3_scale(v3_add(lo, hi), 0.5), half = v3_scale(v3_sub(hi, lo), 0.5);
+    mat3 r = m3_from_quat(b->q);
+    vec3 c = v3_add(b->x, m3_mulv(r, mid)), e;
+    e.x = fabs(r.m[0][0]) * half.x + fabs(r.m[0][1]) * half.y + fabs(r.m[0][2]) * half.z;
+    e.y = fabs(r.m[1][0]) * half.x + fabs(r.m[1][1]) * half.y + fabs(r.m[1][2]) * half.z;
+    e.z = fabs(r.m[2][0]) * half.x + fabs(r.m[2][1]) * half.y + fabs(r.m[2][2]) * half.z;
+    aabb a = {v3_sub(c, e), v3_add(c, e)};
+    return box_grow(a, slack(b, c, 0)); /* (|e| <= the outer radius) */
+}
+
+/* Where a parabola x0 + v s + a s^2 / 2 goes for s in [s0, s1]: its lowest and
+ * highest. */
+static void sweep1(double x0, double v, double a, double s0, double s1, double *lo, double *hi)
+{
+    double x_0 = x0 + v * s0 + 0.5 * a * s0 * s0, x_1 = x0 + v * s1 + 0.5 * a * s1 * s1;
+    *lo = fmin(x_0, x_1);
+    *hi = fmax(x_0, x_1);
+    if (a != 0) {
+        double s = -v / a;
+        if (s > s0 && s < s1) {
+            double x = x0 + v * s + 0.5 * a * s * s;
+            *lo = fmin(*lo, x);
+            *hi = fmax(*hi, x);
+        }
+    }
+}
+
+/* The box that holds moving object i, flying flight f, from time t0 to t1: the
+ * sphere about its centre of mass swept, widened by `more`. */
+static aabb swept_box(const body *b, const flight *f, double t0, double t1, double more)
+{
+    double s0 = d_max(0, t0 - f->t0), s1 = d_max(s0, t1 - f->t0);
+    aabb a;
+    sweep1(f->c0.x, f->v0.x, f->a.x, s0, s1, &a.lo.x, &a.hi.x);
+    sweep1(f->c0.y, f->v0.y, f->a.y, s0, s1, &a.lo.y, &a.hi.y);
+    sweep1(f->c0.z, f->v0.z, f->a.z, s0, s1, &a.lo.z, &a.hi.z);
+    double reach = v3_len(f->v0) * s1 + v3_len(f->a) * s1 * s1;
+    return box_grow(a, b->shape.r_out + slack(b, f->c0, reach) + more);
+}
+
+/* The box a moving object's sphere needs where it stands. */
+static aabb sphere_box(const body *b)
+{
+    vec3 c = body_com(b);
+    aabb a = {c, c};
+    return box_grow(a, b->shape.r_out + slack(b, c, 0));
+}
+
+/* The margin a new box gets beyond what it needs. */
+static double margin(const body *b) { return BROAD_MARGIN_REL * b->shape.r_out + BROAD_MARGIN; }
+
+/* ---- the trees (Box2D's dynamic_tree.c: insertion by the area cost, with AVL
+ * rotations) ---- */
+
+static void tree_init(broad_tree *t)
+{
+    free(t->node);
+    memset(t, 0, sizeof *t);
+    t->root = t->free_list = -1;
+}
+
+static int node_new(broad_tree *t)
+{
+    if (t->free_list < 0) {
+        int cap = t->cap ? 2 * t->cap : 64;
+        broad_node *n = realloc(t->node, (size_t)cap * sizeof *n);
+        if (!n) return -1;
+        t->node = n;
+        for (int k = t->cap; k < cap; k++) {
+            n[k].parent = k + 1 < cap ? k + 1 : -1; /* the free list runs through parent */
+            n[k].height = -1;
+        }
+        t->free_list = t->cap;
+        t->cap = cap;
+    }
+    int k = t->free_list;
+    t->free_list = t->node[k].parent;
+    t->node[k] = (broad_node){.parent = -1, .child = {-1, -1}, .height = 0, .body = -1};
+    t->count++;
+    return k;
+}
+
+static void node_free(broad_tree *t, int k)
+{
+    t->node[k].parent = t->free_list;
+    t->node[k].height = -1;
+    t->free_list = k;
+    t->count--;
+}
+
+static bool is_leaf(const broad_node *n) { return n->child[0] < 0; }
+
+/* Fixes node k's box and height from its children. */
+static void node_fit(broad_tree *t, int k)
+{
+    broad_node *n = &t->node[k];
+    const broad_node *c0 = &t->node[n->child[0]], *c1 = &t->node[n->child[1]];
+    n->box = box_union(c0->box, c1->box);
+    n->height = 1 + (c0->height > c1->height ? c0->height : c1->height);
+}
+
+/* Replaces child `old` of node parent (or the root) by `new_`. */
+static void replace_child(broad_tree *t, int parent, int old, int new_)
+{
+    if (parent < 0) t->root = new_;
+    else t->node[parent].child[t->node[parent].child[0] == old ? 0 : 1] = new_;
+    t->node[new_].parent = parent;
+}
+
+/* Rotates the taller grandchild of node a up when a's children differ in height
+ * by more than one; returns the node now where a was. */
+static int balance(broad_tree *t, int a)
+{
+    broad_node *A = &t->node[a];
+    if (is_leaf(A) || A->height < 2) return a;
+    int b = A->child[0], c = A->child[1];
+    int diff = t->node[c].height - t->node[b].height;
+    if (diff > -2 && diff < 2) return a;
+    int up = diff > 0 ? c : b;       /* the taller child, which rises */
+    int side = diff > 0 ? 1 : 0;     /* its place in a */
+    broad_node *U = &t->node[up];
+    int f = U->child[0], g = U->child[1];
+    replace_child(t, A->parent, a, up);
+    /* up keeps its taller child and takes a; a takes the other */
+    int keep = t->node[f].height > t->node[g].height ? f : g, give = keep == f ? g : f;
+    U->child[0] = a;
+    U->child[1] = keep;
+    A->parent = up;
+    A->child[side] = give;
+    t->node[give].parent = a;
+    node_fit(t, a);
+    node_fit(t, up);
+    return up;
+}
+
+/* Refits and balances from node k up to the root. */
+static void fix_up(broad_tree *t, int k)
+{
+    while (k >= 0) {
+        k = balance(t, k);
+        node_fit(t, k);
+        k = t->node[k].parent;
+    }
+}
+
+/* Inserts a leaf for body with box; its node, or -1 when out of memory. */
+static int tree_insert(broad_tree *t, aabb box, int obj)
+{
+    int leaf = node_new(t);
+    if (leaf < 0) return -1;
+    t->node[leaf].box = box;
+    t->node[leaf].body = obj;
+    if (t->root < 0) {
+        t->root = leaf;
+        return leaf;
+    }
+    /* the sibling of least cost: the area the union adds, inherited down */
+    int k = t->root;
+    while (!is_leaf(&t->node[k])) {
+        const broad_node *n = &t->node[k];
+        double area = box_area(n->box), joined = box_area(box_union(n->box, box));
+        double cost = 2 * joined, inherit = 2 * (joined - area), c[2];
+        for (int s = 0; s < 2; s++) {
+            const broad_node *ch = &t->node[n->child[s]];
+            double u = box_area(box_union(ch->box, box));
+            c[s] = (is_leaf(ch) ? u : u - box_area(ch->box)) + inherit;
+        }
+        if (cost < c[0] && cost < c[1]) break;
+        k = n->child[c[1] < c[0] ? 1 : 0];
+    }
+    int parent = node_new(t);
+    if (parent < 0) {
+        node_free(t, leaf);
+        return -1;
+    }
+    int old = t->node[k].parent;
+    replace_child(t, old, k, parent);
+    t->node[parent].child[0] = k;
+    t->node[parent].child[1] = leaf;
+    t->node[k].parent = parent;
+    t->node[leaf].parent = parent;
+    fix_up(t, parent);
+    return leaf;
+}
+
+static void tree_remove(broad_tree *t, int leaf)
+{
+    int parent = t->node[leaf].parent;
+    node_free(t, leaf);
+    if (parent < 0) {
+        t->root = -1;
+        return;
+    }
+    const broad_node *P = &t->node[parent];
+    int sibling = P->child[0] == leaf ? P->child[1] : P->child[0], grand = P->parent;
+    replace_child(t, grand, parent, sibling);
+    node_free(t, parent);
+    if (grand >= 0) fix_up(t, grand);
+}
+
+/* The objects of t whose boxes meet box, into bp->found.  Returns 0 or -1. */
+static int tree_query(broad_phase *bp, const broad_tree *t, aabb box)
+{
+    bp->nfound = 0;
+    if (t->root < 0) return 0;
+    int top = 0;
+    if (bp->capstack == 0 && !(bp->stack = malloc(64 * sizeof *bp->stack))) return -1;
+    bp->capstack = bp->capstack ? bp->capstack : 64;
+    bp->stack[top++] = t->root;
+    while (top > 0) {
+        const broad_node *n = &t->node[bp->stack[--top]];
+        if (!box_meets(n->box, box)) continue;
+        if (is_leaf(n)) {
+            if (bp->nfound == bp->capfound) {
+                int cap = bp->capfound ? 2 * bp->capfound : 64;
+                int *f = realloc(bp->found, (size_t)cap * sizeof *f);
+                if (!f) return -1;
+                bp->found = f;
+                bp->capfound = cap;
+            }
+            bp->found[bp->nfound++] = n->body;
+            continue;
+        }
+        if (top + 2 > bp->capstack) {
+            int cap = 2 * bp->capstack + 64;
+            int *s = realloc(bp->stack, (size_t)cap * sizeof *s);
+            if (!s) return -1;
+            bp->stack = s;
+            bp->capstack = cap;
+        }
+        bp->stack[top++] = n->child[0];
+        bp->stack[top++] = n->child[1];
+    }
+    return 0;
+}
+
+/* ---- the broad phase ---- */
+
+void broad_init(broad_phase *bp)
+{
+    memset(bp, 0, sizeof *bp);
+    tree_init(&bp->moving);
+    tree_init(&bp->fixed);
+}
+
+void broad_free(broad_phase *bp)
+{
+    free(bp->moving.node);
+    free(bp->fixed.node);
+    free(bp->leaf);
+    free(bp->box);
+    free(bp->stack);
+    free(bp->found);
+    broad_init(bp);
+}
+
+/* Object i's pairs with the objects of tree t whose boxes meet its box (those of
+ * the others not static when i is).  Returns 0 or -1. */
+static int meet(world *w, int i, const broad_tree *t)
+{
+    broad_phase *bp = &w->broad;
+    if (tree_query(bp, t, bp->box[i]) != 0) return -1;
+    for (int k = 0; k < bp->nfound; k++) {
+        int j = bp->found[k];
+        if (j != i && pair_near(w, i, j) != 0) return -1;
+    }
+    return 0;
+}
+
+/* Object i has a new box: it goes into its tree, its pairs with the boxes it now
+ * meets are made, and those with the boxes it no longer meets end.  Returns 0 or
+ * -1. */
+static int refit(world *w, int i, aabb box)
+{
+    broad_phase *bp = &w->broad;
+    bool fixed = body_is_static(w->bodies[i]);
+    broad_tree *t = fixed ? &bp->fixed : &bp->moving;
+    if (bp->leaf[i] >= 0) tree_remove(t, bp->leaf[i]);
+    bp->box[i] = box;
+    if ((bp->leaf[i] = tree_insert(t, box, i)) < 0) return -1;
+    bp->refits++;
+    if (meet(w, i, &bp->moving) != 0 || (!fixed && meet(w, i, &bp->fixed) != 0)) return -1;
+    /* (backwards: ending a pair takes it out of the list) */
+    const pair_adj *adj = &w->pairs.adj[i];
+    for (int k = adj->n - 1; k >= 0; k--) {
+        const pair_link *l = &adj->l[k];
+        if (k >= adj->n || !w->pairs.p[l->slot].near) continue;
+        if (!box_meets(box, bp->box[l->other])) pair_far(w, l->slot);
+    }
+    return 0;
+}
+
+int broad_rebuild(world *w)
+{
+    broad_phase *bp = &w->broad;
+    if (w->n > bp->cap) {
+        int *leaf = realloc(bp->leaf, (size_t)w->n * sizeof *leaf);
+        if (leaf) bp->leaf = leaf;
+        aabb *box = realloc(bp->box, (size_t)w->n * sizeof *box);
+        if (box) bp->box = box;
+        if (!leaf || !box) return -1;
+        bp->cap = w->n;
+    }
+    tree_init(&bp->moving);
+    tree_init(&bp->fixed);
+    for (int i = 0; i < w->n; i++) {
+        const body *b = w->bodies[i];
+        bool fixed = body_is_static(b);
+        bp->box[i] = fixed || b->state != STATE_DYNAMIC ? still_box(b) : box_grow(sphere_box(b), margin(b));
+        bp->leaf[i] = tree_insert(fixed ? &bp->fixed : &bp->moving, bp->box[i], i);
+        if (bp->leaf[i] < 0) return -1;
+    }
+    for (int i = 0; i < w->n; i++) {
+        if (body_is_static(w->bodies[i])) continue;
+        if (meet(w, i, &bp->moving) != 0 || meet(w, i, &bp->fixed) != 0) return -1;
+    }
+    return 0;
+}
+
+int broad_commands(world *w)
+{
+    broad_phase *bp = &w->broad;
+    for (int i = 0; i < w->n; i++) {
+        const body *b = w->bodies[i];
+        bool still = body_is_static(b) || b->state != STATE_DYNAMIC;
+        aabb need = still ? still_box(b) : sphere_box(b);
+        if (box_holds(bp->box[i], need)) continue;
+        if (refit(w, i, still ? need : box_grow(need, margin(b))) != 0) return -1;
+    }
+    return 0;
+}
+
+int broad_hold(world *w, int i, double t, double t_end)
+{
+    const body *b = w->bodies[i];
+    const flight *f = &w->step.fl[i];
+    if (f->kind == FLIGHT_STILL) return 0; /* (where it stands: held already) */
+    broad_phase *bp = &w->broad;
+    if (box_holds(bp->box[i], swept_box(b, f, t, t_end, 0))) return 0;
+    return refit(w, i, swept_box(b, f, t, d_max(t, t_end) + BROAD_LOOKAHEAD, margin(b)));
+}
+
+int broad_check(const world *w, char *err, size_t errlen)
+{
+    const broad_phase *bp = &w->broad;
+    for (int i = 0; i < w->n; i++) {
+        const body *b = w->bodies[i];
+        /* (either holds the shape) */
+        if (!box_holds(bp->box[i], still_box(b)) && !box_holds(bp->box[i], sphere_box(b))) {
+            snprintf(err, errlen, "object %d (%s) is outside its box", i, b->name);
+            return -1;
+        }
+    }
+    for (int i = 0; i < w->n; i++)
+        for (int j = i + 1; j < w->n; j++) {
+            if (body_is_static(w->bodies[i]) && body_is_static(w->bodies[j])) continue;
+            long k = pair_index(w, i, j);
+            bool meets = box_meets(bp->box[i], bp->box[j]);
+            bool near = k >= 0 && w->pairs.p[k].near;
+            if (meets && !near) {
+                snprintf(err, errlen, "objects %d and %d: boxes meet, no near pair", i, j);
+                return -1;
+            }
+            if (near && !meets && !w->pairs.p[k].touching) {
+                snprintf(err, errlen, "objects %d and %d: a near pair, boxes apart", i, j);
+                return -1;
+            }
+            if (k >= 0 && !w->pairs.every && !near) {
+                snprintf(err, errlen, "objects %d and %d: a far pair with the heap on", i, j);
+                return -1;
+            }
+        }
+    return 0;
+}
