@@ -199,6 +199,40 @@ static void test_octahedron(void **state)
 
 /* Random clouds: a valid polyhedron containing every point; the exact hull's
  * vertices are input points, and merging only grows the hull. */
+/* A box built directly (poly_box, no qhull run) is the box poly_hull makes of its
+ * eight corners, to the bit: vertices, edges, faces and every list, over boxes of
+ * every proportion; so that no closest-feature walk, and no trace, changes. */
+static void test_box_as_qhull_makes_it(void **state)
+{
+    (void)state;
+    uint64_t s = 27;
+    for (int k = 0; k < 300; k++) {
+        double scale = pow(10, 3 * rnd(&s));
+        vec3 h = v3(scale * pow(10, 2 * rnd(&s)), scale * pow(10, 2 * rnd(&s)),
+                    scale * pow(10, 2 * rnd(&s)));
+        if (k == 0) h = v3(1, 1, 1);
+        vec3 c[8];
+        for (int j = 0; j < 8; j++) c[j] = v3(j & 1 ? h.x : -h.x, j & 2 ? h.y : -h.y, j & 4 ? h.z : -h.z);
+        char err[200];
+        poly *q = poly_hull(c, 8, err, sizeof err), *p = poly_box(h, err, sizeof err);
+        assert_non_null(q);
+        assert_non_null(p);
+        assert_int_equal(p->nv, q->nv);
+        assert_int_equal(p->ne, q->ne);
+        assert_int_equal(p->nf, q->nf);
+        int nfv = p->f[p->nf - 1].first + p->f[p->nf - 1].count;
+        assert_memory_equal(p->v, q->v, (size_t)p->nv * sizeof *p->v);
+        assert_memory_equal(p->e, q->e, (size_t)p->ne * sizeof *p->e);
+        assert_memory_equal(p->f, q->f, (size_t)p->nf * sizeof *p->f);
+        assert_memory_equal(p->face_vert, q->face_vert, (size_t)nfv * sizeof *p->face_vert);
+        assert_memory_equal(p->face_edge, q->face_edge, (size_t)nfv * sizeof *p->face_edge);
+        assert_memory_equal(p->vert_first, q->vert_first, (size_t)(p->nv + 1) * sizeof *p->vert_first);
+        assert_memory_equal(p->vert_edge, q->vert_edge, (size_t)(2 * p->ne) * sizeof *p->vert_edge);
+        poly_free(p);
+        poly_free(q);
+    }
+}
+
 static void test_random_clouds(void **state)
 {
     (void)state;
@@ -577,6 +611,7 @@ int main(void)
         cmocka_unit_test(test_box_moved),
         cmocka_unit_test(test_tetrahedron),
         cmocka_unit_test(test_octahedron),
+        cmocka_unit_test(test_box_as_qhull_makes_it),
         cmocka_unit_test(test_random_clouds),
         cmocka_unit_test(test_degenerate),
         cmocka_unit_test(test_copy_support),

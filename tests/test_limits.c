@@ -71,6 +71,7 @@ static bool is_numeric(const command *c)
     case VAL_VECTOR:
     case VAL_VECTOR_ANGLE:
     case VAL_SIZE2:
+    case VAL_RANGE2:
     case VAL_COLOR: return true;
     default: return false;
     }
@@ -118,6 +119,7 @@ static void statement(const command *c, double x, int k, double other, char *buf
     case VAL_NUMBER:
     case VAL_INTEGER: snprintf(buf, len, "%s = %s", n, fmt_num(a, x)); break;
     case VAL_SIZE2:
+    case VAL_RANGE2:
         snprintf(buf, len, "%s = (%s, %s)", n, fmt_num(a, v[0]), fmt_num(b, v[1]));
         break;
     case VAL_VECTOR_ANGLE:
@@ -198,11 +200,11 @@ static void walk_limit(const command *c, double x, int outwards, bool open)
     double at = open ? nextafter(x, outwards < 0 ? INFINITY : -INFINITY) : x;
     double out = open ? x : beyond(c, x, outwards);
     bool vector = c->arg == VAL_VECTOR || c->arg == VAL_VECTOR_ANGLE || c->arg == VAL_SIZE2 ||
-                  c->arg == VAL_COLOR;
+                  c->arg == VAL_RANGE2 || c->arg == VAL_COLOR;
     statement(c, at, -1, at, set, sizeof set);
     if (try_value(c, set) != CMD_OK) fail_msg("'%s' (at the limit) was refused: %s", set, g_errbuf);
     if (c->form != FORM_ACTION) run_at(c, set);
-    int ncomp = c->arg == VAL_SIZE2 ? 2 : vector ? 3 : 1;
+    int ncomp = c->arg == VAL_SIZE2 || c->arg == VAL_RANGE2 ? 2 : vector ? 3 : 1;
     for (int k = 0; k < ncomp; k++) {
         statement(c, out, vector ? k : -1, at, set, sizeof set);
         if (try_value(c, set) != CMD_ERROR) fail_msg("'%s' (beyond the limit) was accepted", set);

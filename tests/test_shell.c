@@ -420,31 +420,44 @@ static void failed_logs_are_turned_off(void **state)
 }
 
 /* random's refusal is true: it says how many objects fit, adds none and leaves
- * its sequence as it was, so that random with that many adds them; a larger box
- * holds no more, since the objects grow with it. */
+ * its sequence as it was, so that random with that many adds them.  The objects'
+ * sizes come from random_size, not from the box: a larger box, or smaller
+ * objects, hold more. */
 static void random_says_how_many_fit(void **state)
 {
     (void)state;
-    long fit[2];
-    for (int big = 0; big < 2; big++) {
-        assert_int_equal(run(big ? "restart; random_box = (50, 50, 50)\n" : "restart\n"), CMD_OK);
-        unsigned long long rng = g_sh.rng;
-        assert_int_equal(run("random 2000\n"), CMD_ERROR);
-        const char *m = strstr(g_errbuf, "random: only ");
-        assert_non_null(m);
-        assert_int_equal(sscanf(m, "random: only %ld of the 2000 objects found room", &fit[big]), 1);
-        assert_non_null(strstr(m, "so none was added"));
-        assert_int_equal(g_sh.w.n, 0);
-        assert_true(g_sh.rng == rng);
-        char text[64];
-        snprintf(text, sizeof text, "random %ld\n", fit[big]);
-        assert_int_equal(run(text), CMD_OK);
-        assert_int_equal(g_sh.w.n, fit[big]);
-        assert_int_equal(run("random 1\n"), CMD_ERROR); /* full: the second message */
-        assert_non_null(strstr(g_errbuf, "random: no room for an object in random_box"));
-    }
-    assert_true(fit[0] > 100);
-    assert_int_equal(fit[1], fit[0]);
+    long fit;
+    assert_int_equal(run("restart\n"), CMD_OK);
+    unsigned long long rng = g_sh.rng;
+    assert_int_equal(run("random 2000\n"), CMD_ERROR);
+    const char *m = strstr(g_errbuf, "random: only ");
+    assert_non_null(m);
+    assert_int_equal(sscanf(m, "random: only %ld of the 2000 objects found room", &fit), 1);
+    assert_non_null(strstr(m, "so none was added"));
+    assert_int_equal(g_sh.w.n, 0);
+    assert_true(g_sh.rng == rng);
+    char text[64];
+    snprintf(text, sizeof text, "random %ld\n", fit);
+    assert_int_equal(run(text), CMD_OK);
+    assert_int_equal(g_sh.w.n, fit);
+    assert_int_equal(run("random 1\n"), CMD_ERROR); /* full: the second message */
+    assert_non_null(strstr(g_errbuf, "random: no room for an object in random_box"));
+    assert_true(fit > 100 && fit < 2000);
+    /* twice the box, or objects half the size: 2000 fit */
+    assert_int_equal(run("restart; random_box = (4, 4, 4); random 2000\n"), CMD_OK);
+    assert_int_equal(g_sh.w.n, 2000);
+    double largest = 0;
+    for (int i = 0; i < g_sh.w.n; i++) largest = fmax(largest, g_sh.w.bodies[i]->shape.r_out);
+    assert_true(largest <= 0.2 * sqrt(3) && largest > 0.15); /* sizes 0.08 to 0.2 */
+    assert_int_equal(run("restart; random_size = (0.04, 0.1); random 2000\n"), CMD_OK);
+    assert_int_equal(g_sh.w.n, 2000);
+    for (int i = 0; i < g_sh.w.n; i++) assert_true(g_sh.w.bodies[i]->shape.r_out <= 0.1 * sqrt(3));
+    /* no two of them overlap (their spheres, as random keeps them apart) */
+    for (int i = 0; i < g_sh.w.n; i++)
+        for (int j = i + 1; j < g_sh.w.n; j++) {
+            const body *a = g_sh.w.bodies[i], *b = g_sh.w.bodies[j];
+            assert_true(v3_dist(body_com(a), body_com(b)) >= a->shape.r_out + b->shape.r_out);
+        }
 }
 
 static void trace_writes_a_row_per_object_per_frame(void **state)

@@ -55,8 +55,10 @@
 #define LIM_EXP_MAX 100
 /* loudness: volume, collision_vol (1 is the default, 1e3 is 60 dB louder) */
 #define LIM_LOUD_MAX 1e3
-/* random_box half-extents (m): random's objects are 0.024 to 0.1 of the box's
- * smallest half-extent, so that they stay within the lengths above */
+/* random_box half-extents (m) */
 #define LIM_RANDOM_BOX_MIN 1e-4
+/* random_size (m): each of random's objects has half-extents from 0.6 to 1 times
+ * the size drawn, so that they stay within the lengths above */
+#define LIM_RANDOM_SIZE_MIN 1e-5
 
 #endif

@@ -296,6 +296,32 @@ static poly *poly_assemble(int nv, const vec3 *pos, int nf, const int *count,
     return p;
 }
 
+poly *poly_box(vec3 h, char *err, size_t errlen)
+{
+    /* qhull's vertex order for the corners (k & 1: +x, k & 2: +y, k & 4: +z), and
+     * its facets' cycles as it gives them: poly_assemble turns faces 0, 3, 4 and 5
+     * to face out (which makes their normals' zeros -0, as with qhull's) */
+    static const int corner[8] = {1, 6, 4, 2, 7, 0, 3, 5};
+    static const int cycle[6][4] = {{6, 3, 5, 0}, {7, 2, 5, 0}, {7, 0, 6, 4},
+                                    {1, 2, 5, 3}, {1, 3, 6, 4}, {1, 4, 7, 2}};
+    vec3 pos[8], hint[6];
+    int count[6], fvert[24];
+    for (int i = 0; i < 8; i++) {
+        int k = corner[i];
+        pos[i] = v3(k & 1 ? h.x : -h.x, k & 2 ? h.y : -h.y, k & 4 ? h.z : -h.z);
+    }
+    for (int f = 0; f < 6; f++) {
+        vec3 c = v3(0, 0, 0);
+        for (int k = 0; k < 4; k++) {
+            fvert[4 * f + k] = cycle[f][k];
+            c = v3_add(c, pos[cycle[f][k]]);
+        }
+        count[f] = 4;
+        hint[f] = c; /* (the face's centre points out of a box about the origin) */
+    }
+    return poly_assemble(8, pos, 6, count, fvert, hint, err, errlen);
+}
+
 /* ---- running qhull ---- */
 
 /* One qhull session: its state, a private error stream (so that qhull never writes

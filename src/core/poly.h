@@ -73,6 +73,12 @@ poly *poly_hull(const vec3 *pts, int n, char *err, size_t errlen);
  * poly_hull falls back to should merging fail. */
 poly *poly_hull_merge(const vec3 *pts, int n, double angle, char *err, size_t errlen);
 
+/* The box of half-extents h (each > 0) about the origin, built directly: the
+ * same vertices, edges and faces, in the same order, as poly_hull gives for its
+ * eight corners (tests/test_geometry.c checks it to the bit), at no qhull run.
+ * NULL with err when out of memory. */
+poly *poly_box(vec3 h, char *err, size_t errlen);
+
 /* A deep copy (NULL on allocation failure). */
 poly *poly_copy(const poly *p);
 

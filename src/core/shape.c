@@ -284,11 +284,15 @@ static int build_sphere(shape *s, char *err, size_t errlen)
 
 static int build_cube(shape *s, char *err, size_t errlen)
 {
-    vec3 h = s->p.size, c[8];
-    for (int k = 0; k < 8; k++)
-        c[k] = v3(k & 1 ? h.x : -h.x, k & 2 ? h.y : -h.y, k & 4 ? h.z : -h.z);
+    vec3 h = s->p.size;
     char why[200];
-    s->hull = poly_hull(c, 8, why, sizeof why);
+    double big = 2 * fmax(h.x, fmax(h.y, h.z));
+    /* (as poly_hull would say of its corners) */
+    if (!(8 * h.x * h.y * h.z > 1e-12 * big * big * big))
+        snprintf(why, sizeof why, "the solid is too thin: its volume is under 1e-12 of the cube "
+                 "around it");
+    else
+        s->hull = poly_box(h, why, sizeof why); /* (its hull is known: no qhull run) */
     if (!s->hull) {
         set_err(err, errlen, "cube: size (%.6g, %.6g, %.6g) cannot be built: %s", h.x, h.y, h.z,
                 strip_hull(why));

@@ -45,6 +45,9 @@ void world_free(world *w)
     free(w->bodies);
     w->bodies = NULL;
     w->n = w->cap = 0;
+    free(w->names);
+    w->names = NULL;
+    w->ncap = 0;
     free(w->events);
     w->events = NULL;
     w->nevents = w->capevents = 0;
@@ -69,10 +72,46 @@ void world_event(world *w, const sim_event *e)
     w->events[w->nevents++] = *e;
 }
 
+/* ---- the index of the names: so that finding an object, and making one with a
+ * new name, costs the same whatever the number of objects ---- */
+
+/* FNV-1a. */
+static unsigned name_hash(const char *s)
+{
+    unsigned h = 2166136261u;
+    for (; *s; s++) h = (h ^ (unsigned char)*s) * 16777619u;
+    return h;
+}
+
+/* Puts object i in the index (which has room). */
+static void name_put(world *w, int i)
+{
+    unsigned m = (unsigned)w->ncap - 1, at = name_hash(w->bodies[i]->name) & m;
+    while (w->names[at]) at = (at + 1) & m;
+    w->names[at] = i + 1;
+}
+
+/* Makes the index anew with room for cap objects: 0, or -1 when out of memory
+ * (the old index stays). */
+static int names_rebuild(world *w, int cap)
+{
+    int ncap = 16;
+    while (ncap < 2 * cap) ncap *= 2;
+    int *names = calloc((size_t)ncap, sizeof *names);
+    if (!names) return -1;
+    free(w->names);
+    w->names = names;
+    w->ncap = ncap;
+    for (int i = 0; i < w->n; i++) name_put(w, i);
+    return 0;
+}
+
 int world_find(const world *w, const char *name)
 {
-    for (int i = 0; i < w->n; i++)
-        if (strcmp(w->bodies[i]->name, name) == 0) return i;
+    if (w->ncap == 0) return -1;
+    unsigned m = (unsigned)w->ncap - 1;
+    for (unsigned at = name_hash(name) & m; w->names[at]; at = (at + 1) & m)
+        if (strcmp(w->bodies[w->names[at] - 1]->name, name) == 0) return w->names[at] - 1;
     return -1;
 }
 
@@ -89,7 +128,14 @@ int world_add(world *w, body *b)
         w->bodies = nb;
         w->cap = cap;
     }
+    /* (at most half full) */
+    if (2 * (w->n + 1) > w->ncap && names_rebuild(w, 2 * (w->n + 1)) != 0) {
+        body_free(b);
+        free(b);
+        return -1;
+    }
     w->bodies[w->n] = b;
+    name_put(w, w->n);
     w->pairs.dirty = true;
     return w->n++;
 }
@@ -107,6 +153,9 @@ void world_delete(world *w, int i)
     free(w->bodies[i]);
     memmove(&w->bodies[i], &w->bodies[i + 1], (size_t)(w->n - i - 1) * sizeof *w->bodies);
     w->n--;
+    /* the indices after i moved: the index is made again in place */
+    memset(w->names, 0, (size_t)w->ncap * sizeof *w->names);
+    for (int k = 0; k < w->n; k++) name_put(w, k);
     w->pairs.dirty = true;
     for (int k = 0; k < w->n; k++) {
         body *b = w->bodies[k];

@@ -61,6 +61,9 @@ typedef struct {
 typedef struct world {
     body **bodies;        /* n bodies, creation order */
     int n, cap;
+    int *names;           /* an open-addressing index of the names: index + 1, or 0
+                           * for an empty place (ncap places, a power of two) */
+    int ncap;
     sim_settings set;
     double time;          /* simulated time, s */
     double time_base;     /* time = time_base + base_frames * base_step, so that */

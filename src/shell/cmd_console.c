@@ -146,6 +146,7 @@ cmd_status cmd_stats(shell *sh, const stmt *st)
     fprintf(sh->out, "collisions_per_frame = %.6g\n", (double)w->st.collisions / nf);
     fprintf(sh->out, "render_time = %.6f\n", sh->view_st.render_time);
     fprintf(sh->out, "files_written = %ld\n", sh->view_st.frames_written);
+    fprintf(sh->out, "existing_pairs = %ld\n", w->pairs.live);
     return CMD_OK;
 }
 

@@ -24,6 +24,10 @@ cmd_status cmd_setting(shell *sh, const stmt *st)
     switch (c->arg) {
     case VAL_NUMBER: *(double *)field = st->num[0]; break;
     case VAL_VECTOR: *(vec3 *)field = stmt_vec(st); break;
+    case VAL_RANGE2:
+        ((double *)field)[0] = st->num[0];
+        ((double *)field)[1] = st->num[1];
+        break;
     case VAL_VECTOR_ANGLE: *(dir_amount *)field = (dir_amount){stmt_vec(st), st->num[3]}; break;
     case VAL_COLOR:
         for (int k = 0; k < 3; k++) ((int *)field)[k] = (int)st->num[k];

@@ -38,6 +38,7 @@ typedef enum {
     VAL_VECTOR,       /* (x, y, z) */
     VAL_VECTOR_ANGLE, /* (x, y, z) r */
     VAL_SIZE2,        /* (w, h), integers */
+    VAL_RANGE2,       /* (min, max), numbers, min <= max */
     VAL_COLOR,        /* (r, g, b), integers 0..255 */
     VAL_ONOFF,        /* on or off */
     VAL_CHOICE,       /* one of the words in choices */

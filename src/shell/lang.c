@@ -326,14 +326,21 @@ static int parse_value(stmt *st, const token *t, int nt, const where *at)
             }
         }
         break;
-    case VAL_SIZE2: {
+    case VAL_SIZE2:
+    case VAL_RANGE2: {
         if (get_tuple(t, nt, &i, 2, c, st->num, at) != 0) return -1;
         char what[96];
         snprintf(what, sizeof what, "%s components", c->name);
         for (int k = 0; k < 2; k++)
-            if (check_integer(c, st->num[k], at) != 0 ||
+            if ((c->arg == VAL_SIZE2 && check_integer(c, st->num[k], at) != 0) ||
                 check_range_of(what, c->range, c->lo, c->hi, st->num[k], at) != 0)
                 return -1;
+        if (c->arg == VAL_RANGE2 && !(st->num[0] <= st->num[1])) {
+            char a[32], b[32];
+            perr(at, "%s: the least must not exceed the most (got %s, %s)", c->name,
+                 num_text(st->num[0], a), num_text(st->num[1], b));
+            return -1;
+        }
         st->n = 2;
         break;
     }

@@ -26,6 +26,8 @@ shell_settings shell_settings_defaults(void)
     shell_settings s;
     memset(&s, 0, sizeof s);
     s.random_box = v3(2, 2, 2);
+    s.random_size[0] = 0.08;
+    s.random_size[1] = 0.2;
     s.seed = 1;
     s.hand = v3(0, 0, 0);
     s.hand_rotate = (dir_amount){v3(1, 0, 0), 0};

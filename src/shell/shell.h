@@ -28,6 +28,8 @@
  * the sound's, which are kept here until their own layers give them effect. */
 typedef struct {
     vec3 random_box;        /* half-extents of the box random objects go in */
+    double random_size[2];  /* the least and the most of each random object's largest
+                             * half-extent (a sphere's radius) */
     unsigned long seed;     /* of random's sequence */
     /* the hand-held tracker (thesis Appendix A.1.2) */
     vec3 hand;
@@ -40,7 +42,7 @@ typedef struct {
     double collision_vol;
 } shell_settings;
 
-/* The start-up values: random_box (2, 2, 2), seed 1, the hand at the origin,
+/* The start-up values: random_box (2, 2, 2), random_size (0.08, 0.2), seed 1, the hand at the origin,
  * trigger up, select mode off, no tracker, the click sound at volume 1. */
 shell_settings shell_settings_defaults(void);
 

@@ -112,6 +112,7 @@ const command command_table[] = {
     COUNT("random", cmd_random),
     SHELLF("random_box", VAL_VECTOR, R_RANGE, LIM_RANDOM_BOX_MIN, LIM_LENGTH_MAX, random_box,
            cmd_random_box),
+    SHELL("random_size", VAL_RANGE2, R_RANGE, LIM_RANDOM_SIZE_MIN, LIM_LENGTH_MAX, random_size),
     SHELLF("seed", VAL_INTEGER, R_RANGE, 0, 4294967295.0, seed, cmd_seed),
     /* views and hand */
     VIEW("head", VAL_VECTOR, R_RANGE, -POS, POS, head),

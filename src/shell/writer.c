@@ -55,6 +55,12 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
     switch (c->arg) {
     case VAL_NUMBER: fprintf(out, "%s", fmt_num(a, *(const double *)field)); break;
     case VAL_VECTOR: writer_vec(out, *(const vec3 *)field); break;
+    case VAL_RANGE2: {
+        const double *d = (const double *)field;
+        char b[32];
+        fprintf(out, "(%s, %s)", fmt_num(a, d[0]), fmt_num(b, d[1]));
+        break;
+    }
     case VAL_VECTOR_ANGLE: {
         const dir_amount *d = (const dir_amount *)field;
         writer_vec(out, d->dir);
