@@ -13,6 +13,7 @@
  *
  *   bench_sim SCENE.vroc [options]
  *   bench_sim --random N [--seed S] [--thick A] [--walls on|off] [options]
+ *   bench_sim --gas N [--seed S] [options]
  *
  * options:
  *   --frames N      frames per run (default 100: 10 s of simulated time at 0.1 s)
@@ -45,6 +46,16 @@
  * close the box so the objects keep colliding (--walls off leaves it open); each
  * adds N pairs, and pairs= reports the pairs as the world counts them.
  *
+ * The gas (issue 27's scaling table): N objects from `random N` as above, one per
+ * cubic metre in a closed cubic room (random_box = (L, L, L), L = N^(1/3) / 2,
+ * and six walls): the same sizes and speeds at every N, and a room that grows.
+ *
+ * Every line also gives setup_s (the median time to load the scene and make what
+ * the frames need: the statements, the check `run` makes and sim_prepare),
+ * existing_pairs (the pairs that exist after the last frame: with the heap on, the
+ * near ones) and peak_rss_mb (the process's peak resident set so far, from
+ * /proc/self/status: run one measurement per process for a figure of its own).
+ *
  * Output: one line of name=value fields on stdout (two with --heap both), e.g.
  *   scene=simple objects=4 pairs=6 subframes=6 heap=on render=no frames=100 runs=5
  *   frames_per_s=... subframes_per_s=... pair_checks_per_frame=... ...
@@ -71,6 +82,7 @@
 typedef struct {
     const char *scene;   /* path, or NULL with random > 0 */
     long random;         /* N random objects */
+    bool gas;            /* --gas: in a cubic room, one per cubic metre */
     unsigned long seed;
     double thick;        /* A: smallest half-extent of random_box */
     bool walls;
@@ -85,7 +97,7 @@ typedef struct {
 } options;
 
 typedef struct {
-    double fps, sfps, checks, pops, colls, restarts, first_ms, seconds;
+    double fps, sfps, checks, pops, colls, restarts, first_ms, seconds, setup, live;
     long frames;
     bool truncated;
 } run_result;
@@ -113,18 +125,22 @@ static void usage(void)
             "       bench_sim --random N [--seed S] [--thick A] [--walls on|off] [...]\n");
 }
 
-/* Half-extents of the random box for n objects: (x, x, a). */
+/* Half-extents of the random box for n objects: (x, x, a); the gas's (x, x, x). */
 static double random_half(const options *o)
 {
+    if (o->gas) return 0.5 * cbrt((double)o->random);
     double x = o->thick * sqrt((double)o->random / 20.0);
     return x > o->thick ? x : o->thick;
 }
+
+/* The smallest half-extent of the random box. */
+static double random_thick(const options *o) { return o->gas ? random_half(o) : o->thick; }
 
 /* The statements that build the random environment.  Returns 0, or -1 when the
  * buffer is too small. */
 static int random_scene(const options *o, char *buf, size_t len)
 {
-    double a = o->thick, x = random_half(o), t = 0.2;
+    double a = random_thick(o), x = random_half(o), t = 0.2;
     int k = snprintf(buf, len,
                      "time_step = 0.1\n"
                      "max_linear = 2\n"
@@ -206,7 +222,10 @@ static int one_run(const options *o, view **v, run_result *res, long *objects, l
 {
     shell sh;
     char err[1024];
-    if (load(&sh, o) != 0) {
+    double t_load = now();
+    int loaded = load(&sh, o);
+    res->setup = now() - t_load;
+    if (loaded != 0) {
         shell_free(&sh);
         return -1;
     }
@@ -249,6 +268,7 @@ static int one_run(const options *o, view **v, run_result *res, long *objects, l
     res->colls = (double)(s->collisions - s0.collisions) / (double)k;
     res->restarts = (double)(s->restarts - s0.restarts) / (double)k;
     res->first_ms = 1e3 * first;
+    res->live = (double)sh.w.pairs.live;
     *objects = sh.w.n;
     *pairs = world_pairs(&sh.w);
     *subframes = world_subframes(&sh.w);
@@ -283,8 +303,9 @@ static int parse(int argc, char **argv, options *o)
             o->frames = strtol(val, NULL, 10);
         } else if (!strcmp(a, "--runs")) {
             o->runs = (int)strtol(val, NULL, 10);
-        } else if (!strcmp(a, "--random")) {
+        } else if (!strcmp(a, "--random") || !strcmp(a, "--gas")) {
             o->random = strtol(val, NULL, 10);
+            o->gas = a[2] == 'g';
             if (o->random < 1) return -1;
         } else if (!strcmp(a, "--seed")) {
             o->seed = strtoul(val, NULL, 10);
@@ -317,7 +338,7 @@ static int parse(int argc, char **argv, options *o)
     if (o->frames < 1 || o->runs < 1 || o->runs > MAX_RUNS) return -1;
     if (!o->name[0]) {
         if (o->random > 0) {
-            snprintf(o->name, sizeof o->name, "random%ld", o->random);
+            snprintf(o->name, sizeof o->name, "%s%ld", o->gas ? "gas" : "random", o->random);
         } else {
             const char *b = strrchr(o->scene, '/');
             b = b ? b + 1 : o->scene;
@@ -332,7 +353,7 @@ static int parse(int argc, char **argv, options *o)
 /* The runs of one measurement: each figure of each run, for the medians. */
 typedef struct {
     double fps[MAX_RUNS], sfps[MAX_RUNS], checks[MAX_RUNS], pops[MAX_RUNS], colls[MAX_RUNS],
-        restarts[MAX_RUNS], first[MAX_RUNS], frames[MAX_RUNS];
+        restarts[MAX_RUNS], first[MAX_RUNS], frames[MAX_RUNS], setup[MAX_RUNS], live[MAX_RUNS];
     int runs;
     double spent; /* s of timed runs */
     bool truncated, heap_on;
@@ -349,8 +370,22 @@ static void add_run(series *x, const run_result *res)
     x->restarts[r] = res->restarts;
     x->first[r] = res->first_ms;
     x->frames[r] = (double)res->frames;
+    x->setup[r] = res->setup;
+    x->live[r] = res->live;
     x->truncated = x->truncated || res->truncated;
     x->spent += res->seconds;
+}
+
+/* The process's peak resident set (VmHWM), MB; 0 when unknown. */
+static double peak_rss_mb(void)
+{
+    FILE *f = fopen("/proc/self/status", "r");
+    char line[256];
+    double kb = 0;
+    while (f && fgets(line, sizeof line, f))
+        if (sscanf(line, "VmHWM: %lf kB", &kb) == 1) break;
+    if (f) fclose(f);
+    return kb / 1024;
 }
 
 /* Prints the measurement's line (the medians sort the series' arrays). */
@@ -373,10 +408,12 @@ static void print_series(const options *o, series *x, long objects, long pairs, 
            " restarts_per_frame=%.2f first_frame_ms=%.3g truncated=%d",
            median(x->checks, n), median(x->pops, n), median(x->colls, n), median(x->restarts, n),
            median(x->first, n), x->truncated ? 1 : 0);
+    printf(" setup_s=%.4g existing_pairs=%.0f peak_rss_mb=%.1f", median(x->setup, n),
+           median(x->live, n), peak_rss_mb());
     if (o->heap == HEAP_BOTH) printf(" order=alternate");
     if (o->random > 0) {
         double h = random_half(o);
-        printf(" random_box=%.4g,%.4g,%.4g walls=%s", h, h, o->thick, o->walls ? "6" : "0");
+        printf(" random_box=%.4g,%.4g,%.4g walls=%s", h, h, random_thick(o), o->walls ? "6" : "0");
     }
     printf("\n");
 }

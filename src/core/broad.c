@@ -16,9 +16,14 @@
  * internal step, and is widened on every side by BROAD_MARGIN_REL of the object's
  * outer radius plus BROAD_MARGIN (m): room to go on, and to turn back after a
  * collision, before it must be made again. */
-#define BROAD_LOOKAHEAD 0.05
-#define BROAD_MARGIN_REL 0.25
-#define BROAD_MARGIN 0.02
+#define BROAD_LOOKAHEAD 0.15
+#define BROAD_MARGIN_REL 0.1
+#define BROAD_MARGIN 0.01
+
+/* A world of at most this many objects has every pair near (its boxes reach
+ * everywhere): there is nothing to leave out, and boxes made again as objects
+ * move would cost more than the few pairs they could end. */
+#define BROAD_SMALL 12
 
 /* ---- boxes ---- */
 
@@ -309,6 +314,7 @@ void broad_free(broad_phase *bp)
     free(bp->fixed.node);
     free(bp->leaf);
     free(bp->box);
+    free(bp->until);
     free(bp->stack);
     free(bp->found);
     broad_init(bp);
@@ -350,6 +356,9 @@ static int refit(world *w, int i, aabb box)
     return 0;
 }
 
+/* True when every box reaches everywhere (BROAD_SMALL). */
+static bool everywhere(const world *w) { return w->n <= BROAD_SMALL; }
+
 int broad_rebuild(world *w)
 {
     broad_phase *bp = &w->broad;
@@ -358,15 +367,31 @@ int broad_rebuild(world *w)
         if (leaf) bp->leaf = leaf;
         aabb *box = realloc(bp->box, (size_t)w->n * sizeof *box);
         if (box) bp->box = box;
-        if (!leaf || !box) return -1;
+        double *until = realloc(bp->until, (size_t)w->n * sizeof *until);
+        if (until) bp->until = until;
+        if (!leaf || !box || !until) return -1;
         bp->cap = w->n;
     }
     tree_init(&bp->moving);
     tree_init(&bp->fixed);
+    if (everywhere(w)) {
+        for (int i = 0; i < w->n; i++) {
+            bp->box[i] = (aabb){v3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL), v3(HUGE_VAL, HUGE_VAL, HUGE_VAL)};
+            bp->leaf[i] = -1;
+            bp->until[i] = HUGE_VAL;
+        }
+        for (int i = 0; i < w->n; i++)
+            for (int j = i + 1; j < w->n; j++)
+                if (!(body_is_static(w->bodies[i]) && body_is_static(w->bodies[j])) &&
+                    pair_near(w, i, j) != 0)
+                    return -1;
+        return 0;
+    }
     for (int i = 0; i < w->n; i++) {
         const body *b = w->bodies[i];
         bool fixed = body_is_static(b);
         bp->box[i] = fixed || b->state != STATE_DYNAMIC ? still_box(b) : box_grow(sphere_box(b), margin(b));
+        bp->until[i] = -HUGE_VAL;
         bp->leaf[i] = tree_insert(fixed ? &bp->fixed : &bp->moving, bp->box[i], i);
         if (bp->leaf[i] < 0) return -1;
     }
@@ -380,24 +405,32 @@ int broad_rebuild(world *w)
 int broad_commands(world *w)
 {
     broad_phase *bp = &w->broad;
+    if (everywhere(w)) return 0;
     for (int i = 0; i < w->n; i++) {
         const body *b = w->bodies[i];
         bool still = body_is_static(b) || b->state != STATE_DYNAMIC;
         aabb need = still ? still_box(b) : sphere_box(b);
+        bp->until[i] = -HUGE_VAL; /* (a command may have changed its motion) */
         if (box_holds(bp->box[i], need)) continue;
         if (refit(w, i, still ? need : box_grow(need, margin(b))) != 0) return -1;
     }
     return 0;
 }
 
-int broad_hold(world *w, int i, double t, double t_end)
+int broad_hold(world *w, int i, double t, double t_end, bool same)
 {
     const body *b = w->bodies[i];
     const flight *f = &w->step.fl[i];
-    if (f->kind == FLIGHT_STILL) return 0; /* (where it stands: held already) */
+    if (f->kind == FLIGHT_STILL || everywhere(w)) return 0; /* (held already) */
     broad_phase *bp = &w->broad;
-    if (box_holds(bp->box[i], swept_box(b, f, t, t_end, 0))) return 0;
-    return refit(w, i, swept_box(b, f, t, d_max(t, t_end) + BROAD_LOOKAHEAD, margin(b)));
+    if (same && t_end <= bp->until[i]) return 0;
+    if (box_holds(bp->box[i], swept_box(b, f, t, t_end, 0))) {
+        bp->until[i] = t_end;
+        return 0;
+    }
+    double to = d_max(t, t_end) + BROAD_LOOKAHEAD;
+    bp->until[i] = to;
+    return refit(w, i, swept_box(b, f, t, to, margin(b)));
 }
 
 int broad_check(const world *w, char *err, size_t errlen)

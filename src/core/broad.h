@@ -55,6 +55,8 @@ typedef struct {
     broad_tree fixed;     /* the static objects' boxes */
     int *leaf;            /* per object: its node in its tree, or -1 */
     aabb *box;            /* per object: its box */
+    double *until;        /* per object: its box holds it, on the motion it had when
+                           * the box was last checked, until then (-inf: unknown) */
     int cap;              /* objects leaf and box have room for */
     int *stack, capstack; /* the trees' walks */
     int *found, nfound, capfound; /* the objects a query found */
@@ -75,8 +77,10 @@ int broad_commands(world *w);
 
 /* Moving object i flies its flight (w->step.fl[i]) from time t: its box is made
  * again, with the pairs it meets and the pairs it no longer meets ended, unless
- * it holds the object until t_end.  Returns 0, or -1 when out of memory. */
-int broad_hold(world *w, int i, double t, double t_end);
+ * it holds the object until t_end.  `same` says that the flight goes on with the
+ * motion of the one before it (a new internal step's), so that what was found of
+ * the last holds.  Returns 0, or -1 when out of memory. */
+int broad_hold(world *w, int i, double t, double t_end, bool same);
 
 /* Checks the broad phase (for tests and the validation build), objects at their
  * states in w->bodies: every object is inside its box, every two objects (not

@@ -88,6 +88,7 @@ static void reschedule(world *w, int i, double t)
  * time t. */
 static void schedule_fresh(world *w, double t)
 {
+    if (w->pairs.nfresh == 0) return;
     long n;
     const long *fresh = pairs_take_fresh(w, &n);
     for (long k = 0; k < n; k++)
@@ -103,10 +104,11 @@ static void set_event(world *w, int i, double t)
 }
 
 /* The broad phase holds moving object i, flying from time t, until the end of the
- * step (broad.h). */
-static void hold(world *w, int i, double t)
+ * step (broad.h); same: on the motion of its last flight. */
+static void hold(world *w, int i, double t, bool same)
 {
-    if (step_moves(w, i) && broad_hold(w, i, t, w->step.t_end) != 0) w->out_of_memory = true;
+    if (same && w->step.t_end <= w->broad.until[i]) return; /* (broad_hold's first test) */
+    if (step_moves(w, i) && broad_hold(w, i, t, w->step.t_end, same) != 0) w->out_of_memory = true;
 }
 
 /* Object i flies on from time t as it is now (a slide: until it leaves its face). */
@@ -117,7 +119,7 @@ static void restart(world *w, int i, double t)
     double ev = HUGE_VAL;
     if (step_moves(w, i) && b->mode == MODE_SLIDE) ev = rest_slide_exit(w, i, t);
     set_event(w, i, ev);
-    hold(w, i, t);
+    hold(w, i, t, false);
     reschedule(w, i, t); /* (the pairs its box just made among them) */
     w->pairs.nfresh = 0;
 }
@@ -424,7 +426,7 @@ static void internal_step(world *w, double h)
         const body *b = w->bodies[i];
         double ev = b->mode == MODE_SLIDE ? rest_slide_exit(w, i, t) : HUGE_VAL;
         set_event(w, i, ev);
-        hold(w, i, t);
+        hold(w, i, t, true);
     }
     schedule_fresh(w, t);
     /* clusters start their steps (their kicks change their flights) */
@@ -508,15 +510,19 @@ int sim_prepare(world *w)
 {
     if (update_pairs(w) != 0) return -1;
     bool changed = w->sched_dirty;
-    if ((changed && sched_build(w, w->time) != 0) || step_prepare(w, changed) != 0) return -1;
+    if (step_prepare(w, changed) != 0) return -1;
     if (changed) {
-        w->pairs.nfresh = 0;
-        w->step.t_end = w->time;
         find_contacts(w);
+        /* the boxes for the first internal step, made here rather than in it */
+        long n = world_subframes(w);
+        w->step.t_end = w->time + (n > 0 ? w->set.time_step / (double)n : 0);
         for (int i = 0; i < w->n; i++) {
             step_start(w, i, w->time);
-            set_event(w, i, HUGE_VAL);
+            w->step.event[i] = HUGE_VAL;
+            hold(w, i, w->time, false);
         }
+        if (w->out_of_memory || sched_build(w, w->time) != 0) return -1; /* (objects: +inf) */
+        w->pairs.nfresh = 0; /* (every pair gets its bound below) */
         for (long k = 0; k < w->pairs.n; k++)
             if (w->pairs.p[k].a >= 0)
                 sched_set(w, sched_pair_id(&w->sched, k), bound_from(w, k, w->time));
