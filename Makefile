@@ -28,6 +28,9 @@ SCENEDIR = $(PREFIX)/share/vroc/scenes
 VERSION  = 0.1.0
 CORE_PKGS = qhull_r
 PKGS     = readline osmesa libpng qhull_r sndfile
+# linked: all but OSMesa, which the views load with dlopen when they first draw
+# (src/view/gl_load.h), so that a run that draws nothing never maps it
+LINK_PKGS = readline libpng qhull_r sndfile
 CC      ?= cc
 WARN     = -Wall -Wextra -Wpedantic -Werror -Wshadow -Wmissing-prototypes
 CSTD     = -std=c17 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
@@ -39,7 +42,7 @@ OPT     ?= -O2 -g
 CORE_CFLAGS := $(shell pkg-config --cflags $(CORE_PKGS) 2>/dev/null)
 CORE_LIBS   := $(shell pkg-config --libs $(CORE_PKGS) 2>/dev/null) -lm
 PKG_CFLAGS  := $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
-PKG_LIBS    := $(shell pkg-config --libs $(PKGS) 2>/dev/null)
+PKG_LIBS    := $(shell pkg-config --libs $(LINK_PKGS) 2>/dev/null)
 BASE       = $(CSTD) $(MATH) $(WARN) $(OPT) $(CFLAGS)
 # the core: no include path into the project (its headers sit beside its sources)
 CFLAGS_CORE = $(BASE) $(CORE_CFLAGS)

@@ -19,6 +19,9 @@
  * whole frame at once); OSMesa copies it there top row first (OSMESA_Y_UP off) and
  * each half is packed to RGB, the form view_pixels and the PNG writer take.
  *
+ * OSMesa is loaded when the first view is made (gl_load.h): a run that draws
+ * nothing never maps it.
+ *
  * Files: PNG encoding costs more than drawing (bench/bench_view.c), so the two files
  * of a pair are encoded at once, one on a helper thread that is joined before
  * view_refresh returns: no state outlives the call.
@@ -37,6 +40,7 @@
 #include <sys/stat.h>
 #include <time.h>
 
+#include "gl_load.h"
 #include "png_out.h"
 
 #define VIEW_NEAR 0.01     /* m: near clipping plane */
@@ -220,6 +224,7 @@ static int view_make_current(view *v, char *err, size_t errlen)
 /* A context and buffers for w x h pixels per eye, or NULL with a message. */
 static view *view_create(int w, int h, char *err, size_t errlen)
 {
+    if (gl_load(err, errlen) != 0) return NULL;
     view *v = calloc(1, sizeof *v);
     if (!v) {
         snprintf(err, errlen, "out of memory for the views");
