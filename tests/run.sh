@@ -3,7 +3,9 @@
 #
 # Unit tests (build/tests/test_*) print TAP through cmocka; each "ok" or "not ok"
 # line is one test.  Script tests (tests/*.sh but this file) print "ok NAME" or
-# "not ok NAME" lines the same way.  Everything runs twice: with the normal build and
+# "not ok NAME" lines the same way; a test that does not apply to a build says
+# "... # SKIP" (cmocka's skip(): the memory test under the sanitizers) and is counted
+# as skipped.  Everything runs twice: with the normal build and
 # with the AddressSanitizer + UndefinedBehaviorSanitizer build (VROC=build-san/vroc).
 # Full output goes to tests/out/log; failures are repeated at the end.
 set -u
@@ -13,12 +15,14 @@ log=tests/out/log
 : > "$log"
 pass=0
 fail=0
+skipped=0
 failed=""
 
 count() { # reads TAP-ish output on stdin, label in $1
     while IFS= read -r line; do
         printf '%s\n' "$line" >> "$log"
         case "$line" in
+            *"# SKIP"*) skipped=$((skipped + 1)) ;;
             "ok "*) pass=$((pass + 1)) ;;
             "not ok "*) fail=$((fail + 1)); failed="$failed
 $1: $line" ;;
@@ -35,8 +39,8 @@ for build in build build-san; do
         echo "# $t" >> "$log"
         out=$("$t" 2>&1)
         status=$?
-        printf '%s\n' "$out" | { count "$t"; echo "$pass $fail" > tests/out/.counts; printf '%s' "$failed" > tests/out/.failed; }
-        read -r pass fail < tests/out/.counts
+        printf '%s\n' "$out" | { count "$t"; echo "$pass $fail $skipped" > tests/out/.counts; printf '%s' "$failed" > tests/out/.failed; }
+        read -r pass fail skipped < tests/out/.counts
         failed=$(cat tests/out/.failed)
         if [ $status -ne 0 ] && ! printf '%s\n' "$out" | grep -q '^not ok'; then
             fail=$((fail + 1)); failed="$failed
@@ -50,8 +54,8 @@ $t: exited with status $status"
         bin=./vroc; [ "$build" = build-san ] && bin=build-san/vroc
         out=$(VROC=$bin BUILD=$build sh "$s" 2>&1)
         status=$?
-        printf '%s\n' "$out" | { count "$s ($build)"; echo "$pass $fail" > tests/out/.counts; printf '%s' "$failed" > tests/out/.failed; }
-        read -r pass fail < tests/out/.counts
+        printf '%s\n' "$out" | { count "$s ($build)"; echo "$pass $fail $skipped" > tests/out/.counts; printf '%s' "$failed" > tests/out/.failed; }
+        read -r pass fail skipped < tests/out/.counts
         failed=$(cat tests/out/.failed)
         if [ $status -ne 0 ]; then
             fail=$((fail + 1)); failed="$failed
@@ -63,5 +67,9 @@ rm -f tests/out/.counts tests/out/.failed
 if [ -n "$failed" ]; then
     echo "failures (full log in $log):$failed"
 fi
-echo "$pass passed, $fail failed"
+if [ "$skipped" -gt 0 ]; then
+    echo "$pass passed, $fail failed, $skipped skipped"
+else
+    echo "$pass passed, $fail failed"
+fi
 [ "$fail" -eq 0 ]
