@@ -50,6 +50,15 @@
  * cubic metre in a closed cubic room (random_box = (L, L, L), L = N^(1/3) / 2,
  * and six walls): the same sizes and speeds at every N, and a room that grows.
  *
+ * --export FILE writes the scene as loaded (before any frame) for a peer program
+ * (bench/bullet_gas.cpp) to run the same objects, one per line:
+ *   sphere|hull|box mass r|n|hx hy hz [n vertices x y z, body frame] x y z qw qx qy
+ *   qz vx vy vz wx wy wz
+ * with x the centre of mass, mass < 0 for a static object, and a first line
+ * "vroc-scene N time_step frames".
+ *
+ * cpu_frames_per_s is frames per second of the process's processor time (the
+ * median run's): steadier than frames_per_s on a machine that is doing other work.
  * Every line also gives setup_s (the median time to load the scene and make what
  * the frames need: the statements, the check `run` makes and sim_prepare),
  * existing_pairs (the pairs that exist after the last frame: with the heap on, the
@@ -94,10 +103,11 @@ typedef struct {
     double min_time;     /* s of timed runs wanted in all, 0 none */
     double max_time;     /* s of timed runs after which no run starts, 0 none */
     char name[128];
+    const char *export_path; /* --export FILE */
 } options;
 
 typedef struct {
-    double fps, sfps, checks, pops, colls, restarts, first_ms, seconds, setup, live;
+    double fps, sfps, checks, pops, colls, restarts, first_ms, seconds, setup, live, cpu;
     long frames;
     bool truncated;
 } run_result;
@@ -122,7 +132,8 @@ static void usage(void)
     fprintf(stderr,
             "usage: bench_sim SCENE.vroc [--frames N] [--runs R] [--min-time S] [--max-time S]\n"
             "                 [--heap on|off|both] [--render] [--budget S] [--name NAME]\n"
-            "       bench_sim --random N [--seed S] [--thick A] [--walls on|off] [...]\n");
+            "       bench_sim --random N [--seed S] [--thick A] [--walls on|off] [...]\n"
+            "       bench_sim --gas N [--seed S] [--export FILE] [...]\n");
 }
 
 /* Half-extents of the random box for n objects: (x, x, a); the gas's (x, x, x). */
@@ -216,6 +227,36 @@ static int load(shell *sh, const options *o)
     return 0;
 }
 
+/* Writes the world's objects for a peer program (--export).  Returns 0 or -1. */
+static int export_scene(const options *o, const world *w)
+{
+    FILE *f = fopen(o->export_path, "w");
+    if (!f) {
+        perror(o->export_path);
+        return -1;
+    }
+    fprintf(f, "vroc-scene %d %.17g %ld\n", w->n, w->set.time_step, o->frames);
+    for (int i = 0; i < w->n; i++) {
+        const body *b = w->bodies[i];
+        const poly *h = b->shape.hull;
+        double m = body_is_static(b) ? -1 : b->mass;
+        vec3 c = body_com(b), com = b->shape.mass.com;
+        if (b->sp.kind == SHAPE_SPHERE) {
+            fprintf(f, "sphere %.17g %.17g", m, b->sp.radius);
+        } else if (b->sp.kind == SHAPE_CUBE) {
+            fprintf(f, "box %.17g %.17g %.17g %.17g", m, b->sp.size.x, b->sp.size.y, b->sp.size.z);
+        } else {
+            fprintf(f, "hull %.17g %d", m, h->nv);
+            for (int k = 0; k < h->nv; k++)
+                fprintf(f, " %.17g %.17g %.17g", h->v[k].x - com.x, h->v[k].y - com.y, h->v[k].z - com.z);
+        }
+        fprintf(f, " %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n",
+                c.x, c.y, c.z, b->q.w, b->q.x, b->q.y, b->q.z, b->v.x, b->v.y, b->v.z, b->w.x,
+                b->w.y, b->w.z);
+    }
+    return fclose(f) == 0 ? 0 : -1;
+}
+
 /* One run: a fresh scene, o->frames frames timed.  Returns 0 or -1. */
 static int one_run(const options *o, view **v, run_result *res, long *objects, long *pairs,
                    long *subframes, bool *heap_on)
@@ -229,13 +270,17 @@ static int one_run(const options *o, view **v, run_result *res, long *objects, l
         shell_free(&sh);
         return -1;
     }
+    if (o->export_path && export_scene(o, &sh.w) != 0) {
+        shell_free(&sh);
+        return -1;
+    }
     if (o->render && view_display(v, &sh.view_set, err, sizeof err) != 0) {
         fprintf(stderr, "bench_sim: %s: %s\n", o->name, err);
         shell_free(&sh);
         return -1;
     }
     sim_stats s0 = sh.w.st;
-    double t0 = now(), first = 0;
+    double t0 = now(), c0 = cpu_now(), first = 0;
     long k;
     res->truncated = false;
     for (k = 0; k < o->frames; k++) {
@@ -258,6 +303,7 @@ static int one_run(const options *o, view **v, run_result *res, long *objects, l
         }
     }
     double dt = now() - t0;
+    res->cpu = cpu_now() - c0;
     sim_stats *s = &sh.w.st;
     res->frames = k;
     res->seconds = dt;
@@ -318,6 +364,8 @@ static int parse(int argc, char **argv, options *o)
             o->min_time = strtod(val, NULL);
         } else if (!strcmp(a, "--budget")) {
             o->budget = strtod(val, NULL);
+        } else if (!strcmp(a, "--export")) {
+            o->export_path = val;
         } else if (!strcmp(a, "--name")) {
             snprintf(o->name, sizeof o->name, "%s", val);
         } else if (!strcmp(a, "--heap") && !strcmp(val, "both")) {
@@ -353,7 +401,8 @@ static int parse(int argc, char **argv, options *o)
 /* The runs of one measurement: each figure of each run, for the medians. */
 typedef struct {
     double fps[MAX_RUNS], sfps[MAX_RUNS], checks[MAX_RUNS], pops[MAX_RUNS], colls[MAX_RUNS],
-        restarts[MAX_RUNS], first[MAX_RUNS], frames[MAX_RUNS], setup[MAX_RUNS], live[MAX_RUNS];
+        restarts[MAX_RUNS], first[MAX_RUNS], frames[MAX_RUNS], setup[MAX_RUNS], live[MAX_RUNS],
+        cpu_fps[MAX_RUNS];
     int runs;
     double spent; /* s of timed runs */
     bool truncated, heap_on;
@@ -371,6 +420,7 @@ static void add_run(series *x, const run_result *res)
     x->first[r] = res->first_ms;
     x->frames[r] = (double)res->frames;
     x->setup[r] = res->setup;
+    x->cpu_fps[r] = (double)res->frames / res->cpu;
     x->live[r] = res->live;
     x->truncated = x->truncated || res->truncated;
     x->spent += res->seconds;
@@ -408,6 +458,7 @@ static void print_series(const options *o, series *x, long objects, long pairs, 
            " restarts_per_frame=%.2f first_frame_ms=%.3g truncated=%d",
            median(x->checks, n), median(x->pops, n), median(x->colls, n), median(x->restarts, n),
            median(x->first, n), x->truncated ? 1 : 0);
+    put_rate("cpu_frames_per_s", median(x->cpu_fps, n));
     printf(" setup_s=%.4g existing_pairs=%.0f peak_rss_mb=%.1f", median(x->setup, n),
            median(x->live, n), peak_rss_mb());
     if (o->heap == HEAP_BOTH) printf(" order=alternate");

@@ -263,6 +263,56 @@ static void tree_remove(broad_tree *t, int leaf)
     if (grand >= 0) fix_up(t, grand);
 }
 
+/* The box of the objects obj[0 .. n - 1] in the order of their centres along
+ * axis (for qsort, through sort_boxes). */
+static const aabb *sort_boxes;
+static int sort_axis;
+
+static int by_centre(const void *x, const void *y)
+{
+    const aabb *a = &sort_boxes[*(const int *)x], *b = &sort_boxes[*(const int *)y];
+    double ca = v3_comp(a->lo, sort_axis) + v3_comp(a->hi, sort_axis);
+    double cb = v3_comp(b->lo, sort_axis) + v3_comp(b->hi, sort_axis);
+    if (ca != cb) return ca < cb ? -1 : 1;
+    return *(const int *)x - *(const int *)y; /* (a total order: the same tree everywhere) */
+}
+
+/* A subtree over the objects obj[0 .. n - 1] (n >= 1) with boxes box, split at the
+ * median of their centres along the longest axis of the centres' spread: its
+ * root, or -1 when out of memory.  leaf[] gets each object's node. */
+static int tree_build(broad_tree *t, int *obj, int n, const aabb *box, int *leaf)
+{
+    if (n == 1) {
+        int k = node_new(t);
+        if (k < 0) return -1;
+        t->node[k].box = box[obj[0]];
+        t->node[k].body = obj[0];
+        leaf[obj[0]] = k;
+        return k;
+    }
+    vec3 lo = v3_add(box[obj[0]].lo, box[obj[0]].hi), hi = lo;
+    for (int i = 1; i < n; i++) {
+        vec3 c = v3_add(box[obj[i]].lo, box[obj[i]].hi);
+        lo = v3_min(lo, c);
+        hi = v3_max(hi, c);
+    }
+    vec3 d = v3_sub(hi, lo);
+    sort_axis = d.x >= d.y && d.x >= d.z ? 0 : d.y >= d.z ? 1 : 2;
+    sort_boxes = box;
+    qsort(obj, (size_t)n, sizeof *obj, by_centre);
+    int k = node_new(t);
+    if (k < 0) return -1;
+    int half = n / 2;
+    int a = tree_build(t, obj, half, box, leaf);
+    int b = a < 0 ? -1 : tree_build(t, obj + half, n - half, box, leaf);
+    if (b < 0) return -1;
+    t->node[k].child[0] = a;
+    t->node[k].child[1] = b;
+    t->node[a].parent = t->node[b].parent = k;
+    node_fit(t, k);
+    return k;
+}
+
 /* The objects of t whose boxes meet box, into bp->found.  Returns 0 or -1. */
 static int tree_query(broad_phase *bp, const broad_tree *t, aabb box)
 {
@@ -333,6 +383,8 @@ static int meet(world *w, int i, const broad_tree *t)
     return 0;
 }
 
+static int build_trees(world *w);
+
 /* Object i has a new box: it goes into its tree, its pairs with the boxes it now
  * meets are made, and those with the boxes it no longer meets end.  Returns 0 or
  * -1. */
@@ -345,6 +397,9 @@ static int refit(world *w, int i, aabb box)
     bp->box[i] = box;
     if ((bp->leaf[i] = tree_insert(t, box, i)) < 0) return -1;
     bp->refits++;
+    /* insertions make a poorer tree than a build: once as many as there are
+     * objects were made, the tree is built again */
+    if (++bp->since_build > 4 * w->n && build_trees(w) != 0) return -1;
     if (meet(w, i, &bp->moving) != 0 || (!fixed && meet(w, i, &bp->fixed) != 0)) return -1;
     /* (backwards: ending a pair takes it out of the list) */
     const pair_adj *adj = &w->pairs.adj[i];
@@ -354,6 +409,27 @@ static int refit(world *w, int i, aabb box)
         if (!box_meets(box, bp->box[l->other])) pair_far(w, l->slot);
     }
     return 0;
+}
+
+/* Both trees anew from the boxes, top down (a better tree than one made by
+ * insertions); the refits count starts again.  Returns 0 or -1. */
+static int build_trees(world *w)
+{
+    broad_phase *bp = &w->broad;
+    int *obj = malloc((size_t)(w->n ? w->n : 1) * sizeof *obj);
+    if (!obj) return -1;
+    int rc = 0;
+    for (int fixed = 0; fixed < 2 && rc == 0; fixed++) {
+        broad_tree *t = fixed ? &bp->fixed : &bp->moving;
+        tree_init(t);
+        int n = 0;
+        for (int i = 0; i < w->n; i++)
+            if (body_is_static(w->bodies[i]) == (fixed != 0)) obj[n++] = i;
+        if (n > 0 && (t->root = tree_build(t, obj, n, bp->box, bp->leaf)) < 0) rc = -1;
+    }
+    free(obj);
+    bp->since_build = 0;
+    return rc;
 }
 
 /* True when every box reaches everywhere (BROAD_SMALL). */
@@ -392,9 +468,8 @@ int broad_rebuild(world *w)
         bool fixed = body_is_static(b);
         bp->box[i] = fixed || b->state != STATE_DYNAMIC ? still_box(b) : box_grow(sphere_box(b), margin(b));
         bp->until[i] = -HUGE_VAL;
-        bp->leaf[i] = tree_insert(fixed ? &bp->fixed : &bp->moving, bp->box[i], i);
-        if (bp->leaf[i] < 0) return -1;
     }
+    if (build_trees(w) != 0) return -1;
     for (int i = 0; i < w->n; i++) {
         if (body_is_static(w->bodies[i])) continue;
         if (meet(w, i, &bp->moving) != 0 || meet(w, i, &bp->fixed) != 0) return -1;

@@ -61,6 +61,7 @@ typedef struct {
     int *stack, capstack; /* the trees' walks */
     int *found, nfound, capfound; /* the objects a query found */
     long refits;          /* boxes made again since the world was made */
+    long since_build;     /* and since the trees were last built */
 } broad_phase;
 
 void broad_init(broad_phase *bp);
