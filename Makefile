@@ -61,6 +61,10 @@ COMMANDS  = $(sort $(wildcard commands/*))
 CORE_TESTS  = test_broad test_closest test_collide test_flight test_geometry test_lcp test_physics test_schedule test_spin
 UPPER_TESTS = $(filter-out $(CORE_TESTS),$(patsubst tests/%.c,%,$(wildcard tests/test_*.c)))
 BENCHES  = $(patsubst bench/%.c,%,$(wildcard bench/bench_*.c))
+# the Bullet peer of the gas benchmark (bench/bullet_gas.cpp), built when Debian's
+# libbullet-dev is there (make deps installs it)
+BULLET  := $(shell pkg-config --exists bullet 2>/dev/null && echo build/bench/bullet_gas)
+CXX     ?= c++
 
 # objects of build dir $(1)
 core_obj  = $(patsubst src/%.c,$(1)/%.o,$(CORE_SRC))
@@ -163,8 +167,13 @@ build/bench/%: bench/%.c bench/bench.h build/libvroc.a build/libvroc-core.a buil
 	@mkdir -p build/bench
 	$(CC) $(CFLAGS_ALL) -O2 -o $@ $< build/libvroc.a build/libvroc-core.a $(LIBS)
 
+build/bench/bullet_gas: bench/bullet_gas.cpp
+	@mkdir -p build/bench
+	$(CXX) -std=c++17 -O2 -Wall -Wextra -Werror $(shell pkg-config --cflags bullet) -o $@ $< \
+	    $(shell pkg-config --libs bullet)
+
 bench: deps
-	@$(MAKE) --no-print-directory vroc $(addprefix build/bench/,$(BENCHES))
+	@$(MAKE) --no-print-directory vroc $(addprefix build/bench/,$(BENCHES)) $(BULLET)
 	@sh bench/run.sh
 
 # ---- fuzzing: an AFL++ campaign of FUZZ_TIME seconds in a scratch folder; what

@@ -13,6 +13,10 @@
 #     same state of the machine (3 runs or more for the rendered runs);
 #   - the random environment (Table 5.6) for 20 to 100 objects, and 200, 500 and
 #     1000 for scaling (fewer runs and frames there, as printed);
+#   - the gas of issue 27: 100, 1,000, 3,000 and 10,000 objects, one per cubic metre
+#     in a closed room (bench_sim --gas), each measured in a process of its own (its
+#     peak memory is its own), and the same objects run by Bullet at 1/60 s
+#     (build/bench/bullet_gas, when libbullet-dev was there to build it);
 # then prints build/bench/bench_view and build/bench/bench_closest.
 #
 # Environment: BENCH_QUICK=1 measures less (1 run, fewer frames) for a smoke test.
@@ -335,6 +339,62 @@ if [ -s "$TMP/cut" ]; then
 fi
 if grep -q 'truncated=1' "$RAW"; then
     echo "* a run stopped at the $BUDGET s budget: the figure covers the frames it did."
+fi
+
+# ---------------------------------------------------------------- the gas (issue 27)
+
+GAS_SIZES="100 1000 3000 10000"
+if [ "$QUICK" = 1 ]; then GAS_FRAMES=5; else GAS_FRAMES=20; fi
+BULLET=build/bench/bullet_gas
+for n in $GAS_SIZES; do
+    measure "gas$n" --gas "$n" --frames "$GAS_FRAMES" --runs 1 --heap on --budget 120 \
+        --max-time 120 --export "$TMP/gas$n.txt"
+    if [ -x "$BULLET" ] && [ -s "$TMP/gas$n.txt" ]; then
+        printf 'bench: %-28s' "bullet$n" >&2
+        if "$BULLET" "$TMP/gas$n.txt" >"$TMP/bullet$n" 2>"$TMP/bullet$n.err"; then
+            printf ' %s s\n' "$(field "$(cat "$TMP/bullet$n")" wall_s)" >&2
+            cat "$TMP/bullet$n" >>"$RAW"
+        else
+            : >"$TMP/bullet$n"
+            printf ' failed: %s\n' "$(head -n 1 "$TMP/bullet$n.err")" >&2
+        fi
+    fi
+done
+
+echo
+echo "Scaling: the gas of issue 27 (simulation only, heap on; not in the thesis)"
+rule
+printf '%-8s %12s %9s %10s %9s %9s %9s | %11s %9s %7s\n' objects "thesis pairs" "existing" \
+    frames/s "wall s" "set-up s" "peak MB" "Bullet s" "Bullet MB" "ratio"
+for n in $GAS_SIZES; do
+    t="gas$n"
+    [ -s "$TMP/$t" ] || { printf '%-8s not measured\n' "$n"; continue; }
+    fps=$(get "$t" frames_per_s)
+    wall=$(awk -v f="$(get "$t" frames)" -v r="$fps" 'BEGIN { if (r > 0) printf "%.3g", f / r }')
+    bw="-"; bm="-"; br="-"
+    if [ -s "$TMP/bullet$n" ]; then
+        bw=$(awk -v w="$(field "$(cat "$TMP/bullet$n")" wall_s)" 'BEGIN { printf "%.3g", w }')
+        bm=$(field "$(cat "$TMP/bullet$n")" peak_rss_mb)
+        br=$(ratio "$bw" "$wall")
+    fi
+    printf '%-8s %12s %9s %10s %9s %9s %9s | %11s %9s %7s\n' "$(num "$(get "$t" objects)")" \
+        "$(num "$(get "$t" pairs)")" "$(num "$(get "$t" existing_pairs)")" "$(num "$fps")$(trunc "$t")" \
+        "$wall" "$(num "$(get "$t" setup_s)")" "$(num "$(get "$t" peak_rss_mb)")" \
+        "$bw" "$(num "$bm")" "$br"
+done
+echo "The gas: 'random N' (mixed spheres, cubes and superquadrics 0.08 to 0.2 m, up to 2 m/s"
+echo "and 2 rad/s, elasticity 1) in random_box = (L, L, L), L = N^(1/3) / 2, closed by six"
+echo "static walls: one object per cubic metre; no force, time_step 0.1, max_linear 2,"
+echo "collision_dist 0.2 (2 subframes); $GAS_FRAMES frames ($(awk -v f="$GAS_FRAMES" 'BEGIN { print f / 10 }') s simulated), 1 run each in a process"
+echo "of its own.  thesis pairs: every dynamic pair (Table 5.1's count); existing: the pairs"
+echo "that exist after the last frame; wall s: the frames' wall time; set-up: loading the scene"
+echo "and making ready what the frames need; peak MB: the process's peak resident set."
+if [ -x "$BULLET" ]; then
+    echo "Bullet: the same objects (bench_sim --export) in Bullet $(pkg-config --modversion bullet 2>/dev/null)'s default world at its"
+    echo "usual 1/60 s step for the same simulated time (bench/bullet_gas.cpp): its stepping's"
+    echo "wall time and peak memory; ratio = Bullet's wall / vroc's (issue 27's goal: >= 4x)."
+else
+    echo "Bullet: not measured (no libbullet-dev: make deps installs it)."
 fi
 
 # the collision scenes of scenes/ (issue 5): frames/s with collisions, heap on

@@ -16,6 +16,7 @@ need_cmd() { # command, Debian package
 
 need_cmd pkg-config pkg-config
 need_cmd cc gcc
+need_cmd c++ g++
 if command -v pkg-config >/dev/null 2>&1; then
     need_pkg readline libreadline-dev
     need_pkg osmesa libosmesa6-dev
@@ -23,8 +24,9 @@ if command -v pkg-config >/dev/null 2>&1; then
     need_pkg qhull_r libqhull-dev
     need_pkg sndfile libsndfile1-dev
     need_pkg cmocka libcmocka-dev
+    need_pkg bullet libbullet-dev # the peer of the gas benchmark (make bench)
 else
-    missing="$missing libreadline-dev libosmesa6-dev libpng-dev libqhull-dev libsndfile1-dev libcmocka-dev"
+    missing="$missing libreadline-dev libosmesa6-dev libpng-dev libqhull-dev libsndfile1-dev libcmocka-dev libbullet-dev"
 fi
 need_cmd tmux tmux
 need_cmd mandoc mandoc
