@@ -66,7 +66,8 @@ typedef struct body {
     body_mode mode;    /* how a dynamic body moves (sim.h): free, sliding, or in a
                         * cluster of bodies pressed together (general) */
     int slide_on;      /* MODE_SLIDE: the static object it slides on, or -1, */
-    vec3 slide_n;      /*   that face's normal, towards this body */
+    int slide_face;    /*   the face of it, */
+    vec3 slide_n;      /*   and that face's normal, towards this body */
     bool moved;        /* a command placed, turned, reshaped it or changed its mass
                         * since the simulation last ran: what it touches is found
                         * anew */

@@ -58,5 +58,10 @@
 /* random_box half-extents (m): random's objects are 0.024 to 0.1 of the box's
  * smallest half-extent, so that they stay within the lengths above */
 #define LIM_RANDOM_BOX_MIN 1e-4
+/* exact state (save): angular momentum (kg m^2/s), as I w above; the clock's base
+ * time (s) and frame counts, which a double holds exactly below 2^53 */
+#define LIM_MOMENTUM_MAX 1e21
+#define LIM_CLOCK_MAX 1e12
+#define LIM_FRAMES_MAX 1e15
 
 #endif

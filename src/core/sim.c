@@ -500,6 +500,13 @@ int sim_frame(world *w, char *err, size_t errlen)
     }
     w->base_frames++;
     w->time = w->time_base + (double)w->base_frames * w->base_step;
+    /* the pairs' closest features only speed queries up, but where features are
+     * equally close they pick which is reported: every frame starts from none, so
+     * that a world read back from save (which has none) goes on to the bit */
+    for (long k = 0; k < w->pairs.n; k++) w->pairs.p[k].cache.valid = w->pairs.p[k].hit.valid = false;
+    /* and each object's w is the one its L and orientation give, as when read back */
+    for (int i = 0; i < w->n; i++)
+        if (!body_is_static(w->bodies[i])) body_update_w(w->bodies[i]);
     w->frame++;
     w->st.frames++;
     return 0;
@@ -511,8 +518,9 @@ long sim_penetrations(world *w, sim_report report, void *ctx)
     long count = 0;
     for (long i = 0; i < w->pairs.n; i++) {
         pair *p = &w->pairs.p[i];
-        if (p->touching) continue;
         const body *a = w->bodies[p->a], *b = w->bodies[p->b];
+        /* only what a command placed: the simulation's own states are its own */
+        if (p->touching || (!a->moved && !b->moved)) continue;
         closest_result r = pair_query(w, p, a, b);
         if (r.status == CLOSEST_PENETRATING && r.distance < -touch_of(a, b)) {
             count++;

@@ -30,8 +30,11 @@ int sim_frame(world *w, char *err, size_t errlen);
  * what a command changed since).  Returns 0, or -1 when out of memory. */
 int sim_prepare(world *w);
 
-/* Calls report for every pair that interpenetrates now (deeper than the contact
- * tolerance), with the depth estimate; returns how many.  -1 when out of memory. */
+/* Calls report for every pair that a command placed (one of its objects was
+ * placed, turned, reshaped or added since time last ran) and that interpenetrates
+ * now, deeper than the contact tolerance, with the depth estimate; returns how
+ * many.  States the simulation made itself are never reported: a run can be
+ * split anywhere.  -1 when out of memory. */
 typedef void (*sim_report)(void *ctx, const body *a, const body *b, double depth);
 long sim_penetrations(world *w, sim_report report, void *ctx);
 

@@ -22,7 +22,6 @@ void step_free(step_state *s)
 {
     free(s->fl);
     free(s->event);
-    free(s->slide_face);
     free(s->scratch);
     free(s->flown_id);
     free(s->flown_t);
@@ -53,7 +52,6 @@ int step_prepare(world *w, bool changed)
         changed = true;
         s->fl = resized(s->fl, sizeof *s->fl, w->n, &ok);
         s->event = resized(s->event, sizeof *s->event, w->n, &ok);
-        s->slide_face = resized(s->slide_face, sizeof *s->slide_face, w->n, &ok);
         s->scratch = resized(s->scratch, STEP_COPIES * sizeof *s->scratch, w->n, &ok);
         s->flown_id = resized(s->flown_id, STEP_FLOWN_COPIES * sizeof *s->flown_id, w->n, &ok);
         s->flown_t = resized(s->flown_t, STEP_FLOWN_COPIES * sizeof *s->flown_t, w->n, &ok);
@@ -84,7 +82,6 @@ int step_prepare(world *w, bool changed)
         s->now[i] = w->bodies[i];
         s->mark[i] = false;
         s->event[i] = HUGE_VAL;
-        s->slide_face[i] = -1;
         flight_start(&s->fl[i], w->bodies[i], FLIGHT_STILL, w->time, v3(0, 0, 0), v3(0, 0, 0),
                      s->flight_count++);
     }

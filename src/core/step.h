@@ -30,7 +30,6 @@ typedef struct {
     flight *fl;           /* each object's flight (a static object's: still) */
     long flight_count;
     double *event;        /* each object's own next event, or +inf */
-    int *slide_face;      /* MODE_SLIDE: the support's face it slides on */
     body *scratch;        /* STEP_COPIES copies of each object */
     long *flown_id;       /* step_flown's copies: the flight each was flown on, */
     double *flown_t;      /*   and to when (-1: none) */

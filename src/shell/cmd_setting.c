@@ -61,6 +61,23 @@ cmd_status cmd_seed(shell *sh, const stmt *st)
     return CMD_OK;
 }
 
+/* splitmix64 adds this to its state at every draw (random.c) */
+#define DRAW_STEP 0x9E3779B97F4A7C15ULL
+
+cmd_status cmd_random_draws(shell *sh, const stmt *st)
+{
+    sh->rng = sh->set.seed + (unsigned long long)st->num[0] * DRAW_STEP;
+    return CMD_OK;
+}
+
+unsigned long long shell_random_draws(const shell *sh)
+{
+    /* the step's inverse modulo 2^64 (it is odd), by Newton's iteration */
+    unsigned long long inv = DRAW_STEP;
+    for (int k = 0; k < 6; k++) inv *= 2 - DRAW_STEP * inv;
+    return (sh->rng - sh->set.seed) * inv;
+}
+
 cmd_status cmd_image_size(shell *sh, const stmt *st)
 {
     sh->view_set.image_w = (int)st->num[0];

@@ -43,6 +43,9 @@ typedef enum {
     VAL_CHOICE,       /* one of the words in choices */
     VAL_FILE,         /* a file name */
     VAL_FILE_OR_OFF,  /* a file name, or off */
+    VAL_NAME,         /* an object name */
+    VAL_QUAT,         /* (w, x, y, z) */
+    VAL_PAIR,         /* (a, b) */
 } arg_kind;
 
 /* Range flags.  R_RANGE: every number of the value (each component of a vector)

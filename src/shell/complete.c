@@ -102,7 +102,8 @@ static bool later_candidates(const shell *sh, const char *w0, bool has_eq)
     if (!c) return true;
     switch (c->arg) {
     case ARG_NAME:
-    case ARG_NAME2: add_names(sh, ""); return true;
+    case ARG_NAME2:
+    case VAL_NAME: add_names(sh, ""); return true;
     case ARG_OPT_WORD:
         for (int i = 0; i < command_count; i++) cand_add(command_table[i].name);
         return true;

@@ -14,6 +14,7 @@ struct shell;
 cmd_status cmd_create(struct shell *sh, const stmt *st);
 cmd_status cmd_delete(struct shell *sh, const stmt *st);
 cmd_status cmd_property(struct shell *sh, const stmt *st);
+cmd_status cmd_exact(struct shell *sh, const stmt *st);
 
 cmd_status cmd_setting(struct shell *sh, const stmt *st);
 cmd_status cmd_random_box(struct shell *sh, const stmt *st);
@@ -43,6 +44,10 @@ cmd_status cmd_print(struct shell *sh, const stmt *st);
 cmd_status cmd_list(struct shell *sh, const stmt *st);
 cmd_status cmd_show(struct shell *sh, const stmt *st);
 cmd_status cmd_time(struct shell *sh, const stmt *st);
+cmd_status cmd_clock(struct shell *sh, const stmt *st);
+cmd_status cmd_frame(struct shell *sh, const stmt *st);
+cmd_status cmd_hash(struct shell *sh, const stmt *st);
+cmd_status cmd_random_draws(struct shell *sh, const stmt *st);
 cmd_status cmd_distance(struct shell *sh, const stmt *st);
 cmd_status cmd_stats(struct shell *sh, const stmt *st);
 cmd_status cmd_quit(struct shell *sh, const stmt *st);

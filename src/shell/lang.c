@@ -82,7 +82,7 @@ static int get_number(const token *t, const command *c, double *out, const where
 static int get_tuple(const token *t, int nt, int *i, int n, const command *c, double *out,
                      const where *at)
 {
-    static const char *forms[] = {"", "(x)", "(x, y)", "(x, y, z)"};
+    static const char *forms[] = {"", "(x)", "(x, y)", "(x, y, z)", "(w, x, y, z)"};
     const char *form = forms[n];
     char buf[96];
     if (*i >= nt || t[*i].k != T_LP) {
@@ -326,6 +326,30 @@ static int parse_value(stmt *st, const token *t, int nt, const where *at)
             }
         }
         break;
+    case VAL_NAME:
+        if (get_name(t, nt, i, c, &st->word, at) != 0) return -1;
+        i++;
+        break;
+    case VAL_QUAT:
+    case VAL_PAIR: {
+        int n = c->arg == VAL_QUAT ? 4 : 2;
+        if (get_tuple(t, nt, &i, n, c, st->num, at) != 0) return -1;
+        char what[96];
+        snprintf(what, sizeof what, "%s components", c->name);
+        for (int k = 0; k < n; k++)
+            if (check_range_of(what, c->range, c->lo, c->hi, st->num[k], at) != 0) return -1;
+        if (c->arg == VAL_QUAT) {
+            double n2 = 0;
+            for (int k = 0; k < 4; k++) n2 += st->num[k] * st->num[k];
+            if (!(fabs(sqrt(n2) - 1) <= 1e-6)) {
+                perr(at, "%s must be a unit quaternion (w, x, y, z), within 1e-6 of length 1",
+                     c->name);
+                return -1;
+            }
+        }
+        st->n = n;
+        break;
+    }
     case VAL_SIZE2: {
         if (get_tuple(t, nt, &i, 2, c, st->num, at) != 0) return -1;
         char what[96];

@@ -124,6 +124,10 @@ double shell_clock(void);
 void *shell_setting_field(shell *sh, const command *c);
 const void *shell_setting_value(const shell *sh, const command *c);
 
+/* How many numbers the random sequence has drawn since seed was set (what
+ * random_draws restores). */
+unsigned long long shell_random_draws(const shell *sh);
+
 /* Statements text (named name for messages) parsed and run from line `line` on. */
 cmd_status shell_run_text_at(shell *sh, const char *text, const char *name, int line);
 

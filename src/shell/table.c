@@ -38,9 +38,14 @@
     {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SHELL, offsetof(shell_settings, field), fn, NO_AFTER}
 /* a setting kept elsewhere (the logs): its handler knows where */
 #define OTHER(name, arg, fn) {name, FORM_SETTING, arg, 0, 0, 0, NULL, 0, OWN_NONE, 0, fn, NO_AFTER}
+#define OTHER_R(name, arg, lo, hi, fn) \
+    {name, FORM_SETTING, arg, R_RANGE, lo, hi, NULL, 0, OWN_NONE, 0, fn, NO_AFTER}
 #define CHOICE(name, choices, fn) {name, FORM_SETTING, VAL_CHOICE, 0, 0, 0, choices, 0, OWN_VIEW, 0, fn, NO_AFTER}
 #define ACT(name, arg, fn) {name, FORM_ACTION, arg, 0, 0, 0, NULL, 0, OWN_NONE, 0, fn, NO_AFTER}
 #define COUNT(name, fn) {name, FORM_ACTION, ARG_COUNT, R_RANGE, 0, 1e9, NULL, 0, OWN_NONE, 0, fn, NO_AFTER}
+/* a property of the exact state (language.md, "Exact state"), at field of body */
+#define EXACT(name, arg, range, lo, hi, field) \
+    {name, FORM_PROPERTY, arg, range, lo, hi, NULL, C_ALL, OWN_NONE, offsetof(body, field), cmd_exact, NO_AFTER}
 /* a vector and a number (VAL_VECTOR_ANGLE): what2 names the number, lo2 to hi2
  * its limits */
 #define PROP_A(name, range, lo, hi, classes, field, what2, lo2, hi2) \
@@ -76,6 +81,16 @@ const command command_table[] = {
     PROP("a1", VAL_NUMBER, R_RANGE, LIM_LENGTH_MIN, LIM_LENGTH_MAX, C_SQ, sp.a1),
     PROP("a2", VAL_NUMBER, R_RANGE, LIM_LENGTH_MIN, LIM_LENGTH_MAX, C_SQ, sp.a2),
     PROP("a3", VAL_NUMBER, R_RANGE, LIM_LENGTH_MIN, LIM_LENGTH_MAX, C_SQ, sp.a3),
+    /* exact state, as save writes it */
+    EXACT("orientation", VAL_QUAT, R_RANGE, -1, 1, q),
+    EXACT("velocity", VAL_VECTOR, R_RANGE, -LIM_SPEED_MAX, LIM_SPEED_MAX, v),
+    EXACT("angular_momentum", VAL_VECTOR, R_RANGE, -LIM_MOMENTUM_MAX, LIM_MOMENTUM_MAX, L),
+    EXACT("slide_on", VAL_NAME, 0, 0, 0, slide_on),
+    EXACT("slide_face", VAL_INTEGER, R_RANGE, 0, 1e6, slide_face),
+    {"mode", FORM_PROPERTY, VAL_CHOICE, 0, 0, 0, "free|slide|general", C_ALL, OWN_NONE,
+     offsetof(body, mode), cmd_exact, NO_AFTER},
+    EXACT("resting", VAL_ONOFF, 0, 0, 0, state),
+    EXACT("touching", VAL_NAME, 0, 0, 0, moved),
     /* system (Table A.5) */
     ACT("read", ARG_FILE, cmd_read),
     ACT("display", ARG_NONE, cmd_display),
@@ -100,6 +115,9 @@ const command command_table[] = {
     /* console */
     COUNT("run", cmd_run),
     ACT("time", ARG_NONE, cmd_time),
+    OTHER_R("clock", VAL_PAIR, 0, LIM_CLOCK_MAX, cmd_clock),
+    OTHER_R("frame", VAL_INTEGER, 0, LIM_FRAMES_MAX, cmd_frame),
+    ACT("hash", ARG_NONE, cmd_hash),
     ACT("list", ARG_NONE, cmd_list),
     ACT("print", ARG_NAME, cmd_print),
     ACT("show", ARG_NONE, cmd_show),
@@ -113,6 +131,7 @@ const command command_table[] = {
     SHELLF("random_box", VAL_VECTOR, R_RANGE, LIM_RANDOM_BOX_MIN, LIM_LENGTH_MAX, random_box,
            cmd_random_box),
     SHELLF("seed", VAL_INTEGER, R_RANGE, 0, 4294967295.0, seed, cmd_seed),
+    OTHER_R("random_draws", VAL_INTEGER, 0, LIM_FRAMES_MAX, cmd_random_draws),
     /* views and hand */
     VIEW("head", VAL_VECTOR, R_RANGE, -POS, POS, head),
     VIEW("look_at", VAL_VECTOR, R_RANGE, -POS, POS, look_at),

@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/pairs.h"
+#include "core/world.h"
 #include "handlers.h"
 #include "shell.h"
 
@@ -34,6 +36,18 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
     }
     if (strcmp(n, "seed") == 0) {
         fprintf(out, "seed = %lu\n", s->seed);
+        return;
+    }
+    if (strcmp(n, "random_draws") == 0) {
+        fprintf(out, "random_draws = %llu\n", shell_random_draws(sh));
+        return;
+    }
+    if (strcmp(n, "clock") == 0) {
+        fprintf(out, "clock = (%s, %ld)\n", fmt_num(a, sh->w.time_base), sh->w.base_frames);
+        return;
+    }
+    if (strcmp(n, "frame") == 0) {
+        fprintf(out, "frame = %ld\n", sh->w.frame);
         return;
     }
     if (strcmp(n, "image_size") == 0) {
@@ -122,6 +136,28 @@ void body_write(FILE *out, const body *b)
     writer_vec(out, b->v);
     fprintf(out, "\nangular_vel = ");
     writer_vec(out, b->w);
+    char c[32], d[32], e[32];
+    fprintf(out, "\norientation = (%s, %s, %s, %s)\nvelocity = ", fmt_num(a, b->q.w),
+            fmt_num(c, b->q.x), fmt_num(d, b->q.y), fmt_num(e, b->q.z));
+    writer_vec(out, b->v);
+    fprintf(out, "\nangular_momentum = ");
+    writer_vec(out, b->L);
     fputc('\n', out);
-    if (b->state == STATE_RESTING) fprintf(out, "# resting\n");
+}
+
+void contact_write(FILE *out, const world *w, int i, int only_later)
+{
+    static const char *modes[] = {"free", "slide", "general"};
+    const body *b = w->bodies[i];
+    if (b->mode == MODE_SLIDE && b->slide_on >= 0 && b->slide_on < w->n)
+        fprintf(out, "slide_on = %s\nslide_face = %d\n", w->bodies[b->slide_on]->name,
+                b->slide_face);
+    fprintf(out, "mode = %s\n", body_is_static(b) ? "free" : modes[b->mode]);
+    if (!body_is_static(b)) fprintf(out, "resting = %s\n", b->state == STATE_RESTING ? "on" : "off");
+    for (long k = 0; k < w->pairs.n; k++) {
+        const pair *p = &w->pairs.p[k];
+        if (!p->touching || (p->a != i && p->b != i)) continue;
+        int o = p->a == i ? p->b : p->a;
+        if (!only_later || o < i) fprintf(out, "touching = %s\n", w->bodies[o]->name);
+    }
 }

@@ -9,6 +9,7 @@
 #include "fmt.h"
 
 struct shell;
+struct world;
 
 /* Writes v as "(x, y, z)", each number by fmt_num. */
 void writer_vec(FILE *out, vec3 v);
@@ -18,7 +19,14 @@ void writer_vec(FILE *out, vec3 v);
  * reading them back would truncate the logs. */
 void settings_write(FILE *out, const struct shell *sh, int for_save);
 
-/* Writes body b as statements that recreate it (its creation line first). */
+/* Writes body b as statements that recreate it (its creation line first): as
+ * typed (rotate, linear_vel, angular_vel), then exactly (orientation, velocity,
+ * angular_momentum), so that it reads back to the bit. */
 void body_write(FILE *out, const body *b);
+
+/* Writes the contact state of body i of w (language.md, "Exact state"): its mode,
+ * with its slide's support and face, whether it rests, and the objects it is in
+ * lasting contact with (each pair once, on its later object, when only_later). */
+void contact_write(FILE *out, const struct world *w, int i, int only_later);
 
 #endif
