@@ -38,6 +38,10 @@ static sched_move move_of(const world *w, int i, const body *o)
  * (envelope_time). */
 #define TOI_ENVELOPE_VERTICES 1024
 
+/* ... and only when the surfaces' bound advances less than this fraction of the
+ * time left to search (a speed-up alone: both bounds are never late). */
+#define TOI_ENVELOPE_WHEN 0.05
+
 /* A height along the normal that changes at a constant rate: h0 + h1 t. */
 typedef struct {
     double h0, h1;
@@ -187,7 +191,10 @@ static double advance(const body *a, const sched_move *ma, const body *b, const 
 {
     if (!(d > target)) return 0;
     double dt = sched_ca_time(a, ma, b, mb, d, r->normal, r->pa, r->pb, target);
-    if (dt < T) dt = d_max(dt, envelope_time(a, ma, b, mb, r->normal, r->pb, target, T));
+    /* the points' bound costs a pass over their vertices: only where the surfaces'
+     * would crawl (a twentieth of what is left to search, or less) */
+    if (dt < TOI_ENVELOPE_WHEN * T)
+        dt = d_max(dt, envelope_time(a, ma, b, mb, r->normal, r->pb, target, T));
     return dt;
 }
 
