@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "media.h"
 #include "shell.h"
 
 static void usage(FILE *f)
@@ -147,6 +148,7 @@ int main(int argc, char **argv)
                    VROC_VERSION);
         status = shell_loop(&sh);
     }
+    if (media_finish(&sh) != 0 && sh.stop_on_error) status = 1; /* the movie, the soundtrack */
     shell_free(&sh);
     free(cmds);
     free(files);

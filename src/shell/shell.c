@@ -18,6 +18,7 @@
 #include "core/sim.h"
 #include "view/view.h"
 #include "fmt.h"
+#include "media.h"
 
 volatile sig_atomic_t shell_interrupted;
 
@@ -32,8 +33,6 @@ shell_settings shell_settings_defaults(void)
     s.trigger = false;
     s.select_mode = false;
     s.tracker[0] = '\0';
-    snprintf(s.collision_sound, sizeof s.collision_sound, "click");
-    s.collision_vol = 1.0;
     return s;
 }
 
@@ -50,9 +49,11 @@ void shell_init(shell *sh, FILE *out, FILE *err)
     world_init(&sh->w);
     sh->view_set = view_settings_defaults();
     sh->set = shell_settings_defaults();
+    sh->sound_set = sound_settings_defaults();
     sh->startup.sim = sh->w.set;
     sh->startup.view = sh->view_set;
     sh->startup.shell = sh->set;
+    sh->startup.sound = sh->sound_set;
     sh->rng = sh->set.seed;
     sh->current = sh->selected = sh->prev_selected = -1;
     sh->out = out;
@@ -61,6 +62,7 @@ void shell_init(shell *sh, FILE *out, FILE *err)
 
 void shell_free(shell *sh)
 {
+    media_free(sh); /* before the world: a movie's last frames are finished */
     world_free(&sh->w);
     log_trace_close(&sh->logs);
     log_events_close(&sh->logs);
@@ -221,6 +223,10 @@ cmd_status shell_advance(shell *sh, const stmt *st, long n)
                 break;
             }
         }
+        if (media_frame(sh, st) != CMD_OK && sh->stop_on_error) { /* sound, movie */
+            r = CMD_ERROR;
+            break;
+        }
     }
     sh->wall_time += shell_clock() - t0;
     return r;
@@ -237,6 +243,7 @@ const void *shell_setting_value(const shell *sh, const command *c)
     case OWN_SIM: return (const char *)&sh->w.set + c->off;
     case OWN_VIEW: return (const char *)&sh->view_set + c->off;
     case OWN_SHELL: return (const char *)&sh->set + c->off;
+    case OWN_SOUND: return (const char *)&sh->sound_set + c->off;
     default: return NULL;
     }
 }

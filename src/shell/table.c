@@ -29,7 +29,11 @@
     {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SHELL, offsetof(shell_settings, field), cmd_setting}
 #define SHELLF(name, arg, range, lo, hi, field, fn) \
     {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SHELL, offsetof(shell_settings, field), fn}
-/* a setting kept elsewhere (the logs): its handler knows where */
+#define SOUND(name, arg, range, lo, hi, field) \
+    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SOUND, offsetof(sound_settings, field), cmd_setting}
+#define SOUNDF(name, arg, range, lo, hi, field, fn) \
+    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SOUND, offsetof(sound_settings, field), fn}
+/* a setting kept elsewhere (the logs, the soundtrack, the movie): its handler knows where */
 #define OTHER(name, arg, fn) {name, FORM_SETTING, arg, 0, 0, 0, NULL, 0, OWN_NONE, 0, fn}
 #define CHOICE(name, choices, fn) {name, FORM_SETTING, VAL_CHOICE, 0, 0, 0, choices, 0, OWN_VIEW, 0, fn}
 #define ACT(name, arg, fn) {name, FORM_ACTION, arg, 0, 0, 0, NULL, 0, OWN_NONE, 0, fn}
@@ -78,8 +82,8 @@ const command command_table[] = {
     SIM("max_angular", VAL_NUMBER, R_RANGE, 0, INF, max_angular),
     SIM("force", VAL_VECTOR_ANGLE, R_NONZERO_VEC, 0, 0, force),
     ACT("gravity", ARG_NONE, cmd_gravity),
-    SHELLF("collision_sound", VAL_FILE, 0, 0, 0, collision_sound, cmd_collision_sound),
-    SHELL("collision_vol", VAL_NUMBER, R_RANGE, 0, INF, collision_vol),
+    SOUNDF("collision_sound", VAL_FILE, 0, 0, 0, collision_sound, cmd_collision_sound),
+    SOUND("collision_vol", VAL_NUMBER, R_RANGE, 0, INF, collision_vol),
     /* console */
     COUNT("run", cmd_run),
     ACT("time", ARG_NONE, cmd_time),
@@ -113,6 +117,10 @@ const command command_table[] = {
     ACT("select", ARG_OPT_ONOFF, cmd_select),
     ACT("reselect", ARG_NONE, cmd_reselect),
     SHELLF("tracker", VAL_FILE_OR_OFF, 0, 0, 0, tracker, cmd_tracker),
+    /* sound and movies */
+    SOUNDF("sound", VAL_ONOFF, 0, 0, 0, live, cmd_sound),
+    OTHER("soundtrack", VAL_FILE_OR_OFF, cmd_soundtrack),
+    OTHER("movie", VAL_FILE_OR_OFF, cmd_movie),
 };
 
 const int command_count = (int)(sizeof command_table / sizeof command_table[0]);
