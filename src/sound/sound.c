@@ -20,8 +20,6 @@
 #define SOUND_PITCH_STEPS 48 /* per octave */
 /* The live stream's queue: rendered samples waiting for their wall-clock time. */
 #define SOUND_QUEUE (2 * SOUND_RATE)
-/* Samples later than this are dropped rather than played. */
-#define SOUND_LATE 0.1
 
 typedef struct {
     int kind, step;
@@ -295,7 +293,7 @@ double sound_pump(sound_engine *e, double now, char *err, size_t errlen)
     if (!e->live || e->q_n == 0) return -1;
     /* sample k is due at sync_wall + (k - sync_sample) / rate */
     double head_due = e->sync_wall + (double)(e->q_first - e->sync_sample) / SOUND_RATE;
-    if (head_due < now - SOUND_LATE) {
+    if (head_due < now - LIVE_LATE_SECONDS) { /* late: skip to what is due now */
         queue_drop(e, (long)ceil((now - head_due) * SOUND_RATE));
         if (e->q_n == 0) return -1;
         head_due = e->sync_wall + (double)(e->q_first - e->sync_sample) / SOUND_RATE;
@@ -304,15 +302,15 @@ double sound_pump(sound_engine *e, double now, char *err, size_t errlen)
     if (n > e->q_n) n = e->q_n;
     while (n > 0) { /* the ring in at most two runs */
         long run = SOUND_QUEUE - e->q_head < n ? SOUND_QUEUE - e->q_head : n;
-        if (live_write(e->live, e->q + 2 * e->q_head, run, err, errlen) != 0) {
+        if (live_write(e->live, e->q + 2 * e->q_head, run, head_due, err, errlen) != 0) {
             sound_live_close(e);
             return -2;
         }
         queue_drop(e, run);
+        head_due += (double)run / SOUND_RATE;
         n -= run;
     }
     if (e->q_n == 0) return -1;
-    head_due = e->sync_wall + (double)(e->q_first - e->sync_sample) / SOUND_RATE;
     double wait = head_due - LIVE_BUFFER_SECONDS - now;
-    return wait > 0.01 ? wait : 0.01;
+    return wait > 0.005 ? wait : 0.005;
 }
