@@ -79,20 +79,19 @@ static void movie_beside(char *out, size_t len, const char *path, const char *pr
     snprintf(out, len, "%.*s%s%s%s", dirlen, path, prefix, slash ? slash + 1 : path, suffix);
 }
 
-/* The last line ffmpeg wrote to its log, for a message. */
-static void movie_log_tail(int fd, char *out, size_t len)
+/* The first line ffmpeg wrote to its log (its first complaint, usually the one
+ * that says why), for a message. */
+static void movie_log_line(int fd, char *out, size_t len)
 {
-    char buf[4096];
+    char buf[1024];
     out[0] = '\0';
-    off_t end = lseek(fd, 0, SEEK_END);
-    if (end <= 0) return;
-    off_t from = end > (off_t)sizeof buf - 1 ? end - (off_t)sizeof buf + 1 : 0;
-    ssize_t n = pread(fd, buf, sizeof buf - 1, from);
+    ssize_t n = pread(fd, buf, sizeof buf - 1, 0);
     if (n <= 0) return;
     buf[n] = '\0';
-    while (n > 0 && (buf[n - 1] == '\n' || buf[n - 1] == '\r' || buf[n - 1] == ' ')) buf[--n] = '\0';
-    char *line = strrchr(buf, '\n');
-    snprintf(out, len, "%.500s", line ? line + 1 : buf);
+    const char *line = buf;
+    if (line[0] == '[' && strstr(line, "] ")) line = strstr(line, "] ") + 2; /* "[mp4 @ 0x..] " */
+    size_t k = strcspn(line, "\r\n");
+    snprintf(out, len, "%.*s", (int)(k < 500 ? k : 500), line);
 }
 
 /* An unlinked temporary file for ffmpeg's messages, or -1. */
@@ -311,7 +310,7 @@ int movie_add(movie *m, const view *v, long copies, char *err, size_t errlen)
         int rc = movie_write(m->fd, m->frame, bytes);
         if (rc != 0) {
             char tail[512];
-            movie_log_tail(m->log, tail, sizeof tail);
+            movie_log_line(m->log, tail, sizeof tail);
             snprintf(err, errlen, "ffmpeg stopped writing '%s': %s", m->path,
                      tail[0] ? tail : strerror(rc));
             return -1;
@@ -346,7 +345,7 @@ static int movie_mux(movie *m, const char *wav, char *err, size_t errlen)
     }
     if (movie_wait(pid) != 0) {
         char tail[512];
-        movie_log_tail(m->log, tail, sizeof tail);
+        movie_log_line(m->log, tail, sizeof tail);
         snprintf(err, errlen, "%s", tail[0] ? tail : "ffmpeg failed");
         return -1;
     }
@@ -364,10 +363,11 @@ int movie_close(movie *m, const char *wav, char *err, size_t errlen)
         if (!m->existed) unlink(m->path);
     } else if (st != 0) {
         char tail[512];
-        movie_log_tail(m->log, tail, sizeof tail);
+        movie_log_line(m->log, tail, sizeof tail);
         snprintf(err, errlen, "ffmpeg could not finish '%s': %s", m->path,
                  tail[0] ? tail : "it failed");
         unlink(m->part);
+        if (!m->existed) unlink(m->path);
         rc = -1;
     } else if (wav && movie_mux(m, wav, err, errlen) == 0) {
         unlink(m->part);
