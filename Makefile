@@ -147,9 +147,15 @@ check: deps
 	@$(MAKE) --no-print-directory check-build
 	@sh tests/run.sh
 
-check-build: vroc man/vroc.1 build-san/vroc build-val/vroc \
+check-build: vroc man/vroc.1 build-san/vroc build-val/vroc build/tests/wavtool \
              $(addprefix build/tests/,$(CORE_TESTS) $(UPPER_TESTS)) \
              $(addprefix build-san/tests/,$(CORE_TESTS) $(UPPER_TESTS))
+
+# The sound tests' reader of WAV files (its own parser, not the libsndfile vroc
+# writes them with), built once for both builds' script tests.
+build/tests/wavtool: tests/wavtool.c build/flags
+	@mkdir -p $(@D)
+	$(CC) $(BASE) -o $@ $< -lm
 
 # The scenes' trace hashes (tests/hashes.sh checks them): recorded anew only after a
 # change meant to change the simulation, and the commit says why.
