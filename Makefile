@@ -3,7 +3,8 @@
 #   make               build ./vroc
 #   make check         build and run every test: normal, ASan+UBSan and validation builds
 #   make bench         build and run the benchmarks
-#   make demo          the main job: run a thesis scene and write its stereo frames
+#   make demo          the main job: run a thesis scene and write its stereo frames,
+#                      and a movie of them with the collisions' sound
 #   make deps          install the missing Debian packages (apt-get, sudo when not root)
 #   make record-hashes record the scenes' trace hashes anew (after an intended change)
 #   make install       binary, man page and scenes under $(DESTDIR)$(PREFIX)
@@ -174,8 +175,11 @@ bench: deps
 # ---- the main job ----
 demo: deps
 	@$(MAKE) --no-print-directory vroc
-	./vroc -b scenes/simple.vroc -c 'output = "frames"; record = on; run 30; stats'
-	@echo "demo: stereo frames of the Simple scene are in frames/"
+	@mkdir -p frames
+	./vroc -b scenes/simple.vroc -c 'output = "frames"; record = on; collision_sound = knock' \
+	    -c 'soundtrack = "frames/simple.wav"; movie = "frames/simple.mp4"; run 30; stats'
+	@echo "demo: stereo frames of the Simple scene are in frames/, and a movie of them"
+	@echo "      with the sound of the balls on the table: frames/simple.mp4"
 
 deps:
 	@sh tools/deps.sh
