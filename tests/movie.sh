@@ -59,6 +59,22 @@ spread=$(od -An -v -tu1 "$TMP/f10.gray" | awk '{ for (i = 1; i <= NF; i++) { n++
 echo "$spread" | awk '{ exit !($1 == 322 * 122 && $2 > 200) }' && ok "a frame of the movie shows the objects" ||
     notok "a frame of the movie shows the objects" "pixels, lit: $spread"
 
+# frame n of the movie is the view after simulated frame n + 1, as record writes it
+# (H.264 changes a pixel by less than 1 on average; the frame before differs more)
+mkdir -p "$TMP/rec"
+"$VROC" -b -q "$S/simple.vroc" -c "image_size = (160, 128); output = $TMP/rec; record = on; movie = $TMP/rec/m.mp4; run 8" 2>/dev/null
+ffmpeg -v error -y -i "$TMP/rec/m.mp4" -vf "select=eq(n\,4),crop=160:128:0:0" -frames:v 1 -f rawvideo -pix_fmt rgb24 "$TMP/rec/f4.rgb"
+mad() { # the mean absolute difference of the movie's frame 4 (left eye) and a PNG
+    ffmpeg -v error -y -i "$1" -f rawvideo -pix_fmt rgb24 "$TMP/rec/png.rgb"
+    od -An -v -tu1 -w1 "$TMP/rec/f4.rgb" > "$TMP/rec/a"
+    od -An -v -tu1 -w1 "$TMP/rec/png.rgb" > "$TMP/rec/b"
+    paste "$TMP/rec/a" "$TMP/rec/b" | awk '{ d = $1 - $2; s += d < 0 ? -d : d; n++ } END { print (n == 61440 ? s / n : 999) }'
+}
+d5=$(mad "$TMP/rec/frame-000005-left.png") d4=$(mad "$TMP/rec/frame-000004-left.png")
+awk -v a="$d5" -v b="$d4" 'BEGIN { exit !(a < 1 && a < b) }' &&
+    ok "frame 4 of the movie is the left view recorded after frame 5 (differs by $d5, from frame 4 by $d4)" ||
+    notok "frame 4 of the movie is the left view recorded after frame 5" "mean differences: $d5 (frame 5), $d4 (frame 4)"
+
 # the simulation never depends on the movie or the soundtrack
 h1=$("$VROC" -b -q "$S/simple.vroc" -c "run 20; hash" 2>&1)
 h2=$("$VROC" -b -q "$S/simple.vroc" -c "image_size = (64, 48); movie = $TMP/h.mp4; soundtrack = $TMP/h.wav; run 20; hash" 2>&1)
