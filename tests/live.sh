@@ -106,7 +106,9 @@ start_vroc "PULSE_SERVER=$PULSE_SERVER"
 type_ "read $S/simple.vroc; collision_sound = knock; soundtrack = $TMP/track.wav" Enter
 type_ "start" Enter
 sleep 3.2
-type_ "stop" Enter
+type_ C-c # with the stream's threads running, Ctrl-C still reaches the prompt
+if wait_for "stopped at time = " 30; then ok "Ctrl-C stops time while sound plays"
+else notok "Ctrl-C stops time while sound plays" "$(screen | tail -5)"; fi
 sleep 0.5
 type_ "soundtrack = off; time; show" Enter
 wait_for "movie = off"

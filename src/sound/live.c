@@ -3,6 +3,7 @@
 #include "live.h"
 
 #include <pthread.h>
+#include <signal.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -130,7 +131,9 @@ static void *live_run(void *arg)
     return NULL;
 }
 
-int live_open(live **lp, char *err, size_t errlen)
+/* live_open's work, with every signal blocked: the threads it starts (ours and
+ * libpulse's) inherit that, so that Ctrl-C reaches the prompt's thread. */
+static int live_start(live **lp, char *err, size_t errlen)
 {
     char server[512];
     if (live_ask(server, sizeof server, err, errlen) != 0) return -1;
@@ -163,6 +166,16 @@ int live_open(live **lp, char *err, size_t errlen)
     }
     *lp = l;
     return 0;
+}
+
+int live_open(live **lp, char *err, size_t errlen)
+{
+    sigset_t all, old;
+    sigfillset(&all);
+    pthread_sigmask(SIG_BLOCK, &all, &old);
+    int rc = live_start(lp, err, errlen);
+    pthread_sigmask(SIG_SETMASK, &old, NULL);
+    return rc;
 }
 
 int live_write(live *l, const int16_t *x, long n, double due, char *err, size_t errlen)
