@@ -49,7 +49,11 @@ start_vroc() {
 # ---- no server: one warning when time first runs, not at start-up; nothing waits ----
 before=$(pgrep -c -x pulseaudio)
 start_vroc "PULSE_SERVER=unix:$TMP/no-such-socket"
-type_ "sphere ball; translate = (0, 3, 0); show" Enter
+type_ "soundt" Tab
+wait_for "vroc> soundtrack" 50 && ok "Tab completes soundtrack" || notok "Tab completes soundtrack" "$(screen | tail -3)"
+type_ C-u "movie = o" Tab
+wait_for "vroc> movie = off" 50 && ok "Tab completes movie = off" || notok "Tab completes movie = off" "$(screen | tail -3)"
+type_ C-u "sphere ball; translate = (0, 3, 0); show" Enter
 wait_for "movie = off"
 case "$(screen)" in *warning*) notok "no warning at start-up" "$(screen | tail -5)" ;;
     *"sound = on"*) ok "no warning at start-up, and sound shows on at the prompt" ;;
