@@ -4,7 +4,9 @@
 # recorded from the sink's monitor with parec, matches the soundtrack of the same
 # run (envelopes cross-correlated, so the stream's latency does not matter).  And
 # where no server answers: one warning when time first runs, never at start-up,
-# and time runs on; in batch nothing is asked.
+# and time runs on; in batch nothing is asked.  A server that goes away while it
+# plays is a failed output (outfile.h): an error that names it, sound off, time
+# going on at the prompt.
 . "$(dirname "$0")/lib.sh"
 S=$(cd "$(dirname "$0")/../scenes" && pwd)
 WT="$(cd "$(dirname "$0")/.." && pwd)/build/tests/wavtool"
@@ -134,4 +136,30 @@ xc=$("$WT" xcorr "$TMP/rec.raw" "$TMP/track.wav" 10)
 corr=$(echo "$xc" | sed -n 's/.*corr=//p')
 awk -v c="$corr" 'BEGIN { exit !(c > 0.85) }' && ok "what was played matches the soundtrack ($xc)" ||
     notok "what was played matches the soundtrack (envelope correlation > 0.85)" "$xc"
+
+# ---- the server goes away while sound plays: the one rule of a failed output ----
+tmux kill-session -t "$SES" 2>/dev/null
+start_vroc "PULSE_SERVER=$PULSE_SERVER"
+type_ "read $S/simple.vroc; start" Enter
+sleep 1.5
+kill "$pa_pid" 2>/dev/null
+wait "$pa_pid" 2>/dev/null
+pa_pid=""
+if wait_for "error: sound: cannot write to the sound server" 50; then
+    ok "a server that stops taking the sound is an error naming it and why"
+else
+    notok "a server that stops taking the sound is an error naming it and why" "$(screen | tail -5)"
+fi
+screen | grep -q "; sound is now off$" && ok "and sound is turned off" || notok "and sound is turned off" "$(screen | tail -5)"
+sleep 1
+type_ "stop; time; show" Enter
+wait_for "movie = off"
+t=$(screen | sed -n 's/^time = //p' | tail -1)
+awk -v t="$t" 'BEGIN { exit !(t >= 2) }' && ok "time went on at the prompt without the sound (time = $t)" ||
+    notok "time went on at the prompt without the sound" "time = $t"
+screen | grep -q "^sound = off" && ok "show says sound = off" || notok "show says sound = off" "$(screen | tail -5)"
+n=$(screen | grep -c "cannot write to the sound server")
+[ "$n" = 1 ] && ok "the failure is told once" || notok "the failure is told once" "$n times"
+type_ "quit" Enter
+wait_for "EXIT=0" && ok "quit leaves with status 0 after it" || notok "quit leaves with status 0 after it" "$(screen | tail -8)"
 exit 0

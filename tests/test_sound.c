@@ -1,11 +1,13 @@
 /* test_sound.c: the sound layer's modules: the built-in sounds (pitch against size),
  * placement by the head pose, the mixer's reference loudness, timing and limiter,
  * sound files (resampling, bad files) and the engine end to end into a WAV file,
- * read back with libsndfile. */
+ * read back with libsndfile, and a soundtrack that cannot be written saying why. */
 #include "check.h"
 
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <sndfile.h>
@@ -355,10 +357,49 @@ static void a_soundtrack_that_cannot_be_written_is_an_error(void **state)
     assert_non_null(strstr(err, "cannot write '/nonexistent/dir/t.wav'"));
     assert_int_equal(sound_track_open(e, g_dir, 0, err, sizeof err), -1);
     assert_null(sound_track_path(e));
+    /* the system's reason, though libsndfile writes the file (shell/outfile.h) */
+    assert_int_equal(sound_track_open(e, "/dev/full", 0, err, sizeof err), -1);
+    assert_string_equal(err, "cannot write '/dev/full': No space left on device");
+    assert_null(sound_track_path(e));
     assert_int_equal(sound_choose(e, "/nonexistent.wav", err, sizeof err), -1);
     assert_int_equal(sound_choose(e, "bell", err, sizeof err), 0);
     assert_int_equal(sound_choose(e, "off", err, sizeof err), 0);
     assert_int_equal(sound_free(e, 0, err, sizeof err), 0);
+}
+
+/* A soundtrack that outgrows the file size limit fails in the frame that
+ * crosses it, with the system's reason, and is closed there: its header tells
+ * the samples that were written. */
+static void a_soundtrack_that_outgrows_the_size_limit_says_why(void **state)
+{
+    (void)state;
+    char path[256], err[512];
+    path_in_dir(path, sizeof path, "limited.wav");
+    sound_engine *e = sound_new();
+    assert_int_equal(sound_track_open(e, path, 0, err, sizeof err), 0);
+    sound_settings set = sound_settings_defaults();
+    sound_listener l = {v3(0, 0, 0), v3(0, 1, 0), v3(0, 0, 1)};
+    struct rlimit old, lim;
+    getrlimit(RLIMIT_FSIZE, &old);
+    lim = old;
+    lim.rlim_cur = 10000; /* 0.05 s of sound and a header */
+    void (*was)(int) = signal(SIGXFSZ, SIG_IGN);
+    assert_int_equal(setrlimit(RLIMIT_FSIZE, &lim), 0);
+    int first = sound_frame(e, &set, &l, NULL, 0, 0, 0.02, -1, err, sizeof err);
+    int second = sound_frame(e, &set, &l, NULL, 0, 0.02, 0.1, -1, err, sizeof err);
+    setrlimit(RLIMIT_FSIZE, &old);
+    signal(SIGXFSZ, was);
+    assert_int_equal(first, 0);
+    assert_int_equal(second, 1);
+    char want[300];
+    snprintf(want, sizeof want, "cannot write '%s': File too large", path);
+    assert_string_equal(err, want);
+    assert_null(sound_track_path(e));
+    long n;
+    short *x = read_wav(path, &n);
+    assert_true(n >= 960 - MIXER_LOOKAHEAD && n <= (10000 - 44) / 4);
+    free(x);
+    assert_int_equal(sound_free(e, 0.1, err, sizeof err), 0);
 }
 
 int main(void)
@@ -372,6 +413,8 @@ int main(void)
         cmocka_unit_test_setup_teardown(the_engine_writes_the_reference_loudness_on_time, setup,
                                         teardown),
         cmocka_unit_test_setup_teardown(a_soundtrack_that_cannot_be_written_is_an_error, setup,
+                                        teardown),
+        cmocka_unit_test_setup_teardown(a_soundtrack_that_outgrows_the_size_limit_says_why, setup,
                                         teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

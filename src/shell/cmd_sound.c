@@ -5,6 +5,7 @@
 
 #include "handlers.h"
 #include "media.h"
+#include "outfile.h"
 #include "shell.h"
 
 cmd_status cmd_collision_sound(shell *sh, const stmt *st)
@@ -30,16 +31,18 @@ cmd_status cmd_sound(shell *sh, const stmt *st)
     return CMD_OK;
 }
 
-/* soundtrack and movie: a file, or off. */
+/* soundtrack and movie: a file (where VROC_SANDBOX allows it: outfile.h), or
+ * off. */
 static cmd_status media_output(shell *sh, const stmt *st,
-                               int (*set)(shell *, const char *, char *, size_t))
+                               cmd_status (*set)(shell *, const stmt *, const char *))
 {
+    const char *path = st->n == 1 ? NULL : st->word;
     char err[2048];
-    if (set(sh, st->n == 1 ? NULL : st->word, err, sizeof err) != 0) {
+    if (path && outfile_allowed(path, err, sizeof err) != 0) {
         sh_error(sh, st, "%s: %s", st->cmd->name, err);
         return CMD_ERROR;
     }
-    return CMD_OK;
+    return set(sh, st, path);
 }
 
 cmd_status cmd_soundtrack(shell *sh, const stmt *st) { return media_output(sh, st, media_soundtrack); }

@@ -71,35 +71,42 @@ static cmd_status media_sound_frame(shell *sh, media *m, const stmt *st, double 
                                  .size = sqrt(a->shape.r_out * b->shape.r_out)};
     }
     sound_listener l = media_listener(sh);
-    char err[512];
-    int r = sound_frame(m->snd, &sh->sound_set, &l, m->hits, w->nevents, t0, t1,
-                        sh->running ? shell_clock() : -1, err, sizeof err);
-    if (r == 2) {
-        sh->sound_set.live = SOUND_LIVE_OFF;
-        sh_warn(sh, st, "sound: the sound server failed (%s); sound is off", err);
-    } else if (r == 1) {
-        sh_error(sh, st, "soundtrack: %s; soundtrack closed", err);
-        return CMD_ERROR;
-    }
+    char err[2048];
+    if (sound_frame(m->snd, &sh->sound_set, &l, m->hits, w->nevents, t0, t1,
+                    sh->running ? shell_clock() : -1, err, sizeof err) != 0)
+        return shell_output_failed(sh, st, "soundtrack", err); /* it is closed */
     return CMD_OK;
 }
 
-/* Finishes the movie, with the soundtrack's sound of its span if one is open. */
-static int media_movie_close(shell *sh, media *m, char *err, size_t errlen)
+/* Finishes the movie, with the soundtrack's sound of its span if one is open,
+ * reporting what fails (the movie, or the soundtrack as its sound is taken).
+ * Returns 0, or -1 after an error. */
+static int media_movie_close(shell *sh, media *m, const stmt *st)
 {
     movie *mov = m->mov;
     m->mov = NULL;
+    char err[2048];
     const char *wav = NULL;
+    int rc = 0;
     if (sound_track_path(m->snd) && movie_frames(mov) > 0) {
-        sound_flush(m->snd, m->elapsed);
         double t1 = m->mov_start + (double)movie_frames(mov) * movie_period(mov);
-        if (sound_track_excerpt(m->snd, m->mov_start, t1, movie_sound_path(mov), err, errlen) ==
-            0)
+        if (sound_flush(m->snd, m->elapsed, err, sizeof err) != 0) {
+            sh_error(sh, st, "soundtrack: %s; soundtrack is now off", err);
+            rc = -1;
+        } else if (sound_track_excerpt(m->snd, m->mov_start, t1, movie_sound_path(mov), err,
+                                       sizeof err) == 0) {
             wav = movie_sound_path(mov);
-        else
-            sh_warn(sh, NULL, "movie: no sound: %s", err);
+        } else {
+            sh_error(sh, st, "movie: %s; '%s' is written without its sound", err,
+                     movie_path(mov));
+            rc = -1;
+        }
     }
-    return movie_close(mov, wav, err, errlen);
+    if (movie_close(mov, wav, err, sizeof err) != 0) {
+        sh_error(sh, st, "movie: %s", err);
+        rc = -1;
+    }
+    return rc;
 }
 
 /* The frame's view to the movie: as many copies as keep video time with simulated
@@ -109,18 +116,19 @@ static cmd_status media_movie_frame(shell *sh, media *m, const stmt *st, double 
     long want = llround((t1 - m->mov_start) / movie_period(m->mov));
     long copies = want - movie_frames(m->mov);
     if (copies <= 0) return CMD_OK;
-    char err[1024];
+    char err[2048];
     /* record has drawn this frame already, unless an eye the movie needs is missing */
     bool drawn = sh->view_set.record && view_pixels(sh->view, 0, NULL, NULL) &&
                  (!movie_needs_right(m->mov) || view_pixels(sh->view, 1, NULL, NULL));
     if ((drawn || view_render(&sh->view, &sh->w, &sh->view_set, err, sizeof err) == 0) &&
         movie_add(m->mov, sh->view, copies, err, sizeof err) == 0)
         return CMD_OK;
-    char path[VIEW_PATH_MAX], ignored[512];
-    snprintf(path, sizeof path, "%s", movie_path(m->mov));
-    media_movie_close(sh, m, ignored, sizeof ignored);
-    sh_error(sh, st, "movie: %s; movie '%s' finished there", err, path);
-    return CMD_ERROR;
+    /* the one rule for an output that fails (outfile.h); what finishing the
+     * broken movie adds to it is no news */
+    char ignored[1024];
+    movie_close(m->mov, NULL, ignored, sizeof ignored);
+    m->mov = NULL;
+    return shell_output_failed(sh, st, "movie", err);
 }
 
 cmd_status media_frame(shell *sh, const stmt *st)
@@ -136,7 +144,7 @@ cmd_status media_frame(shell *sh, const stmt *st)
     if (ask) media_ask_server(sh, m, st, t0);
     cmd_status r = CMD_OK;
     if (sound_active(m->snd)) r = media_sound_frame(sh, m, st, t0, t1);
-    if (m->mov && media_movie_frame(sh, m, st, t1) != CMD_OK) r = CMD_ERROR;
+    if (r == CMD_OK && m->mov) r = media_movie_frame(sh, m, st, t1);
     return r;
 }
 
@@ -144,11 +152,11 @@ double media_pump(shell *sh, double wait)
 {
     media *m = sh->media;
     if (!m || !sound_live_is_open(m->snd)) return wait;
-    char err[512];
+    char err[1024];
     double next = sound_pump(m->snd, shell_clock(), err, sizeof err);
-    if (next == -2) {
+    if (next == -2) { /* the stream is closed */
         sh->sound_set.live = SOUND_LIVE_OFF;
-        sh_warn(sh, NULL, "sound: the sound server failed (%s); sound is off", err);
+        shell_output_failed(sh, NULL, "sound", err); /* at the prompt: time goes on */
         return wait;
     }
     return next >= 0 && (wait < 0 || next < wait) ? next : wait;
@@ -164,35 +172,43 @@ int media_choose_sound(shell *sh, const char *name, char *err, size_t errlen)
     return sound_choose(m->snd, name, err, errlen);
 }
 
-int media_soundtrack(shell *sh, const char *path, char *err, size_t errlen)
+cmd_status media_soundtrack(shell *sh, const stmt *st, const char *path)
 {
     media *m = path ? media_get(sh) : sh->media;
     if (!m) {
-        if (!path) return 0;
-        snprintf(err, errlen, "out of memory");
-        return -1;
+        if (!path) return CMD_OK;
+        sh_error(sh, st, "soundtrack: out of memory");
+        return CMD_ERROR;
     }
-    if (!path) return sound_track_close(m->snd, m->elapsed, err, errlen);
-    return sound_track_open(m->snd, path, m->elapsed, err, errlen);
+    char err[2048];
+    int rc = path ? sound_track_open(m->snd, path, m->elapsed, err, sizeof err)
+                  : sound_track_close(m->snd, m->elapsed, err, sizeof err);
+    if (rc == 0) return CMD_OK;
+    sh_error(sh, st, "soundtrack: %s", err);
+    return CMD_ERROR;
 }
 
-int media_movie(shell *sh, const char *path, char *err, size_t errlen)
+cmd_status media_movie(shell *sh, const stmt *st, const char *path)
 {
     media *m = path ? media_get(sh) : sh->media;
     if (!m) {
-        if (!path) return 0;
-        snprintf(err, errlen, "out of memory");
-        return -1;
+        if (!path) return CMD_OK;
+        sh_error(sh, st, "movie: out of memory");
+        return CMD_ERROR;
     }
-    if (!path) return m->mov ? media_movie_close(sh, m, err, errlen) : 0;
+    if (!path) return m->mov && media_movie_close(sh, m, st) != 0 ? CMD_ERROR : CMD_OK;
+    char err[2048];
     movie *nm;
-    if (movie_open(&nm, path, &sh->view_set, sh->w.set.time_step, err, errlen) != 0) return -1;
+    if (movie_open(&nm, path, &sh->view_set, sh->w.set.time_step, err, sizeof err) != 0) {
+        sh_error(sh, st, "movie: %s", err);
+        return CMD_ERROR;
+    }
     /* the new movie is open: the old one is finished after it, so that a bad new
      * path leaves the old movie going */
-    if (m->mov && media_movie_close(sh, m, err, errlen) != 0) sh_error(sh, NULL, "movie: %s", err);
+    int rc = m->mov ? media_movie_close(sh, m, st) : 0;
     m->mov = nm;
     m->mov_start = m->elapsed;
-    return 0;
+    return rc == 0 ? CMD_OK : CMD_ERROR;
 }
 
 void media_live_off(shell *sh)
@@ -223,12 +239,9 @@ int media_finish(shell *sh)
 {
     media *m = sh->media;
     if (!m) return 0;
-    char err[1024];
+    char err[2048];
     int rc = 0;
-    if (m->mov && media_movie_close(sh, m, err, sizeof err) != 0) {
-        sh_error(sh, NULL, "movie: %s", err);
-        rc = -1;
-    }
+    if (m->mov && media_movie_close(sh, m, NULL) != 0) rc = -1;
     if (sound_track_close(m->snd, m->elapsed, err, sizeof err) != 0) {
         sh_error(sh, NULL, "soundtrack: %s", err);
         rc = -1;

@@ -9,8 +9,13 @@
  *
  * Live sound follows language.md: off in batch; at an interactive prompt the
  * server is asked when time first runs there (never at start-up), and where none
- * answers there is one warning and `sound` turns off.  Nothing here changes the
- * world. */
+ * answers there is one warning and `sound` turns off.
+ *
+ * The soundtrack, the movie and the live stream are outputs like the logs
+ * (outfile.h): one that cannot be written while time runs is turned off through
+ * shell_output_failed ("cannot write 'PATH': REASON"; at the prompt time goes
+ * on, a batch run stops with status 1), and one that fails as a statement makes
+ * or finishes it is that statement's error.  Nothing here changes the world. */
 #ifndef VROC_MEDIA_H
 #define VROC_MEDIA_H
 
@@ -23,25 +28,28 @@ struct shell;
 struct stmt;
 typedef struct media media;
 
-/* After each frame: sounds of its collisions, frames of the movie.  Returns CMD_OK,
- * or CMD_ERROR after reporting a soundtrack or movie that failed (it is then
- * closed); a failed live stream only warns. */
+/* After each frame: sounds of its collisions, frames of the movie.  A soundtrack
+ * or movie that fails is turned off (shell_output_failed); returns CMD_ERROR when
+ * the run must stop. */
 cmd_status media_frame(struct shell *sh, const struct stmt *st);
 
 /* Feeds the live stream.  wait is the seconds the prompt means to sleep (< 0: until
- * a key); returns that or less, so that it is called again in time. */
+ * a key); returns that or less, so that it is called again in time.  A stream the
+ * server no longer takes turns `sound` off (shell_output_failed). */
 double media_pump(struct shell *sh, double wait);
 
 /* `collision_sound = name`: checks it, loading a sound file.  0, or -1 with a
  * message in err. */
 int media_choose_sound(struct shell *sh, const char *name, char *err, size_t errlen);
 
-/* `soundtrack = path` (NULL: off).  0, or -1 with a message in err. */
-int media_soundtrack(struct shell *sh, const char *path, char *err, size_t errlen);
+/* `soundtrack = path` (NULL: off), statement st.  Reports its errors: a file
+ * that cannot be made (the soundtrack open before goes on), or the one open
+ * before that cannot be finished. */
+cmd_status media_soundtrack(struct shell *sh, const struct stmt *st, const char *path);
 
-/* `movie = path` (NULL: off, finishing it with the soundtrack's sound).  0, or -1
- * with a message in err. */
-int media_movie(struct shell *sh, const char *path, char *err, size_t errlen);
+/* `movie = path` (NULL: off, finishing it with the soundtrack's sound), statement
+ * st.  Reports its errors as media_soundtrack does. */
+cmd_status media_movie(struct shell *sh, const struct stmt *st, const char *path);
 
 /* `sound = off`: closes the live stream. */
 void media_live_off(struct shell *sh);
@@ -53,7 +61,8 @@ const char *media_movie_path(const struct shell *sh);
 bool media_live_on(const struct shell *sh);
 
 /* Finishes the movie, then the soundtrack, and closes the live stream: the end of
- * the program.  Returns 0, or -1 after reporting an error. */
+ * the program (shell_close_outputs).  Returns 0, or -1 after reporting an
+ * error. */
 int media_finish(struct shell *sh);
 
 /* media_finish, then frees the state. */

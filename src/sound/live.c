@@ -32,7 +32,8 @@ struct live {
     long head, n;      /* the oldest sample's place in ring, samples held */
     double head_due;   /* wall-clock time the oldest is due */
     bool stop, failed;
-    char err[256];
+    char err[768];     /* why it failed: "cannot write to the sound server ..." */
+    char server[512];  /* the server's address, as it answered */
 };
 
 double live_clock(void)
@@ -123,7 +124,8 @@ static void *live_run(void *arg)
         pthread_mutex_lock(&l->mu);
         if (rc < 0) {
             l->failed = true;
-            snprintf(l->err, sizeof l->err, "%s", pa_strerror(e));
+            snprintf(l->err, sizeof l->err, "cannot write to the sound server '%s': %s",
+                     l->server[0] ? l->server : "default", pa_strerror(e));
             break;
         }
     }
@@ -154,6 +156,7 @@ static int live_start(live **lp, char *err, size_t errlen)
         return -1;
     }
     l->s = s;
+    snprintf(l->server, sizeof l->server, "%s", server);
     pthread_mutex_init(&l->mu, NULL);
     pthread_cond_init(&l->cv, NULL);
     if (pthread_create(&l->thread, NULL, live_run, l) != 0) {

@@ -33,7 +33,8 @@ int live_open(live **l, char *err, size_t errlen);
 
 /* Hands over n interleaved stereo samples, the first due at wall-clock time due
  * (s, monotonic), to be played after those handed over before.  Never blocks.
- * Returns 0, or -1 with the reason when the stream has failed. */
+ * Returns 0, or -1 when the stream has failed, with "cannot write to the sound
+ * server 'ADDRESS': REASON" in err. */
 int live_write(live *l, const int16_t *x, long n, double due, char *err, size_t errlen);
 
 /* Stops the thread and closes the stream at once, dropping what is buffered

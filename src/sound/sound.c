@@ -224,30 +224,29 @@ int sound_frame(sound_engine *e, const sound_settings *set, const sound_listener
     return sound_render(e, sound_sample(t1) - MIXER_LOOKAHEAD, err, errlen);
 }
 
-void sound_flush(sound_engine *e, double t)
+int sound_flush(sound_engine *e, double t, char *err, size_t errlen)
 {
-    char err[256];
-    sound_render(e, sound_sample(t), err, sizeof err);
+    return sound_render(e, sound_sample(t), err, errlen) != 0 ? -1 : 0;
 }
 
 int sound_track_open(sound_engine *e, const char *path, double t, char *err, size_t errlen)
 {
-    sound_flush(e, t);
     track *nt;
     if (track_open(&nt, path, err, errlen) != 0) return -1;
-    char ignored[256];
-    track_close(e->track, ignored, sizeof ignored);
+    /* the old soundtrack ends at t, its voices going on into the new one */
+    int rc = sound_flush(e, t, err, errlen);
+    if (rc == 0 && track_close(e->track, err, errlen) != 0) rc = -1;
     e->track = nt;
     sound_wake(e, t);
     e->track_start = sound_sample(t);
-    return 0;
+    return rc;
 }
 
 int sound_track_close(sound_engine *e, double t, char *err, size_t errlen)
 {
     if (!e->track) return 0;
-    sound_flush(e, t);
-    int rc = track_close(e->track, err, errlen);
+    int rc = sound_flush(e, t, err, errlen);
+    if (rc == 0) rc = track_close(e->track, err, errlen); /* (a failed flush closed it) */
     e->track = NULL;
     sound_sleep_if_idle(e);
     return rc;

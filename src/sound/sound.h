@@ -75,26 +75,29 @@ int sound_choose(sound_engine *e, const char *name, char *err, size_t errlen);
 /* The collisions of the frame of elapsed time [t0, t1] (the hits' times within
  * it).  wall: the wall-clock time (s, monotonic) at which t0 is due in real time,
  * or < 0 when time is not running in real time.  Returns 0; or when the
- * soundtrack cannot be written, 1 (it is then closed); or when the live stream
- * failed, 2 (it is then closed); the message of either in err. */
+ * soundtrack cannot be written, 1 (it is then closed) with "cannot write 'PATH':
+ * REASON" in err.  (The live stream fails in sound_pump.) */
 int sound_frame(sound_engine *e, const sound_settings *set, const sound_listener *l,
                 const sound_hit *hits, long n, double t0, double t1, double wall, char *err,
                 size_t errlen);
 
 /* Renders everything up to elapsed time t, the end of the last frame, with no
- * look-ahead past it. */
-void sound_flush(sound_engine *e, double t);
+ * look-ahead past it.  Returns 0, or -1 when the soundtrack cannot be written
+ * (it is then closed), with the message in err. */
+int sound_flush(sound_engine *e, double t, char *err, size_t errlen);
 
 /* True when sound is being mixed: a soundtrack or the live stream is open. */
 bool sound_active(const sound_engine *e);
 
 /* Starts writing the soundtrack to path from elapsed time t (a WAV file, 48 kHz,
- * 16-bit stereo); one already open is finished first.  Returns 0, or -1 with a
- * message (then the soundtrack open before, if any, goes on). */
+ * 16-bit stereo); one already open is finished at t.  Returns 0, or -1 with a
+ * message: either the new file could not be made (then the soundtrack open
+ * before, if any, goes on), or it was and the one open before could not be
+ * finished (the message names that one). */
 int sound_track_open(sound_engine *e, const char *path, double t, char *err, size_t errlen);
 
 /* Finishes the soundtrack at elapsed time t (nothing when none is open).  Returns
- * 0, or -1 with a message. */
+ * 0, or -1 with "cannot write 'PATH': REASON"; it is closed either way. */
 int sound_track_close(sound_engine *e, double t, char *err, size_t errlen);
 
 /* The soundtrack's path, or NULL when none is open. */

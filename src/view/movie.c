@@ -1,5 +1,5 @@
 /* movie.c: frames piped to the ffmpeg program, and the sound muxed in (movie.h). */
-#define _GNU_SOURCE /* pipe2 and mkostemp, for descriptors ffmpeg does not inherit */
+#define _GNU_SOURCE /* pipe2, for a descriptor ffmpeg does not inherit */
 #include "movie.h"
 
 #include <errno.h>
@@ -79,26 +79,80 @@ static void movie_beside(char *out, size_t len, const char *path, const char *pr
     snprintf(out, len, "%.*s%s%s%s", dirlen, path, prefix, slash ? slash + 1 : path, suffix);
 }
 
-/* The first line ffmpeg wrote to its log (its first complaint, usually the one
- * that says why), for a message. */
-static void movie_log_line(int fd, char *out, size_t len)
+/* The system's reason that ends a line of ffmpeg's ("av_interleaved_write_frame():
+ * File too large": ffmpeg ends a failed call's message with strerror's text), or
+ * NULL.  EINVAL is not one: ffmpeg gives it for any input it refuses ("Unable to
+ * find a suitable output format", then "...: Invalid argument"), and its own
+ * line says more. */
+static const char *movie_line_reason(const char *line, size_t k)
 {
-    char buf[1024];
+    for (int e = 1; e < 134; e++) { /* the errno values Linux has */
+        if (e == EINVAL) continue;
+        const char *why = strerror(e);
+        size_t w = strlen(why);
+        if (k >= w + 2 && memcmp(line + k - w, why, w) == 0 && line[k - w - 2] == ':' &&
+            line[k - w - 1] == ' ')
+            return why;
+    }
+    return NULL;
+}
+
+/* What ffmpeg wrote to its log from offset from, for a message: the system's
+ * reason when a line ends with one (0 is returned), else its first line, its
+ * first complaint (-1; "" when it wrote nothing). */
+static int movie_complaint(int fd, off_t from, char *out, size_t len)
+{
+    char buf[4096];
     out[0] = '\0';
-    ssize_t n = pread(fd, buf, sizeof buf - 1, 0);
-    if (n <= 0) return;
+    ssize_t n = pread(fd, buf, sizeof buf - 1, from);
+    if (n <= 0) return -1;
     buf[n] = '\0';
+    for (const char *line = buf; *line;) {
+        size_t k = strcspn(line, "\r\n");
+        const char *why = movie_line_reason(line, k);
+        if (why) {
+            snprintf(out, len, "%s", why);
+            return 0;
+        }
+        line += k;
+        line += strspn(line, "\r\n");
+    }
     const char *line = buf;
     if (line[0] == '[' && strstr(line, "] ")) line = strstr(line, "] ") + 2; /* "[mp4 @ 0x..] " */
     size_t k = strcspn(line, "\r\n");
     snprintf(out, len, "%.*s", (int)(k < 500 ? k : 500), line);
+    return -1;
 }
 
-/* An unlinked temporary file for ffmpeg's messages, or -1. */
-static int movie_log_file(void)
+/* The message of a movie ffmpeg could not write, from its log since offset from:
+ * "cannot write 'PATH': REASON" when the system said why, else ffmpeg's first
+ * complaint, or fallback when it wrote none.  Returns -1. */
+static int movie_failed(const movie *m, off_t from, const char *fallback, char *err,
+                        size_t errlen)
 {
-    char name[] = "/tmp/vroc-ffmpeg-XXXXXX";
-    int fd = mkostemp(name, O_CLOEXEC);
+    char why[512];
+    if (movie_complaint(m->log, from, why, sizeof why) == 0)
+        snprintf(err, errlen, "cannot write '%s': %s", m->path, why);
+    else
+        snprintf(err, errlen, "ffmpeg could not write '%s': %s", m->path,
+                 why[0] ? why : fallback);
+    return -1;
+}
+
+/* How much ffmpeg has written to its log so far. */
+static off_t movie_log_size(const movie *m)
+{
+    struct stat sb;
+    return fstat(m->log, &sb) == 0 ? sb.st_size : 0;
+}
+
+/* A file beside the movie for ffmpeg's messages, unlinked at once (so that,
+ * like the movie's other files, it is only ever in the movie's folder), or -1. */
+static int movie_log_file(const char *path)
+{
+    char name[VIEW_PATH_MAX + 32];
+    movie_beside(name, sizeof name, path, ".vroc-part-", ".log");
+    int fd = open(name, O_RDWR | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
     if (fd >= 0) unlink(name);
     return fd;
 }
@@ -151,6 +205,13 @@ static void movie_rate(double period, char *out, size_t len)
 int movie_open(movie **mp, const char *path, const view_settings *vs, double period, char *err,
                size_t errlen)
 {
+    struct stat sb;
+    bool existed = stat(path, &sb) == 0;
+    if (existed && !S_ISREG(sb.st_mode)) { /* the movie is made beside it, then renamed */
+        snprintf(err, errlen, "cannot write '%s': not a regular file (a movie is made beside "
+                 "it, then put in its place)", path);
+        return -1;
+    }
     const char *ext = movie_ext(path);
     if (!ext) {
         snprintf(err, errlen, "'%s' has no extension to name its format (such as .mp4)", path);
@@ -165,8 +226,6 @@ int movie_open(movie **mp, const char *path, const view_settings *vs, double per
         snprintf(err, errlen, "the path '%.40s...' is too long", path);
         return -1;
     }
-    struct stat sb;
-    bool existed = stat(path, &sb) == 0;
     int probe = open(path, O_WRONLY | O_CREAT | O_CLOEXEC, 0666);
     if (probe < 0) {
         snprintf(err, errlen, "cannot write '%s': %s", path, strerror(errno));
@@ -207,11 +266,15 @@ int movie_open(movie **mp, const char *path, const view_settings *vs, double per
                               "-pix_fmt", "yuv420p"};
         for (size_t i = 0; i < sizeof h264 / sizeof h264[0]; i++) argv[a++] = h264[i];
     }
+    /* each frame written out as it is encoded, so that a write that fails is
+     * known while time runs, not only when the movie closes */
+    argv[a++] = "-flush_packets";
+    argv[a++] = "1";
     argv[a++] = m->part;
     argv[a] = NULL;
 
     int pipefd[2] = {-1, -1};
-    m->log = movie_log_file();
+    m->log = movie_log_file(path);
     int rc = m->log < 0 ? errno : pipe2(pipefd, O_CLOEXEC) != 0 ? errno : 0;
     if (rc == 0) rc = movie_spawn((char *const *)argv, pipefd[0], m->log, &m->pid);
     if (pipefd[0] >= 0) close(pipefd[0]);
@@ -308,15 +371,12 @@ int movie_add(movie *m, const view *v, long copies, char *err, size_t errlen)
     size_t bytes = (size_t)m->w * (size_t)m->h * 3;
     for (long i = 0; i < copies; i++) {
         int rc = movie_write(m->fd, m->frame, bytes);
-        if (rc != 0) {
-            char tail[512];
-            movie_log_line(m->log, tail, sizeof tail);
-            snprintf(err, errlen, "ffmpeg stopped writing '%s': %s", m->path,
-                     tail[0] ? tail : strerror(rc));
-            return -1;
-        }
+        if (rc != 0) return movie_failed(m, 0, strerror(rc), err, errlen);
         m->frames++;
     }
+    /* ffmpeg logs only errors, and goes on after a failed write: the first
+     * line it logs ends the movie */
+    if (movie_log_size(m) > 0) return movie_failed(m, 0, "", err, errlen);
     return 0;
 }
 
@@ -337,18 +397,16 @@ static int movie_mux(movie *m, const char *wav, char *err, size_t errlen)
     }
     argv[a++] = m->path;
     argv[a] = NULL;
+    off_t from = movie_log_size(m);
     pid_t pid;
     int rc = movie_spawn((char *const *)argv, -1, m->log, &pid);
     if (rc != 0) {
         snprintf(err, errlen, "cannot run ffmpeg: %s", strerror(rc));
         return -1;
     }
-    if (movie_wait(pid) != 0) {
-        char tail[512];
-        movie_log_line(m->log, tail, sizeof tail);
-        snprintf(err, errlen, "%s", tail[0] ? tail : "ffmpeg failed");
-        return -1;
-    }
+    /* (ffmpeg may exit with 0 after a write that failed: what it logged counts) */
+    if (movie_wait(pid) != 0 || movie_log_size(m) > from)
+        return movie_failed(m, from, "it failed", err, errlen);
     return 0;
 }
 
@@ -361,11 +419,8 @@ int movie_close(movie *m, const char *wav, char *err, size_t errlen)
     if (m->frames == 0) {
         unlink(m->part);
         if (!m->existed) unlink(m->path);
-    } else if (st != 0) {
-        char tail[512];
-        movie_log_line(m->log, tail, sizeof tail);
-        snprintf(err, errlen, "ffmpeg could not finish '%s': %s", m->path,
-                 tail[0] ? tail : "it failed");
+    } else if (st != 0 || movie_log_size(m) > 0) { /* (see movie_mux) */
+        movie_failed(m, 0, "it failed", err, errlen);
         unlink(m->part);
         if (!m->existed) unlink(m->path);
         rc = -1;
@@ -373,10 +428,8 @@ int movie_close(movie *m, const char *wav, char *err, size_t errlen)
         unlink(m->part);
     } else {
         if (wav) { /* the video without its sound is better than nothing */
-            char why[512];
-            snprintf(why, sizeof why, "%s", err);
-            snprintf(err, errlen, "cannot add the sound to '%s' (%s): written without it",
-                     m->path, why);
+            size_t k = strlen(err);
+            snprintf(err + k, errlen - k, "; it is written without its sound");
             rc = -1;
         }
         if (rename(m->part, m->path) != 0) {

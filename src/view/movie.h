@@ -17,8 +17,13 @@
  * to keep video time with simulated time.
  *
  * ffmpeg runs in a process group of its own, so that Ctrl-C at the prompt does not
- * stop it; its messages go to a file that errors quote.  Nothing here reads or
- * changes the world: frames come from the view's last render. */
+ * stop it; its messages (errors only) go to an unlinked file beside the movie,
+ * which errors quote.  A write of ffmpeg's that fails is told the way every
+ * file vroc writes tells it (shell/outfile.h): "cannot write 'PATH': REASON",
+ * with the system's reason that ffmpeg's message ends with.  A path that exists
+ * and is not a regular file (a device, a pipe) is refused, since the movie is
+ * put in its place by rename.  Nothing here reads or changes the world: frames
+ * come from the view's last render. */
 #ifndef VROC_MOVIE_H
 #define VROC_MOVIE_H
 
@@ -30,14 +35,15 @@ typedef struct movie movie;
 
 /* Starts a movie at path of the views as vs lays them out now (stereo,
  * image_size), period seconds per frame.  Returns 0, or -1 with a message in err:
- * the path cannot be written, it names no format (no extension), the period is
- * not > 0, or ffmpeg cannot be run. */
+ * the path cannot be written (or is there and not a regular file), it names no
+ * format (no extension), the period is not > 0, or ffmpeg cannot be run. */
 int movie_open(movie **m, const char *path, const view_settings *vs, double period, char *err,
                size_t errlen);
 
 /* Adds the view's last rendered frame, copies times (0 adds nothing).  Returns 0,
- * or -1 with a message (ffmpeg stopped, or the view has no image of an eye the
- * layout needs). */
+ * or -1 with a message: ffmpeg stopped or logged an error (such as a write that
+ * failed: "cannot write 'PATH': REASON"), or the view has no image of an eye the
+ * layout needs. */
 int movie_add(movie *m, const view *v, long copies, char *err, size_t errlen);
 
 /* The movie's frame size (even), for a layout and eye size. */
