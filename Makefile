@@ -159,7 +159,7 @@ check-build: vroc man/vroc.1 build-san/vroc build-val/vroc build/tests/wavtool \
 
 # The sound tests' reader of WAV files (its own parser, not the libsndfile vroc
 # writes them with), built once for both builds' script tests.
-build/tests/wavtool: tests/wavtool.c build/flags
+build/tests/wavtool: tests/wavtool.c tests/tone.h build/flags
 	@mkdir -p $(@D)
 	$(CC) $(BASE) -o $@ $< -lm
 

@@ -32,26 +32,32 @@ awk -v d="$ad" 'BEGIN { exit !(d > 1.9 && d < 2.1) }' && ok "and so does its sou
 ls -a "$TMP" | grep -q vroc-part && notok "no part files are left beside the movie" "$(ls -a "$TMP")" ||
     ok "no part files are left beside the movie"
 
-"$VROC" -b -q "$S/simple.vroc" -c "image_size = (160, 120); stereo = mono; movie = $TMP/mono.mp4; run 5" 2>/dev/null
-is "mono: the left eye, no sound without a soundtrack" "$(probe "$TMP/mono.mp4")" "160x120 frames=5 rate=10/1 audio=none"
-"$VROC" -b -q "$S/simple.vroc" -c "image_size = (160, 120); stereo = anaglyph; movie = $TMP/ana.mkv; run 5" 2>/dev/null
-is "anaglyph in Matroska" "$(probe "$TMP/ana.mkv")" "160x120 frames=5 rate=10/1 audio=none"
-"$VROC" -b -q "$S/simple.vroc" -c "image_size = (160, 120); stereo = sbs; movie = $TMP/sbs.webm; run 3" 2>/dev/null
-is "sbs in WebM, what the extension names" "$(probe "$TMP/sbs.webm")" "320x120 frames=3 rate=10/1 audio=none"
+# film TEXT WANT NAME COMMANDS: the Simple scene run with COMMANDS, which write the
+# movie $TMP/NAME, probes as WANT
+film() {
+    "$VROC" -b -q "$S/simple.vroc" -c "$4" 2>/dev/null
+    is "$1" "$(probe "$TMP/$3")" "$2"
+}
+film "mono: the left eye, no sound without a soundtrack" "160x120 frames=5 rate=10/1 audio=none" \
+    mono.mp4 "image_size = (160, 120); stereo = mono; movie = $TMP/mono.mp4; run 5"
+film "anaglyph in Matroska" "160x120 frames=5 rate=10/1 audio=none" \
+    ana.mkv "image_size = (160, 120); stereo = anaglyph; movie = $TMP/ana.mkv; run 5"
+film "sbs in WebM, what the extension names" "320x120 frames=3 rate=10/1 audio=none" \
+    sbs.webm "image_size = (160, 120); stereo = sbs; movie = $TMP/sbs.webm; run 3"
 
 # video time is simulated time: 1 s at 0.1, 0.5 s at 0.05 (every other frame), 1 s at 0.2
 # (each frame twice): 25 frames at 10/s
-"$VROC" -b -q "$S/simple.vroc" -c "image_size = (64, 48); movie = $TMP/steps.mp4; run 10; time_step = 0.05; run 10; time_step = 0.2; run 5" 2>/dev/null
-is "time_step changes: frames skipped and repeated to keep simulated time (25 at 10/s)" \
-    "$(probe "$TMP/steps.mp4")" "128x48 frames=25 rate=10/1 audio=none"
-"$VROC" -b -q "$S/simple.vroc" -c "time_step = 0.04; image_size = (64, 48); movie = $TMP/r25.mp4; run 7" 2>/dev/null
-is "the frame rate is 1 / time_step (25/s)" "$(probe "$TMP/r25.mp4")" "128x48 frames=7 rate=25/1 audio=none"
+film "time_step changes: frames skipped and repeated to keep simulated time (25 at 10/s)" \
+    "128x48 frames=25 rate=10/1 audio=none" steps.mp4 \
+    "image_size = (64, 48); movie = $TMP/steps.mp4; run 10; time_step = 0.05; run 10; time_step = 0.2; run 5"
+film "the frame rate is 1 / time_step (25/s)" "128x48 frames=7 rate=25/1 audio=none" \
+    r25.mp4 "time_step = 0.04; image_size = (64, 48); movie = $TMP/r25.mp4; run 7"
 
-"$VROC" -b -q "$S/simple.vroc" -c "image_size = (64, 48); movie = $TMP/early.mp4; run 4; movie = off; run 4" 2>/dev/null
-is "movie = off finishes the file there" "$(probe "$TMP/early.mp4")" "128x48 frames=4 rate=10/1 audio=none"
+film "movie = off finishes the file there" "128x48 frames=4 rate=10/1 audio=none" \
+    early.mp4 "image_size = (64, 48); movie = $TMP/early.mp4; run 4; movie = off; run 4"
 # a soundtrack started after the movie: silence first, then its sound, as long as the movie
-"$VROC" -b -q "$S/simple.vroc" -c "image_size = (64, 48); movie = $TMP/late.mp4; run 5; soundtrack = $TMP/late.wav; run 10" 2>/dev/null
-is "a soundtrack that starts later is muxed in all the same" "$(probe "$TMP/late.mp4")" "128x48 frames=15 rate=10/1 audio=aac"
+film "a soundtrack that starts later is muxed in all the same" "128x48 frames=15 rate=10/1 audio=aac" \
+    late.mp4 "image_size = (64, 48); movie = $TMP/late.mp4; run 5; soundtrack = $TMP/late.wav; run 10"
 
 # the frames show the scene: a frame taken out of the movie is not one flat colour
 ffmpeg -v error -y -i "$TMP/pair.mp4" -vf "select=eq(n\,10)" -frames:v 1 -f rawvideo -pix_fmt gray "$TMP/f10.gray" 2>&1

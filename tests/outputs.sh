@@ -66,15 +66,18 @@ expect "under the same limit a small trace is written" 0 "sphere a" \
 # the soundtrack and the movie: not stdio, but the same rule and the same message
 # (line by line: the sanitizer build may add LeakSanitizer's list, as above)
 has_line() { printf '%s\n' "$1" | grep -qxF -- "$2"; }
+# stops TEXT BLOCKS COMMANDS LINE: the Simple scene run with COMMANDS (then
+# `print ball1`) under a size limit of BLOCKS exits 1 with the error LINE, and
+# prints nothing after it
+stops() {
+    out=$(limited "$2" "$VROC" -b "$S/simple.vroc" -c "$3; print ball1" 2>&1); status=$?
+    if [ $status -eq 1 ] && has_line "$out" "$4" && ! has_line "$out" "sphere ball1"; then ok "$1"
+    else notok "$1" "status $status" "$out"; fi
+}
 expect "soundtrack = /dev/full is an error" 1 "error: soundtrack: cannot write '/dev/full': No space left on device" \
     "$VROC" -b -c 'sphere a; soundtrack = /dev/full; run 3'
-out=$(limited 64 "$VROC" -b "$S/simple.vroc" -c "soundtrack = s.wav; run 30; print ball1" 2>&1); status=$?
-if [ $status -eq 1 ] && has_line "$out" "error: soundtrack: cannot write 's.wav': File too large; soundtrack is now off, time stopped" &&
-    ! has_line "$out" "sphere ball1"; then
-    ok "a soundtrack that outgrows the file size limit stops the batch run, saying why"
-else
-    notok "a soundtrack that outgrows the file size limit stops the batch run, saying why" "status $status" "$out"
-fi
+stops "a soundtrack that outgrows the file size limit stops the batch run, saying why" 64 \
+    "soundtrack = s.wav; run 30" "error: soundtrack: cannot write 's.wav': File too large; soundtrack is now off, time stopped"
 n=$([ -x "$WT" ] && "$WT" info s.wav | sed -n 's/.*frames=//p')
 [ "${n:-0}" -gt 0 ] && [ $((44 + 4 * n)) -le 32768 ] && ok "the soundtrack is a WAV file of the $n samples written up to the limit" ||
     notok "the soundtrack is a WAV file of the samples written up to the limit" "frames=${n:-none}" "$(ls -l s.wav 2>&1)"
@@ -83,13 +86,9 @@ if command -v ffmpeg >/dev/null 2>&1; then
         "error: movie: cannot write '/dev/full': not a regular file" "$VROC" -b -c 'movie = /dev/full'
     [ -c /dev/full ] && ! ls -a /dev | grep -q vroc-part && ok "nothing is written beside /dev/full" ||
         notok "nothing is written beside /dev/full" "$(ls -la /dev/full /dev/.vroc-part* 2>&1)"
-    out=$(limited 16 "$VROC" -b "$S/simple.vroc" -c "image_size = (160, 120); movie = m.mp4; run 100; print ball1" 2>&1); status=$?
-    if [ $status -eq 1 ] && has_line "$out" "error: movie: cannot write 'm.mp4': File too large; movie is now off, time stopped" &&
-        ! has_line "$out" "sphere ball1"; then
-        ok "a movie that outgrows the file size limit stops the batch run, saying why"
-    else
-        notok "a movie that outgrows the file size limit stops the batch run, saying why" "status $status" "$out"
-    fi
+    stops "a movie that outgrows the file size limit stops the batch run, saying why" 16 \
+        "image_size = (160, 120); movie = m.mp4; run 100" \
+        "error: movie: cannot write 'm.mp4': File too large; movie is now off, time stopped"
     [ -z "$(ls -a | grep -e '^m\.mp4$' -e vroc-part)" ] && ok "the failed movie leaves no file behind" ||
         notok "the failed movie leaves no file behind" "$(ls -a)"
 else

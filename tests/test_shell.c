@@ -80,6 +80,16 @@ static void path_in_dir(char *out, size_t len, const char *name)
     snprintf(out, len, "%s/%s", g_dir, name);
 }
 
+/* The statements fmt makes of the path of name in the test's folder (fmt's one
+ * %s), in text (returned). */
+static const char *about(char *text, size_t len, const char *fmt, const char *name)
+{
+    char path[256];
+    path_in_dir(path, sizeof path, name);
+    snprintf(text, len, fmt, path);
+    return text;
+}
+
 static void write_file(const char *name, const char *text, size_t n)
 {
     char path[256];
@@ -167,25 +177,19 @@ static void the_bad_input_catalogue(void **state)
     /* sound and movies: the sound in use and the outputs stay as they were */
     write_file("empty.wav", "", 0);
     write_file("words.wav", "not a sound at all\n", 19);
-    path_in_dir(path, sizeof path, "empty.wav");
-    snprintf(text, sizeof text, "collision_sound = \"%s\"\n", path);
-    bad(text, "is empty");
-    path_in_dir(path, sizeof path, "words.wav");
-    snprintf(text, sizeof text, "collision_sound = \"%s\"\n", path);
-    bad(text, "is not a sound file libsndfile can read");
+    bad(about(text, sizeof text, "collision_sound = \"%s\"\n", "empty.wav"), "is empty");
+    bad(about(text, sizeof text, "collision_sound = \"%s\"\n", "words.wav"),
+        "is not a sound file libsndfile can read");
     snprintf(text, sizeof text, "collision_sound = \"%s\"\n", g_dir);
     bad(text, "is a folder, not a file");
-    path_in_dir(path, sizeof path, "words.wav");
-    snprintf(text, sizeof text, "collision_sound = bell; collision_sound = \"%s\"\n", path);
+    about(text, sizeof text, "collision_sound = bell; collision_sound = \"%s\"\n", "words.wav");
     assert_int_equal(run(text), CMD_ERROR);
     assert_string_equal(g_sh.sound_set.collision_sound, "bell");
     bad("collision_vol = -0.5\n", "collision_vol must be between 0 and 1000 (got -0.5)");
     bad("volume = -1\n", "volume must be between 0 and 1000 (got -1)");
     bad("soundtrack = /nonexistent/dir/t.wav\n", "soundtrack: cannot write '/nonexistent/dir/t.wav'");
     bad("movie = /nonexistent/dir/m.mp4\n", "movie: cannot write '/nonexistent/dir/m.mp4'");
-    path_in_dir(path, sizeof path, "movie");
-    snprintf(text, sizeof text, "movie = \"%s\"\n", path);
-    bad(text, "has no extension");
+    bad(about(text, sizeof text, "movie = \"%s\"\n", "movie"), "has no extension");
     path_in_dir(path, sizeof path, "m.mp4");
     snprintf(text, sizeof text, "time_step = 0; movie = \"%s\"\n", path);
     assert_int_equal(run(text), CMD_ERROR);

@@ -17,6 +17,7 @@
 #include "sound/place.h"
 #include "sound/sound.h"
 #include "sound/synth.h"
+#include "tone.h"
 
 static char g_dir[64];
 
@@ -40,31 +41,16 @@ static void path_in_dir(char *out, size_t len, const char *name)
     snprintf(out, len, "%s/%s", g_dir, name);
 }
 
-static double goertzel(const float *x, long n, double f)
-{
-    double w = 2 * M_PI * f / SOUND_RATE, c = 2 * cos(w), s1 = 0, s2 = 0;
-    for (long k = 0; k < n; k++) {
-        double s = x[k] + c * s1 - s2;
-        s2 = s1;
-        s1 = s;
-    }
-    return s1 * s1 + s2 * s2 - c * s1 * s2;
-}
-
-/* The strongest frequency of x (n samples at 48 kHz) from 20 Hz to 20 kHz: a scan
- * every 10 Hz, then to 0.25 Hz about the best. */
+/* The strongest frequency of x (n samples at 48 kHz) from 20 Hz to 20 kHz, to a
+ * quarter of a hertz (tone.h). */
 static double strongest(const float *x, long n)
 {
-    double best = 0, bp = -1;
-    for (double f = 20; f < 20000; f += 10) {
-        double p = goertzel(x, n, f);
-        if (p > bp) bp = p, best = f;
-    }
-    for (double f = best - 10, c = best; f <= c + 10; f += 0.25) {
-        double p = goertzel(x, n, f);
-        if (p > bp) bp = p, best = f;
-    }
-    return best;
+    double *d = malloc((size_t)n * sizeof *d);
+    assert_non_null(d);
+    for (long k = 0; k < n; k++) d[k] = x[k];
+    double f = tone_strongest(d, n, SOUND_RATE, 20, 20000, 10);
+    free(d);
+    return f;
 }
 
 static float peak_of(const sound_buf *b)

@@ -22,6 +22,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "tone.h"
+
 typedef struct {
     int rate, channels, bits;
     long frames;
@@ -108,17 +110,6 @@ static double *envelope(const pcm *p, double ms, long *nb)
     return e;
 }
 
-static double goertzel_power(const double *x, long n, double f, int rate)
-{
-    double w = 2 * M_PI * f / rate, c = 2 * cos(w), s1 = 0, s2 = 0;
-    for (long k = 0; k < n; k++) {
-        double s = x[k] + c * s1 - s2;
-        s2 = s1;
-        s1 = s;
-    }
-    return s1 * s1 + s2 * s2 - c * s1 * s2;
-}
-
 int main(int argc, char **argv)
 {
     if (argc < 3) {
@@ -153,16 +144,7 @@ int main(int argc, char **argv)
         double *x = malloc((size_t)(n > 0 ? n : 1) * sizeof *x);
         for (long k = 0; k < n; k++)
             x[k] = sample(&p, a + k, 0) * (0.5 - 0.5 * cos(2 * M_PI * k / (n - 1 > 0 ? n - 1 : 1)));
-        double best = 0, bp = -1;
-        for (double f = 20; f <= 20000 && f < p.rate / 2.0; f += 2) {
-            double pw = goertzel_power(x, n, f, p.rate);
-            if (pw > bp) bp = pw, best = f;
-        }
-        for (double f = best - 2; f <= best + 2; f += 0.05) {
-            double pw = goertzel_power(x, n, f, p.rate);
-            if (pw > bp) bp = pw, best = f;
-        }
-        printf("freq=%.2f\n", best);
+        printf("freq=%.2f\n", tone_strongest(x, n, p.rate, 20, fmin(20002, p.rate / 2.0), 2));
     } else if (strcmp(cmd, "env") == 0 && argc > 3) {
         double ms = atof(argv[3]);
         long w = lround(ms * 1e-3 * p.rate);

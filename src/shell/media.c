@@ -172,14 +172,20 @@ int media_choose_sound(shell *sh, const char *name, char *err, size_t errlen)
     return sound_choose(m->snd, name, err, errlen);
 }
 
+/* The state for statement st of output what, made on first need: NULL, after
+ * an error, when there is no memory for it. */
+static media *media_for(shell *sh, const stmt *st, const char *what)
+{
+    media *m = media_get(sh);
+    if (!m) sh_error(sh, st, "%s: out of memory", what);
+    return m;
+}
+
 cmd_status media_soundtrack(shell *sh, const stmt *st, const char *path)
 {
-    media *m = path ? media_get(sh) : sh->media;
-    if (!m) {
-        if (!path) return CMD_OK;
-        sh_error(sh, st, "soundtrack: out of memory");
-        return CMD_ERROR;
-    }
+    if (!path && !sh->media) return CMD_OK; /* off, and nothing was on */
+    media *m = media_for(sh, st, "soundtrack");
+    if (!m) return CMD_ERROR;
     char err[2048];
     int rc = path ? sound_track_open(m->snd, path, m->elapsed, err, sizeof err)
                   : sound_track_close(m->snd, m->elapsed, err, sizeof err);
@@ -190,12 +196,9 @@ cmd_status media_soundtrack(shell *sh, const stmt *st, const char *path)
 
 cmd_status media_movie(shell *sh, const stmt *st, const char *path)
 {
-    media *m = path ? media_get(sh) : sh->media;
-    if (!m) {
-        if (!path) return CMD_OK;
-        sh_error(sh, st, "movie: out of memory");
-        return CMD_ERROR;
-    }
+    if (!path && !sh->media) return CMD_OK; /* off, and nothing was on */
+    media *m = media_for(sh, st, "movie");
+    if (!m) return CMD_ERROR;
     if (!path) return m->mov && media_movie_close(sh, m, st) != 0 ? CMD_ERROR : CMD_OK;
     char err[2048];
     movie *nm;
