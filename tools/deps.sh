@@ -38,9 +38,11 @@ need_cmd valgrind valgrind
 # movies: the ffmpeg program (and ffprobe, which the tests read movies with)
 need_cmd ffmpeg ffmpeg
 need_cmd ffprobe ffmpeg
-# the live sound test: a PulseAudio server of its own, and parecord
+# the live sound test: a PulseAudio server of its own, parecord (and pactl,
+# pacat), and pgrep, which counts the servers
 need_cmd pulseaudio pulseaudio
 need_cmd parecord pulseaudio-utils
+need_cmd pgrep procps
 if [ "${1:-}" = fuzz ]; then need_cmd afl-fuzz afl++; fi
 
 if [ -z "$missing" ]; then
