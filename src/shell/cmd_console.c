@@ -167,7 +167,8 @@ static void help_summary(shell *sh)
                   {"property", "Properties of the current object (or NAME.property = value)"},
                   {"system", "System (thesis Table A.5)"},
                   {"console", "Console"},
-                  {"view", "Views and hand"}};
+                  {"view", "Views and hand"},
+                  {"sound", "Sound and movies"}};
     for (size_t g = 0; g < sizeof groups / sizeof groups[0]; g++) {
         fprintf(sh->out, "%s%s:\n", g ? "\n" : "", groups[g].title);
         for (int i = 0; i < command_count; i++) {

@@ -99,15 +99,6 @@ cmd_status cmd_real(shell *sh, const stmt *st)
     return CMD_OK;
 }
 
-static const char *const builtin_sounds[] = {"click", "knock", "bell", "off", NULL};
-
-static bool is_builtin_sound(const char *s)
-{
-    for (int i = 0; builtin_sounds[i]; i++)
-        if (strcmp(s, builtin_sounds[i]) == 0) return true;
-    return false;
-}
-
 /* A file the user names for reading must be a readable regular file. */
 static bool readable_file(shell *sh, const stmt *st, const char *path)
 {
@@ -121,13 +112,6 @@ static bool readable_file(shell *sh, const stmt *st, const char *path)
     fclose(f);
     if (dir) sh_error(sh, st, "%s: '%s' is a folder, not a file", st->cmd->name, path);
     return !dir;
-}
-
-cmd_status cmd_collision_sound(shell *sh, const stmt *st)
-{
-    if (!is_builtin_sound(st->word) && !readable_file(sh, st, st->word)) return CMD_ERROR;
-    snprintf(sh->set.collision_sound, sizeof sh->set.collision_sound, "%s", st->word);
-    return CMD_OK;
 }
 
 cmd_status cmd_tracker(shell *sh, const stmt *st)

@@ -58,6 +58,7 @@ cmd_status cmd_restart(shell *sh, const stmt *st)
     sh->w.set = sh->startup.sim;
     sh->view_set = sh->startup.view;
     sh->set = sh->startup.shell;
+    sh->sound_set = sh->startup.sound; /* the soundtrack and movie go on, as the logs do */
     sh->rng = sh->set.seed;
     sh->current = sh->selected = sh->prev_selected = -1;
     return r;

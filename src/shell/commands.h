@@ -66,8 +66,9 @@ enum { C_SPHERE = 1 << SHAPE_SPHERE, C_CUBE = 1 << SHAPE_CUBE, C_SQ = 1 << SHAPE
 typedef enum { CMD_OK, CMD_ERROR, CMD_QUIT } cmd_status;
 
 /* Whose settings a FORM_SETTING's field is in: the simulation's (world.set), the
- * views' (shell.view_set) or the shell's own (shell.set). */
-typedef enum { OWN_NONE, OWN_SIM, OWN_VIEW, OWN_SHELL } setting_owner;
+ * views' (shell.view_set), the sound's (shell.sound_set) or the shell's own
+ * (shell.set). */
+typedef enum { OWN_NONE, OWN_SIM, OWN_VIEW, OWN_SHELL, OWN_SOUND } setting_owner;
 
 typedef struct command {
     const char *name;

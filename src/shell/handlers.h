@@ -2,7 +2,8 @@
  * (commands.h).  Each either applies its statement whole or changes nothing and
  * reports an error.  They live by concern: cmd_object.c (objects and their
  * properties), cmd_setting.c (settings), cmd_time.c (time and files),
- * cmd_console.c (what a console tool adds), random.c (random objects). */
+ * cmd_console.c (what a console tool adds), cmd_sound.c (sound and movies),
+ * random.c (random objects). */
 #ifndef VROC_HANDLERS_H
 #define VROC_HANDLERS_H
 
@@ -22,7 +23,6 @@ cmd_status cmd_seed(struct shell *sh, const stmt *st);
 cmd_status cmd_image_size(struct shell *sh, const stmt *st);
 cmd_status cmd_stereo(struct shell *sh, const stmt *st);
 cmd_status cmd_real(struct shell *sh, const stmt *st);
-cmd_status cmd_collision_sound(struct shell *sh, const stmt *st);
 cmd_status cmd_tracker(struct shell *sh, const stmt *st);
 cmd_status cmd_log(struct shell *sh, const stmt *st);
 cmd_status cmd_gravity(struct shell *sh, const stmt *st);
@@ -54,5 +54,10 @@ cmd_status cmd_quit(struct shell *sh, const stmt *st);
 cmd_status cmd_help(struct shell *sh, const stmt *st);
 
 cmd_status cmd_random(struct shell *sh, const stmt *st);
+
+cmd_status cmd_collision_sound(struct shell *sh, const stmt *st);
+cmd_status cmd_sound(struct shell *sh, const stmt *st);
+cmd_status cmd_soundtrack(struct shell *sh, const stmt *st);
+cmd_status cmd_movie(struct shell *sh, const stmt *st);
 
 #endif

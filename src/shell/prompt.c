@@ -20,6 +20,7 @@
 #include <readline/readline.h>
 
 #include "complete.h"
+#include "media.h"
 #include "shell.h"
 #include "fmt.h"
 
@@ -61,13 +62,15 @@ static void on_line(char *line)
     free(line);
 }
 
-/* Advances the frames that are due in real time; returns seconds to the next. */
+/* Advances the frames that are due in real time; returns seconds to the next.  A
+ * frame runs when it begins, ahead of its time, so that its collisions' sounds are
+ * queued before their moment (media.h). */
 static double run_due_frames(shell *sh, double *next)
 {
     double h = sh->w.set.time_step;
     if (!sh->running || h <= 0) return -1;
     double t = shell_clock();
-    if (*next <= 0) *next = t + h;
+    if (*next <= 0) *next = t;
     if (t < *next) return *next - t;
     long due = (long)((t - *next) / h) + 1;
     if (due > 5) due = 5; /* fall behind rather than stall the prompt */
@@ -99,7 +102,7 @@ static int loop_readline(shell *sh)
     rl_callback_handler_install("vroc> ", on_line);
     double next = 0;
     while (!g_done) {
-        double wait = run_due_frames(sh, &next);
+        double wait = media_pump(sh, run_due_frames(sh, &next)); /* frames, live sound */
         if (!sh->running) next = 0;
         fd_set fds;
         FD_ZERO(&fds);

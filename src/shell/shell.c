@@ -5,7 +5,8 @@
  * run in turn through the command table; the first error stops it.  After every
  * statement the core is told that the world changed (edit_done).  Time advances
  * frame by frame: after each the shell writes the frame's events and trace rows,
- * and the views' files when record is on.
+ * the views' files when record is on, and gives the frame to the sound and the
+ * movie (media.h).
  */
 #include "shell.h"
 
@@ -18,6 +19,7 @@
 #include "core/sim.h"
 #include "view/view.h"
 #include "fmt.h"
+#include "media.h"
 
 volatile sig_atomic_t shell_interrupted;
 
@@ -32,8 +34,6 @@ shell_settings shell_settings_defaults(void)
     s.trigger = false;
     s.select_mode = false;
     s.tracker[0] = '\0';
-    snprintf(s.collision_sound, sizeof s.collision_sound, "click");
-    s.collision_vol = 1.0;
     return s;
 }
 
@@ -50,9 +50,11 @@ void shell_init(shell *sh, FILE *out, FILE *err)
     world_init(&sh->w);
     sh->view_set = view_settings_defaults();
     sh->set = shell_settings_defaults();
+    sh->sound_set = sound_settings_defaults();
     sh->startup.sim = sh->w.set;
     sh->startup.view = sh->view_set;
     sh->startup.shell = sh->set;
+    sh->startup.sound = sh->sound_set;
     sh->rng = sh->set.seed;
     sh->current = sh->selected = sh->prev_selected = -1;
     sh->out = out;
@@ -63,6 +65,7 @@ cmd_status shell_close_outputs(shell *sh)
 {
     char err[LOG_PATH_MAX + 256];
     cmd_status r = CMD_OK;
+    if (media_finish(sh) != 0) r = CMD_ERROR; /* the movie, the soundtrack */
     if (log_trace_close(&sh->logs, err, sizeof err) != 0) {
         sh_error(sh, NULL, "trace: %s", err);
         r = CMD_ERROR;
@@ -76,8 +79,9 @@ cmd_status shell_close_outputs(shell *sh)
 
 void shell_free(shell *sh)
 {
-    world_free(&sh->w);
     shell_close_outputs(sh);
+    media_free(sh);
+    world_free(&sh->w);
     view_free(sh->view);
     sh->view = NULL;
 }
@@ -218,8 +222,9 @@ cmd_status shell_output_failed(shell *sh, const stmt *st, const char *what, cons
 }
 
 /* Writes what the frame just advanced gives the outputs: the events' and the
- * trace's rows, and the views when record is on.  An output that fails is turned
- * off (shell_output_failed); returns CMD_ERROR when the run must stop. */
+ * trace's rows, the views when record is on, then the frame's sound and movie
+ * frames (media.h, which may reuse what record drew).  An output that fails is
+ * turned off (shell_output_failed); returns CMD_ERROR when the run must stop. */
 static cmd_status write_frame(shell *sh, const stmt *st)
 {
     char err[1024], ignored[8];
@@ -238,6 +243,7 @@ static cmd_status write_frame(shell *sh, const stmt *st)
         sh->view_set.record = false;
         r = shell_output_failed(sh, st, "record", err);
     }
+    if (r == CMD_OK) r = media_frame(sh, st);
     return r;
 }
 
@@ -276,6 +282,7 @@ const void *shell_setting_value(const shell *sh, const command *c)
     case OWN_SIM: return (const char *)&sh->w.set + c->off;
     case OWN_VIEW: return (const char *)&sh->view_set + c->off;
     case OWN_SHELL: return (const char *)&sh->set + c->off;
+    case OWN_SOUND: return (const char *)&sh->sound_set + c->off;
     default: return NULL;
     }
 }

@@ -1,9 +1,10 @@
 /* shell.h: runs statements against the world: dispatch, messages, time.
  *
- * The shell owns the world, the settings of the views and its own, the current
- * object, the logs and the off-screen view.  Input comes from files (parsed whole
- * before running), from -c, from a terminal through GNU readline (with real-time
- * running while the user types: prompt.c), or line by line from a pipe.  Handlers
+ * The shell owns the world, the settings of the views, of the sound and its own,
+ * the current object, the logs, the off-screen view, and the sound and movie
+ * being made (media.h).  Input comes from files (parsed whole before running),
+ * from -c, from a terminal through GNU readline (with real-time running while
+ * the user types: prompt.c), or line by line from a pipe.  Handlers
  * (the cmd_*.c files) report through sh_error / sh_warn / sh_info so that every
  * message carries its file and line.
  */
@@ -19,13 +20,14 @@
 #include "core/world.h"
 #include "lang.h"
 #include "log.h"
+#include "sound/sound.h"
 #include "view/view.h"
 
 /* Longest path a setting of the shell's holds, with its final NUL. */
 #define SHELL_PATH_MAX 1024
 
-/* The settings the shell owns: where `random` places objects, and the hand's and
- * the sound's, which are kept here until their own layers give them effect. */
+/* The settings the shell owns: where `random` places objects, and the hand's,
+ * which are kept here until their own layer gives them effect. */
 typedef struct {
     vec3 random_box;        /* half-extents of the box random objects go in */
     unsigned long seed;     /* of random's sequence */
@@ -35,27 +37,27 @@ typedef struct {
     bool trigger;
     bool select_mode;
     char tracker[SHELL_PATH_MAX];
-    /* collision sounds (Table A.5) */
-    char collision_sound[SHELL_PATH_MAX];
-    double collision_vol;
 } shell_settings;
 
 /* The start-up values: random_box (2, 2, 2), seed 1, the hand at the origin,
- * trigger up, select mode off, no tracker, the click sound at volume 1. */
+ * trigger up, select mode off, no tracker. */
 shell_settings shell_settings_defaults(void);
 
 typedef struct shell {
     world w;
     view_settings view_set;
     shell_settings set;
+    sound_settings sound_set;
     struct {               /* what restart returns to: defaults and -o */
         sim_settings sim;
         view_settings view;
         shell_settings shell;
+        sound_settings sound;
     } startup;
     shell_logs logs;       /* trace and events */
     view *view;            /* off-screen context, created on first need */
     view_stats view_st;    /* what drawing has cost */
+    struct media *media;   /* sound and movie (media.h), made on first need */
     double wall_time;      /* seconds spent advancing time */
     bool running;          /* `start` given and not stopped */
     int current;           /* index of the current object, or -1 */
@@ -105,8 +107,9 @@ cmd_status shell_advance(shell *sh, const stmt *st, long n);
  * (stop_on_error) stops there (CMD_ERROR, and vroc exits 1). */
 cmd_status shell_output_failed(shell *sh, const stmt *st, const char *what, const char *err);
 
-/* Closes the logs, checking their last writes; at the end of the program, before
- * shell_free.  Returns CMD_ERROR (after saying why) when one failed. */
+/* Finishes the movie and the soundtrack (media.h) and closes the logs, checking
+ * their last writes; at the end of the program, before shell_free.  Returns
+ * CMD_ERROR (after saying why) when one failed. */
 cmd_status shell_close_outputs(shell *sh);
 
 /* Messages about statement st (NULL: no location). */

@@ -25,7 +25,7 @@
 /* a property of the body, at field (of body) */
 #define PROP(name, arg, range, lo, hi, classes, field) \
     {name, FORM_PROPERTY, arg, range, lo, hi, NULL, classes, OWN_NONE, offsetof(body, field), cmd_property, NO_AFTER}
-/* settings of the simulation, the views and the shell, at field of their struct */
+/* settings of the simulation, the views, the shell and the sound, at field of their struct */
 #define SIM(name, arg, range, lo, hi, field) \
     {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SIM, offsetof(sim_settings, field), cmd_setting, NO_AFTER}
 #define VIEW(name, arg, range, lo, hi, field) \
@@ -36,7 +36,11 @@
     {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SHELL, offsetof(shell_settings, field), cmd_setting, NO_AFTER}
 #define SHELLF(name, arg, range, lo, hi, field, fn) \
     {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SHELL, offsetof(shell_settings, field), fn, NO_AFTER}
-/* a setting kept elsewhere (the logs): its handler knows where */
+#define SOUND(name, arg, range, lo, hi, field) \
+    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SOUND, offsetof(sound_settings, field), cmd_setting, NO_AFTER}
+#define SOUNDF(name, arg, range, lo, hi, field, fn) \
+    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SOUND, offsetof(sound_settings, field), fn, NO_AFTER}
+/* a setting kept elsewhere (the logs, the soundtrack, the movie): its handler knows where */
 #define OTHER(name, arg, fn) {name, FORM_SETTING, arg, 0, 0, 0, NULL, 0, OWN_NONE, 0, fn, NO_AFTER}
 #define OTHER_R(name, arg, lo, hi, fn) \
     {name, FORM_SETTING, arg, R_RANGE, lo, hi, NULL, 0, OWN_NONE, 0, fn, NO_AFTER}
@@ -110,8 +114,8 @@ const command command_table[] = {
     SIM_A("force", R_NONZERO_VEC | R_RANGE, -POS, POS, force,
           "magnitude", -LIM_ACCEL_MAX, LIM_ACCEL_MAX),
     ACT("gravity", ARG_NONE, cmd_gravity),
-    SHELLF("collision_sound", VAL_FILE, 0, 0, 0, collision_sound, cmd_collision_sound),
-    SHELL("collision_vol", VAL_NUMBER, R_RANGE, 0, LIM_LOUD_MAX, collision_vol),
+    SOUNDF("collision_sound", VAL_FILE, 0, 0, 0, collision_sound, cmd_collision_sound),
+    SOUND("collision_vol", VAL_NUMBER, R_RANGE, 0, LIM_LOUD_MAX, collision_vol),
     /* console */
     COUNT("run", cmd_run),
     ACT("time", ARG_NONE, cmd_time),
@@ -151,6 +155,10 @@ const command command_table[] = {
     ACT("select", ARG_OPT_ONOFF, cmd_select),
     ACT("reselect", ARG_NONE, cmd_reselect),
     SHELLF("tracker", VAL_FILE_OR_OFF, 0, 0, 0, tracker, cmd_tracker),
+    /* sound and movies */
+    SOUNDF("sound", VAL_ONOFF, 0, 0, 0, live, cmd_sound),
+    OTHER("soundtrack", VAL_FILE_OR_OFF, cmd_soundtrack),
+    OTHER("movie", VAL_FILE_OR_OFF, cmd_movie),
 };
 
 const int command_count = (int)(sizeof command_table / sizeof command_table[0]);

@@ -9,6 +9,7 @@
 #include "core/pairs.h"
 #include "core/world.h"
 #include "handlers.h"
+#include "media.h"
 #include "shell.h"
 
 void writer_vec(FILE *out, vec3 v)
@@ -23,8 +24,13 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
     const view_settings *vs = &sh->view_set;
     char a[32];
     const char *n = c->name;
-    if (strcmp(n, "trace") == 0 || strcmp(n, "events") == 0) {
-        const char *path = n[0] == 't' ? sh->logs.trace_path : sh->logs.events_path;
+    if (strcmp(n, "trace") == 0 || strcmp(n, "events") == 0 || strcmp(n, "soundtrack") == 0 ||
+        strcmp(n, "movie") == 0) { /* outputs: a save does not start them again */
+        const char *path = strcmp(n, "trace") == 0    ? sh->logs.trace_path
+                           : strcmp(n, "events") == 0 ? sh->logs.events_path
+                           : n[0] == 's'              ? media_soundtrack_path(sh)
+                                                      : media_movie_path(sh);
+        if (!path) path = "";
         fprintf(out, "%s%s = %s%s%s\n", for_save ? "# " : "", n, path[0] ? "\"" : "",
                 path[0] ? path : "off", path[0] ? "\"" : "");
         return;
@@ -32,6 +38,10 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
     if (strcmp(n, "tracker") == 0) {
         if (s->tracker[0]) fprintf(out, "tracker = \"%s\"\n", s->tracker);
         else fprintf(out, "tracker = off\n");
+        return;
+    }
+    if (strcmp(n, "sound") == 0) {
+        fprintf(out, "sound = %s\n", media_live_on(sh) ? "on" : "off");
         return;
     }
     if (strcmp(n, "seed") == 0) {
