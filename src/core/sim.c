@@ -374,10 +374,10 @@ static next_event find_next(world *w, double t_step, double t_end)
 
 /* ------------------------------------------------------------ steps and frames */
 
-/* One internal step of h seconds (thesis 3.4.2, steps 3 to 5). */
-static void internal_step(world *w, double h)
+/* One internal step, from now to t_end (thesis 3.4.2, steps 3 to 5). */
+static void internal_step(world *w, double t_end)
 {
-    double t = w->time, t_end = t + h;
+    double t = w->time;
     /* every moving object's flight starts afresh where it is */
     for (int i = 0; i < w->n; i++) {
         if (!step_moves(w, i)) continue;
@@ -450,24 +450,62 @@ static void find_contacts(world *w)
     free(mine);
 }
 
+/* After a change from outside the simulation (a statement, or the hook's at):
+ * what the moved objects touch and the modes of the woken, then every flight and
+ * every pair's bound from now. */
+static void start_over(world *w)
+{
+    find_contacts(w);
+    for (int i = 0; i < w->n; i++) {
+        step_start(w, i, w->time);
+        set_event(w, i, HUGE_VAL);
+    }
+    for (long k = 0; k < w->pairs.n; k++) sched_set(w, k, bound_from(w, k, w->time));
+    w->sched_dirty = false;
+}
+
 int sim_prepare(world *w)
 {
     if (pairs_update(w) != 0) return -1;
     bool changed = w->sched_dirty;
     if ((changed && sched_build(w, w->time) != 0) || step_prepare(w, changed) != 0) return -1;
-    if (changed) {
-        find_contacts(w);
-        for (int i = 0; i < w->n; i++) {
-            step_start(w, i, w->time);
-            set_event(w, i, HUGE_VAL);
-        }
-        for (long k = 0; k < w->pairs.n; k++) sched_set(w, k, bound_from(w, k, w->time));
-    }
+    if (changed) start_over(w);
     w->sched_dirty = false;
     return 0;
 }
 
+/* The hook acts at w->time, where the internal step under way was cut; what it
+ * changed (edit_done marks it) starts over from there, as after a statement.
+ * Returns the next instant it asks for; one that asks for the same instant again
+ * and again is let go after SIM_MAX_EVENTS_PER_STEP calls. */
+static double hook_act(world *w, const sim_hook *hook, int *calls)
+{
+    hook->at(hook->ctx, w);
+    if (w->sched_dirty) start_over(w);
+    double tn = hook->next(hook->ctx, w);
+    *calls = tn <= w->time ? *calls + 1 : 0;
+    return *calls > SIM_MAX_EVENTS_PER_STEP ? HUGE_VAL : tn;
+}
+
+/* The internal step that ends at t_end, cut at each instant tn before it that the
+ * hook asks for; returns the hook's next instant.  (Out of the frame's loop, so
+ * that a frame the hook has nothing in costs one comparison a step.) */
+static __attribute__((cold, noinline)) double hook_cut(world *w, const sim_hook *hook, double tn,
+                                                      double t_end, int *calls)
+{
+    while (tn < t_end) {
+        if (tn > w->time) internal_step(w, tn);
+        tn = hook_act(w, hook, calls);
+    }
+    return tn;
+}
+
 int sim_frame(world *w, char *err, size_t errlen)
+{
+    return sim_frame_hooked(w, NULL, err, errlen);
+}
+
+int sim_frame_hooked(world *w, const sim_hook *hook, char *err, size_t errlen)
 {
     long n = world_subframes(w);
     if (n > SIM_MAX_SUBFRAMES) {
@@ -483,8 +521,15 @@ int sim_frame(world *w, char *err, size_t errlen)
     }
     double t0 = w->time, h = n > 0 ? w->set.time_step / (double)n : 0;
     w->nevents = 0;
+    /* the hook's next instant: the internal step is cut there, and what the hook
+     * changed is seen by the rest of the step.  A frame it has nothing in runs as
+     * if there were none. */
+    int calls = 0;
+    double tn = hook ? hook->next(hook->ctx, w) : HUGE_VAL;
     for (long k = 0; k < n; k++) {
-        internal_step(w, h);
+        double t_end = w->time + h;
+        if (tn < t_end) tn = hook_cut(w, hook, tn, t_end, &calls);
+        internal_step(w, t_end);
         w->st.subframes++;
     }
     if (rest_frame_end(w) > 0) {
