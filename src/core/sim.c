@@ -42,19 +42,6 @@
 /* The contact distance of objects a and b. */
 static double touch_of(const body *a, const body *b) { return toi_touch(a, b); }
 
-/* Object i's motion at time t (its state o then), for the bounds. */
-static sched_move move_at(const world *w, int i, const body *o)
-{
-    const flight *f = &w->step.fl[i];
-    sched_move m = {.moves = step_moves(w, i) && f->kind != FLIGHT_STILL};
-    if (!m.moves) return m;
-    m.c = body_com(o);
-    m.v = o->v;
-    m.a = f->a;
-    m.rate = f->rate;
-    return m;
-}
-
 /* True when pair p needs searching: one of its objects moves, and they are not
  * pressed together. */
 static bool searched(const world *w, const pair *p)
@@ -62,13 +49,14 @@ static bool searched(const world *w, const pair *p)
     return !p->touching && (step_moves(w, p->a) || step_moves(w, p->b));
 }
 
-/* Pair k's cheap bound from time t, as its objects fly now. */
+/* Pair k's cheap bound from time t, as its objects fly now (t itself for a held
+ * object's: no bound foresees the hand). */
 static double bound_from(world *w, long k, double t)
 {
     pair *p = &w->pairs.p[k];
     if (!searched(w, p)) return HUGE_VAL;
     const body *a = step_flown(w, p->a, t, 1), *b = step_flown(w, p->b, t, 1);
-    sched_move ma = move_at(w, p->a, a), mb = move_at(w, p->b, b);
+    sched_move ma = step_move(w, p->a, a), mb = step_move(w, p->b, b);
     double dt = sched_sphere_time(a, &ma, b, &mb);
     return dt == HUGE_VAL ? dt : t + dt;
 }
