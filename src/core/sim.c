@@ -160,20 +160,42 @@ static int rows_of(world *w, const pair *p, const closest_result *r, double e, i
     return n;
 }
 
+/* Held body i stops where it is at time t, until the hand sets its motion again
+ * (hold.h): it met what cannot give way. */
+static void hold_stop(world *w, int i, double t)
+{
+    body *b = w->bodies[i];
+    step_sync(w, i, t);
+    b->hold_v = b->v = v3(0, 0, 0);
+    body_set_angular_vel(b, v3(0, 0, 0));
+    restart(w, i, t);
+}
+
 /* Answers pair k's contact at time t: the impulses of its points and of every
  * lasting contact of the objects pressed together with them, answered together;
- * then the modes and flights of all of them. */
+ * then the modes and flights of all of them.  A held object (hold.h) is not
+ * moved by them: it pushes with its velocity as an infinite mass would, and stops
+ * against a static or held object, or one that cannot give way. */
 static void answer_contact(world *w, long k, double t, double t_end)
 {
     pair *p = &w->pairs.p[k];
     int seeds[2], ns = 0, *list = w->step.list;
-    if (!body_is_static(w->bodies[p->a])) seeds[ns++] = p->a;
-    if (!body_is_static(w->bodies[p->b])) seeds[ns++] = p->b;
+    bool ha = w->bodies[p->a]->held, hb = w->bodies[p->b]->held, hand = ha || hb;
+    if (!body_is_static(w->bodies[p->a]) && !ha) seeds[ns++] = p->a;
+    if (!body_is_static(w->bodies[p->b]) && !hb) seeds[ns++] = p->b;
+    if (hand && ns == 0) {
+        w->time = t;
+        if (ha) hold_stop(w, p->a, t);
+        if (hb) hold_stop(w, p->b, t);
+        return;
+    }
     int n = rest_component(w, seeds, ns, list);
     int *mine = malloc((size_t)(n > 0 ? n : 1) * sizeof *mine);
     if (!mine) return;
     memcpy(mine, list, (size_t)n * sizeof *mine);
     for (int j = 0; j < n; j++) step_sync(w, mine[j], t);
+    int held = ha ? p->a : hb ? p->b : -1;
+    if (hand) step_sync(w, held, t);
     w->time = t;
     /* the rows: the contact's own, then the lasting contacts' */
     impulse_row rows[IMPULSE_MAX_ROWS];
@@ -199,6 +221,8 @@ static void answer_contact(world *w, long k, double t, double t_end)
         if (r < own) closing = d_max(closing, -u[r]);
         /* a rebound too slow to see is no rebound: they stay in contact */
         if (rows[r].e < 1 && rows[r].e * -u[r] < SIM_BOUNCE_SPEED) rows[r].e = 0;
+        /* but nothing stays on a held object: it parts at that speed */
+        if (hand && r < own && rows[r].e == 0) u[r] -= SIM_BOUNCE_SPEED;
     }
     bool solved = impulse_solve(rows, nr, w->step.now, mobile, u, lambda, w->step.lcp) == 0;
     if (!solved && own < nr) /* too many: the contact's own points alone */
@@ -215,7 +239,8 @@ static void answer_contact(world *w, long k, double t, double t_end)
             for (int r = 0; r < nr; r++) lambda[r] += l2[r];
     }
     for (int j = 0; j < n; j++) mobile[mine[j]] = false;
-    if (!solved) w->st.restarts++;
+    if (!solved && hand) hold_stop(w, held, t); /* what it pushes cannot give way */
+    else if (!solved) w->st.restarts++;
     /* the event: the contact's own impulses */
     double j_sum = 0;
     vec3 at = v3(0, 0, 0);
@@ -228,15 +253,17 @@ static void answer_contact(world *w, long k, double t, double t_end)
         vec3 nab = w->pairs.hits[k].r.normal; /* from b to a */
         world_event(w, &(sim_event){t, p->a, p->b, v3_scale(at, 1 / j_sum), nab, j_sum, closing});
     }
-    /* they stay in contact where a point of theirs no longer moves apart */
+    /* they stay in contact where a point of theirs no longer moves apart (never
+     * with a held object: each of its contacts is a collision) */
     p->hit = w->pairs.hits[k].cache;
-    for (int r = 0; r < own; r++) {
+    for (int r = 0; r < own && !hand; r++) {
         /* (a lossy contact that opens too slowly to see a rebound: none) */
         double open = rows[r].e < 1 || e < 1 ? SIM_BOUNCE_SPEED : 1e3 * SIM_SPEED_ROUND * scale;
         if (impulse_speed(&rows[r], w->step.now) <= open) p->touching = true;
     }
     rest_classify(w, mine, n);
     for (int j = 0; j < n; j++) restart(w, mine[j], t);
+    if (hand) restart(w, held, t);
     begin_clusters(w, mine, n, t, t_end);
     free(mine);
 }
@@ -412,7 +439,7 @@ static void find_contacts(world *w)
     for (long k = 0; k < w->pairs.n; k++) {
         pair *p = &w->pairs.p[k];
         body *a = w->bodies[p->a], *b = w->bodies[p->b];
-        if (!a->moved && !b->moved) continue;
+        if ((!a->moved && !b->moved) || a->held || b->held) continue; /* (hold.h) */
         closest_result r = pair_query(w, p, a, b);
         if (r.status == CLOSEST_INVALID) continue;
         double touch = touch_of(a, b);
