@@ -14,6 +14,8 @@
 
 #include <assert.h>
 
+#include "hold.h"
+
 /* |w|^2 below this fraction of a spin's: the spin has no part off the normal
  * (rounding). */
 #define SPIN_ROUND 1e-24
@@ -119,6 +121,10 @@ static void limit_speeds(body *b, double max_linear, double max_angular)
 void flight_fly(body *b, double h, vec3 a, double max_linear, double max_angular)
 {
     assert(h >= 0 && b->state == STATE_DYNAMIC);
+    if (b->held) { /* the hand moves it (hold.h), within the limits already */
+        hold_fly(b, h);
+        return;
+    }
     vec3 c0 = body_com(b);
     vec3 d = v3_add(v3_scale(b->v, h), v3_scale(a, 0.5 * h * h));
     vec3 v = v3_mad(b->v, a, h);

@@ -16,7 +16,7 @@
 #include "vmath.h"
 
 /* Free flight of dynamic body b over h seconds under acceleration a, then the
- * speed limits. */
+ * speed limits; a held body (hold.h) moves as the hand set it instead. */
 void flight_fly(body *b, double h, vec3 a, double max_linear, double max_angular);
 
 /* True when b slides on a support turning about the support's normal only (or
@@ -30,7 +30,8 @@ typedef struct {
 } flight_motion;
 
 /* Body b's motion now, a the acceleration it flies under: nothing for a static
- * or resting body; velocity and spin only for one that does not fly. */
+ * or resting body; velocity and spin only for one that does not fly; a held body
+ * (hold.h) turns at a constant rate. */
 static inline flight_motion flight_motion_of(const body *b, vec3 a)
 {
     flight_motion m = {body_com(b), v3(0, 0, 0), v3(0, 0, 0), v3(0, 0, 0), v3(0, 0, 0)};
@@ -39,7 +40,7 @@ static inline flight_motion flight_motion_of(const body *b, vec3 a)
     m.w = b->w;
     if (b->state != STATE_DYNAMIC) return m;
     m.a = a;
-    if (v3_len2(b->w) != 0) m.dw = v3_neg(body_inertia_inv_mulv(b, v3_cross(b->w, b->L)));
+    if (v3_len2(b->w) != 0 && !b->held) m.dw = v3_neg(body_inertia_inv_mulv(b, v3_cross(b->w, b->L)));
     return m;
 }
 

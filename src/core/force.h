@@ -7,6 +7,7 @@
 #define VROC_FORCE_H
 
 #include "body.h"
+#include "hold.h"
 #include "vmath.h"
 
 /* The acceleration of force f: f.dir / |f.dir| * f.amount (zero when none).
@@ -20,9 +21,11 @@ static inline vec3 force_accel(dir_amount f)
 }
 
 /* The acceleration of force f as body b feels it: less the part that presses it
- * onto the support it slides on. */
+ * onto the support it slides on.  A held body (hold.h) feels none: its centre of
+ * mass accelerates only as it turns about the hand. */
 static inline vec3 force_on(dir_amount f, const body *b)
 {
+    if (b->held) return hold_accel(b);
     vec3 a = force_accel(f);
     if (b->slide < 0) return a;
     double an = v3_dot(a, b->slide_n);

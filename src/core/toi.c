@@ -75,12 +75,13 @@ static double vertex_plane_time(const body *m, const flight_motion *mm, const fl
 
 /* Body b (object i, flown) as it moves at that instant: a flight turns an object
  * at the angular momentum it starts with, and only its end is held to
- * max_angular, so the spin that moves it is the start's.  b itself, or scratch
+ * max_angular, so the spin that moves it is the start's (a held body's spin is
+ * its own).  b itself, or scratch
  * (a copy of object i) given that spin when it differs. */
 static const body *moving(const world *w, int i, const body *b, body *scratch)
 {
     vec3 L = w->step.snap[i].L;
-    if (b->state != STATE_DYNAMIC || flight_spins_on_support(b) ||
+    if (b->state != STATE_DYNAMIC || b->held || flight_spins_on_support(b) ||
         (L.x == b->L.x && L.y == b->L.y && L.z == b->L.z))
         return b;
     body_copy_state(scratch, b);
