@@ -63,15 +63,15 @@ static vec3 still_accel(const world *w, const body *b)
 }
 
 /* Moves the dynamic objects of the pair apart along n until they are sep apart
- * (they are gap apart now), the lighter one more, so that their centre of mass
+ * (they are gap apart now; a held one does not move), the lighter one more, so that their centre of mass
  * stays; when both move, their spins take back the angular momentum the shift
  * adds (s n x (va - vb)), so that it stays too. */
 static void separate(body *a, body *b, vec3 n, double gap, double sep)
 {
     double need = sep - gap;
     if (need <= 0) return;
-    double ia = a->state == STATE_DYNAMIC ? a->inv_mass : 0;
-    double ib = b->state == STATE_DYNAMIC ? b->inv_mass : 0;
+    double ia = a->state == STATE_DYNAMIC && !a->held ? a->inv_mass : 0;
+    double ib = b->state == STATE_DYNAMIC && !b->held ? b->inv_mass : 0;
     if (ia + ib == 0) return;
     double s = need / (ia + ib);
     a->x = v3_mad(a->x, n, s * ia);
@@ -83,6 +83,41 @@ static void separate(body *a, body *b, vec3 n, double gap, double sep)
         body_update_w(a);
         body_update_w(b);
     }
+}
+
+/* A held body that cannot go on stops where it is, until the hand sets its
+ * motion again (hold.h). */
+static void hold_stop(body *h)
+{
+    h->hold_v = h->v = v3(0, 0, 0);
+    body_set_angular_vel(h, v3(0, 0, 0));
+}
+
+/* The collision of pair p, one of whose objects is held (hold.h), at contact
+ * point pt with restitution e: the held one has infinite mass and keeps its
+ * motion, and the other is answered as if struck by a moving wall; where the
+ * other cannot give way (static, held, or held by what it stands on or pinned
+ * against a still object, along the blow), the held one stops. */
+static void collide_held(world *w, pair *p, const closest_result *r, vec3 pt, double e)
+{
+    int hand = w->bodies[p->a]->held ? 1 : 2;
+    int oi = hand == 1 ? p->b : p->a;
+    body *a = w->bodies[p->a], *b = w->bodies[p->b], *o = w->bodies[oi];
+    vec3 push = hand == 1 ? v3_neg(r->normal) : r->normal; /* the blow on the other */
+    vec3 g = world_accel(w), up = v3_len2(g) > 0 ? v3_neg(v3_norm(g)) : v3(0, 0, 0), s;
+    bool firm = body_is_static(o) || o->held || rest_pinned(w, oi, push, &s) ||
+                (v3_dot(push, up) < -SIM_SUPPORT_COS && rest_holds(o, v3_neg(push), &s));
+    if (firm) {
+        hold_stop(hand == 1 ? a : b);
+        return;
+    }
+    if (o->state == STATE_RESTING) rest_wake(w, oi);
+    contact c = contact_respond(a, b, pt, r->normal, e, hand, v3(0, 0, 0));
+    if (c.impulse > 0) {
+        w->st.collisions++;
+        world_event(w, &(sim_event){w->time, p->a, p->b, c.point, c.normal, c.impulse, c.speed});
+    }
+    if (r->distance < SIM_SEPARATION) separate(a, b, r->normal, r->distance, SIM_SEPARATION);
 }
 
 /* Answers the collision of pair p now: the impulse, the separation, the log; and
@@ -110,6 +145,10 @@ static void collide(world *w, pair *p)
      * it */
     if (contact_closing_speed(a, b, pt, r.normal) <= 0) pt = contact_closing_corner(a, b, &r, tol, pt);
     double e = d_min(a->elasticity, b->elasticity);
+    if (a->held || b->held) {
+        collide_held(w, p, &r, pt, e);
+        return;
+    }
     vec3 g = world_accel(w);
     vec3 up = v3_len2(g) > 0 ? v3_neg(v3_norm(g)) : v3(0, 0, 0);
     /* a slow collision under gravity (the collision envelope of Mirtich and
@@ -183,7 +222,10 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
     p->along = false;
     w->sched.parked[i] = false;
     if (!pair_moves(w, p)) return HUGE_VAL;
-    if (w->set.collision_heap && (rest_slides_clear(w, p->a, p->b) || rest_slides_clear(w, p->b, p->a)))
+    /* a held object's pair is checked every step: no bound holds the hand */
+    bool hand = w->bodies[p->a]->held || w->bodies[p->b]->held;
+    if (w->set.collision_heap && !hand &&
+        (rest_slides_clear(w, p->a, p->b) || rest_slides_clear(w, p->b, p->a)))
         return HUGE_VAL;
     /* found touching in this step from the same flights (flight numbers are new
      * each step), it touches still, and its first contact is known: no query, and
@@ -196,7 +238,7 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
      * from there holds through a collision later in the step that turns them
      * back, so that such a collision leaves the pair's time as it is. */
     p->far = false;
-    if (w->set.collision_heap && !known) {
+    if (w->set.collision_heap && !known && !hand) {
         if (sched_boxes_apart(w, p->a, p->b)) { /* parked until a box is made again */
             w->sched.parked[i] = true;
             return HUGE_VAL;
@@ -225,6 +267,10 @@ static double check_pair(world *w, long i, double now, double t_end, pair **firs
     if (!known) r = pair_query_apart(w, p, a, b);
     if (r.status != CLOSEST_PENETRATING) {
         if (!w->set.collision_heap) return HUGE_VAL; /* without the heap no time is kept */
+        if (hand) { /* the next step's end */
+            w->sched.bound[i].dist = 0;
+            return nextafter(t_end, HUGE_VAL);
+        }
         /* the bound from speeds, kept for a collision that changes an object, and
          * the one along the normal, later where they do not come on straight */
         double next = sched_predict_kept(w, a, b, r.distance, 0, 0, &w->sched.bound[i]);
@@ -272,6 +318,10 @@ static pair *check_due(world *w, double now, double t_end, double *when)
     while ((i = sched_top(w, &next)) >= 0 && next <= t_end) {
         if (i >= w->pairs.n) { /* an object's box ends: made again from its flight */
             int k = (int)(i - w->pairs.n);
+            if (w->bodies[k]->held) { /* its box holds everything (hold_set) */
+                sched_set(w, i, HUGE_VAL);
+                continue;
+            }
             bool moves = w->step.snap[k].state == STATE_DYNAMIC;
             sched_box_renew(w, k, step_at_start(w, k), moves ? w->step.snap_t[k] : next, next, t_end);
             continue;
@@ -349,12 +399,12 @@ static void repredict(world *w, long k, int i, const body *pre, double moved, do
  * its kept bound (repredict), unless the collision turned the object or moved it
  * more than a separation: it is due then.  Parked pairs wait on: the object's
  * box still holds it (sched_box_holds), or is made again from t, which parks
- * them or makes them due. */
+ * them or makes them due.  A held object's pairs (hold.h) are due at once. */
 static void reschedule(world *w, int i, const body *a, const body *b, double t, double t_end)
 {
     double acc = v3_len(world_body_accel(w, a)), moved = v3_len(v3_sub(a->x, b->x));
     bool turned = a->q.w != b->q.w || a->q.x != b->q.x || a->q.y != b->q.y || a->q.z != b->q.z;
-    if (a->state != STATE_DYNAMIC ||
+    if (a->state != STATE_DYNAMIC || a->held || b->held ||
         (b->state == STATE_DYNAMIC && v3_len(world_body_accel(w, b)) > acc)) {
         sched_object_due(w, i, t);
         return;
@@ -367,6 +417,10 @@ static void reschedule(world *w, int i, const body *a, const body *b, double t, 
     for (long j = w->sched.obj_first[i]; j < w->sched.obj_first[i + 1]; j++) {
         long k = w->sched.obj_pairs[j];
         const pair *q = &w->pairs.p[k];
+        if (w->bodies[w->sched.obj_other[j]]->held) { /* checked every step */
+            if (q->next > t) sched_set(w, k, t);
+            continue;
+        }
         if (w->sched.parked[k]) continue;
         bool keep = q->checked <= t; /* found from speeds at an earlier instant */
         if (keep) keep = v <= (q->a == i ? q->speed_a : q->speed_b) + acc * (t - q->checked);
@@ -442,11 +496,11 @@ static void validate(const world *w)
 }
 #endif
 
-/* One internal step of h seconds (thesis 3.4.2, steps 3 to 5); its scratch is
- * in place (sim_prepare). */
-static void internal_step(world *w, double h)
+/* One internal step, from now to t_end (thesis 3.4.2, steps 3 to 5); its
+ * scratch is in place (sim_prepare). */
+static void internal_step(world *w, double t_end)
 {
-    double now = w->time, t_end = now + h;
+    double now = w->time;
     step_save(w, now);
     for (int n = 0;; n++) {
         step_fly_to_end(w, t_end);
@@ -490,7 +544,7 @@ int sim_frame(world *w, char *err, size_t errlen)
     w->nevents = 0;
     rest_wake_unsupported(w, NULL);
     for (long k = 0; k < n; k++) {
-        internal_step(w, h);
+        internal_step(w, w->time + h);
         w->st.subframes++;
     }
     rest_frame_end(w);
