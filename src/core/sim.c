@@ -526,7 +526,32 @@ int sim_prepare(world *w)
     return 0;
 }
 
+/* Calls the hook at each instant it asks for before t_end (the end of the
+ * internal step under way): the step is cut there, and every object brought to
+ * it.  What the hook changed is seen by the rest of the step (step_save starts
+ * every flight afresh); objects resting on what it made move wake. */
+static void hook_until(world *w, const sim_hook *hook, double t_end)
+{
+    int calls = 0; /* at one instant: a hook that asks again and again is let go */
+    double last = w->time;
+    for (;;) {
+        double tn = hook->next(hook->ctx, w);
+        if (!(tn < t_end)) return;
+        if (tn > w->time) internal_step(w, tn);
+        calls = w->time == last ? calls + 1 : 0;
+        last = w->time;
+        if (calls > SIM_MAX_COLLISIONS_PER_STEP) return;
+        hook->at(hook->ctx, w);
+        rest_wake_unsupported(w, NULL);
+    }
+}
+
 int sim_frame(world *w, char *err, size_t errlen)
+{
+    return sim_frame_hooked(w, NULL, err, errlen);
+}
+
+int sim_frame_hooked(world *w, const sim_hook *hook, char *err, size_t errlen)
 {
     long n = world_subframes(w);
     if (n > SIM_MAX_SUBFRAMES) {
@@ -544,7 +569,9 @@ int sim_frame(world *w, char *err, size_t errlen)
     w->nevents = 0;
     rest_wake_unsupported(w, NULL);
     for (long k = 0; k < n; k++) {
-        internal_step(w, w->time + h);
+        double t_end = w->time + h;
+        if (hook) hook_until(w, hook, t_end);
+        internal_step(w, t_end);
         w->st.subframes++;
     }
     rest_frame_end(w);
