@@ -40,8 +40,7 @@ cmd_status cmd_list(shell *sh, const stmt *st)
     (void)st;
     for (int i = 0; i < sh->w.n; i++) {
         const body *b = sh->w.bodies[i];
-        fprintf(sh->out, "%-20s %-13s %s\n", b->name, body_type_name(b->sp.kind),
-                log_state_name(b->state));
+        fprintf(sh->out, "%-20s %-13s %s\n", b->name, body_type_name(b->sp.kind), log_body_state(b));
     }
     return CMD_OK;
 }
@@ -70,6 +69,7 @@ cmd_status cmd_save(shell *sh, const stmt *st)
         body_write(f, sh->w.bodies[i]);
         fputc('\n', f);
     }
+    hand_write(f, sh);
     if (sh->current >= 0) fprintf(f, "# the current object\n%s %s\n",
                                   body_type_name(sh->w.bodies[sh->current]->sp.kind),
                                   sh->w.bodies[sh->current]->name);

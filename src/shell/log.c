@@ -63,6 +63,11 @@ const char *log_state_name(body_state s)
     return "?";
 }
 
+const char *log_body_state(const body *b)
+{
+    return b->held ? "held" : log_state_name(b->state);
+}
+
 void log_trace_frame(shell_logs *l, const world *w)
 {
     if (!l->trace) return;
@@ -72,8 +77,7 @@ void log_trace_frame(shell_logs *l, const world *w)
                 "%ld,%.17g,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,"
                 "%.17g,%.17g,%.17g,%s\n",
                 w->frame, w->time, b->name, b->x.x, b->x.y, b->x.z, b->q.w, b->q.x, b->q.y,
-                b->q.z, b->v.x, b->v.y, b->v.z, b->w.x, b->w.y, b->w.z,
-                log_state_name(b->state));
+                b->q.z, b->v.x, b->v.y, b->v.z, b->w.x, b->w.y, b->w.z, log_body_state(b));
     }
     fflush(l->trace);
 }

@@ -29,6 +29,10 @@
     {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SHELL, offsetof(shell_settings, field), cmd_setting}
 #define SHELLF(name, arg, range, lo, hi, field, fn) \
     {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SHELL, offsetof(shell_settings, field), fn}
+#define HAND(name, arg, range, lo, hi, field) \
+    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_HAND, offsetof(hand_settings, field), cmd_setting}
+#define HANDF(name, arg, range, lo, hi, field, fn) \
+    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_HAND, offsetof(hand_settings, field), fn}
 /* a setting kept elsewhere (the logs): its handler knows where */
 #define OTHER(name, arg, fn) {name, FORM_SETTING, arg, 0, 0, 0, NULL, 0, OWN_NONE, 0, fn}
 #define CHOICE(name, choices, fn) {name, FORM_SETTING, VAL_CHOICE, 0, 0, 0, choices, 0, OWN_VIEW, 0, fn}
@@ -107,12 +111,21 @@ const command command_table[] = {
     VIEW("background", VAL_COLOR, 0, 0, 0, background),
     CHOICE("real", "solid|wire|hidden", cmd_real),
     VIEW("record", VAL_ONOFF, 0, 0, 0, record),
-    SHELL("hand", VAL_VECTOR, 0, 0, 0, hand),
-    SHELL("hand_rotate", VAL_VECTOR_ANGLE, R_NONZERO_VEC, 0, 0, hand_rotate),
-    SHELL("trigger", VAL_ONOFF, 0, 0, 0, trigger),
+    HANDF("hand", VAL_VECTOR, 0, 0, 0, hand, cmd_hand),
+    HANDF("hand_rotate", VAL_VECTOR_ANGLE, R_NONZERO_VEC, 0, 0, hand_rotate, cmd_hand),
+    HANDF("trigger", VAL_ONOFF, 0, 0, 0, trigger, cmd_trigger),
     ACT("select", ARG_OPT_ONOFF, cmd_select),
     ACT("reselect", ARG_NONE, cmd_reselect),
-    SHELLF("tracker", VAL_FILE_OR_OFF, 0, 0, 0, tracker, cmd_tracker),
+    HAND("reach", VAL_NUMBER, R_RANGE, 0, INF, reach),
+    HAND("fly_speed", VAL_NUMBER, R_RANGE, 0, INF, fly_speed),
+    HANDF("tracker", VAL_FILE_OR_OFF, 0, 0, 0, tracker, cmd_tracker),
+    {"tracker_time", FORM_SETTING, VAL_NUMBER, R_RANGE, 0, INF, NULL, 0, OWN_NONE, 0, cmd_tracker_time},
+    HANDF("hand_log", VAL_FILE_OR_OFF, 0, 0, 0, hand_log, cmd_hand_log),
+    {"grip", FORM_SETTING, ARG_NAME, 0, 0, 0, "off|none|fly|panel|time_step|collision_dist", 0, OWN_NONE, 0,
+     cmd_grip},
+    HAND("panel", VAL_ONOFF, 0, 0, 0, panel),
+    HAND("panel_at", VAL_VECTOR, 0, 0, 0, panel_at),
+    HAND("panel_rotate", VAL_VECTOR_ANGLE, R_NONZERO_VEC, 0, 0, panel_rotate),
 };
 
 const int command_count = (int)(sizeof command_table / sizeof command_table[0]);
