@@ -53,7 +53,8 @@ void hand_init(hand *h, hand_say say, void *ctx)
     h->q = q_identity();
     feed_init(&h->feed);
     h->held = h->last_held = h->make_current = -1;
-    h->slider = h->slid = PANEL_OFF;
+    h->slider = PANEL_OFF;
+    h->slid[0] = h->slid[1] = NAN;
     h->say = say;
     h->say_ctx = ctx;
 }
@@ -227,7 +228,7 @@ static bool clear_at(const world *w, int i, vec3 x, quat q)
 
 /* The hand moved between frames: a held object waits for the next frame to be
  * carried to it, or, when time stands still (jump), jumps there at once where
- * nothing is in the way, and stands still with the hand. */
+ * nothing is in the way. */
 static void follow(hand *h, world *w, bool jump)
 {
     if (h->grip != GRIP_OBJECT || held_gone(h, w) || !jump) return;
@@ -235,7 +236,7 @@ static void follow(hand *h, world *w, bool jump)
     quat q;
     held_place(h, h->p, h->q, &x, &q);
     if (!near_pose(w->bodies[h->held], x, q) && clear_at(w, h->held, x, q)) hold_place(w, h->held, x, q);
-    hold_set(w, h->held, (hold_motion){h->p, v3(0, 0, 0), v3(0, 0, 0)});
+    hold_set(w, h->held, (hold_motion){h->p, h->mv, h->mw});
 }
 
 /* The panel follows the hand that holds it, and a dragged slider takes the value
@@ -253,18 +254,17 @@ static void panel_follow(hand *h)
         h->set.panel_rotate = (dir_amount){axis, angle};
     }
     if (h->grip == GRIP_SLIDER) {
-        double lo = h->slider == PANEL_TIME_STEP ? 0 : 0.001;
-        h->slider_value = panel_slider_value(h->set.panel_at, hand_panel_q(h), h->p, lo);
-        h->slid = h->slider;
+        bool ts = h->slider == PANEL_TIME_STEP;
+        h->slid[!ts] = panel_slider_value(h->set.panel_at, hand_panel_q(h), h->p, ts ? 0 : 0.001);
     }
 }
 
-/* The setting of a slider moved since the last call takes its value. */
+/* The settings of the sliders moved since the last call take their values. */
 static void apply_slider(hand *h, world *w)
 {
-    if (h->slid == PANEL_TIME_STEP) w->set.time_step = h->slider_value;
-    if (h->slid == PANEL_COLLISION_DIST) w->set.collision_dist = h->slider_value;
-    h->slid = PANEL_OFF;
+    if (!isnan(h->slid[0])) w->set.time_step = h->slid[0];
+    if (!isnan(h->slid[1])) w->set.collision_dist = h->slid[1];
+    h->slid[0] = h->slid[1] = NAN;
 }
 
 /* The hand moved: what it holds follows, outside frames at once. */
@@ -305,8 +305,7 @@ static void grab(hand *h, world *w, int i)
     h->grip = GRIP_OBJECT;
     h->held = h->last_held = h->make_current = i;
     grip_from(h, b->x, b->q);
-    bool moving = h->in_frame;
-    hold_set(w, i, (hold_motion){h->p, moving ? h->mv : v3(0, 0, 0), moving ? h->mw : v3(0, 0, 0)});
+    hold_set(w, i, (hold_motion){h->p, h->mv, h->mw});
 }
 
 /* The trigger goes down: a control, the panel, an object, or flying. */
@@ -390,8 +389,7 @@ static bool same_row(const tracker_row *a, const tracker_row *b)
 static void log_row(hand *h, bool always)
 {
     if (!h->log) return;
-    double c = h->in_frame ? h->fly_from : h->clock;
-    tracker_row r = {c - h->log_start, h->p, h->q, h->set.trigger, h->button};
+    tracker_row r = {h->fly_from - h->log_start, h->p, h->q, h->set.trigger, h->button};
     if (!always && h->have_logged && same_row(&r, &h->logged)) return;
     if (h->have_logged && r.t < h->logged.t) r.t = h->logged.t;
     tracker_write_row(h->log, &r);
@@ -410,7 +408,7 @@ int hand_log_open(hand *h, const char *path, char *err, size_t errlen)
     hand_log_close(h);
     fprintf(f, "%s\n", TRACKER_HEADER);
     h->log = f;
-    h->log_start = h->clock;
+    h->log_start = h->fly_from;
     h->have_logged = false;
     snprintf(h->set.hand_log, sizeof h->set.hand_log, "%s", path);
     log_row(h, true);

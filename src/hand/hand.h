@@ -100,8 +100,8 @@ typedef struct hand {
     int last_held;          /* for reselect, or -1 */
     int make_current;       /* an object to make current (hand_take_current), or -1 */
     bool presses[PANEL_CONTROLS]; /* buttons pressed, for the caller to run */
-    double slider_value;    /* GRIP_SLIDER: the value under the hand, */
-    panel_part slid;        /*   which its setting gets (or PANEL_OFF: none) */
+    double slid[2];         /* the values the sliders were dragged to, which their
+                             * settings get at the end of the frame (NAN: none) */
 
     vec3 fly;               /* head movement not yet given (hand_take_fly) */
     double fly_from;        /* the clock up to which fly counted */
