@@ -10,8 +10,9 @@
  * update, the hand's own when the object is where the hand has it (within
  * HAND_SYNC), or else the motion that brings it there by the next update (it was
  * stopped against something, or the hand went faster than the speed limits).
- * Outside frames (time stands still) what is held jumps with the hand, where
- * nothing is in the way.
+ * Where the hand jumps (a statement, a tick of the wall clock while time stands
+ * still, a row of a live feed), what it holds jumps with it, where nothing is in
+ * the way; otherwise the next frame carries it back to the hand.
  */
 #include "hand.h"
 
@@ -227,7 +228,7 @@ static bool clear_at(const world *w, int i, vec3 x, quat q)
 }
 
 /* The hand moved between frames: a held object waits for the next frame to be
- * carried to it, or, when time stands still (jump), jumps there at once where
+ * carried to it, or, where the hand jumped (jump), jumps there at once where
  * nothing is in the way. */
 static void follow(hand *h, world *w, bool jump)
 {
@@ -614,7 +615,7 @@ static double next_update(const hand *h)
 
 void hand_frame_begin(hand *h, world *w)
 {
-    hand_poll(h, w, false);
+    hand_poll(h, w);
     h->in_frame = false;
     h->jump = false;
     act_rows(h, w);
@@ -678,8 +679,9 @@ typedef struct {
     world *w;
 } feed_ctx;
 
-/* A row of the live feed: the hand jumps there; its velocity is the change from
- * the row before over their times. */
+/* A row of the live feed: the hand jumps there, and what it holds with it where
+ * nothing is in the way; its velocity is the change from the row before over
+ * their times. */
 static void feed_row(void *ctx, const tracker_row *r)
 {
     hand *h = ((feed_ctx *)ctx)->h;
@@ -703,13 +705,13 @@ static void feed_bad(void *ctx, const char *msg)
     tell(((feed_ctx *)ctx)->h, HAND_ERROR, "tracker: %s", msg);
 }
 
-void hand_poll(hand *h, world *w, bool jump)
+void hand_poll(hand *h, world *w)
 {
     if (h->feed.fd < 0) return;
     feed_ctx ctx = {h, w};
     char err[FEED_PATH_MAX + 128];
     h->in_frame = false;
-    h->jump = jump;
+    h->jump = true;
     feed_state s = feed_read(&h->feed, feed_row, feed_bad, &ctx, err, sizeof err);
     if (s == FEED_WAITING) return;
     if (s == FEED_ENDED)

@@ -178,10 +178,9 @@ void hand_wall(hand *h, world *w, double dt);
 
 /* A live feed's descriptor for select(), or -1. */
 int hand_feed_fd(const hand *h);
-/* Reads the live feed between frames: rows take effect as they come.  jump: time
- * stands still, and what the hand holds jumps with it (else the next frame
- * carries it there). */
-void hand_poll(hand *h, world *w, bool jump);
+/* Reads the live feed between frames: rows take effect as they come, and what the
+ * hand holds jumps with it where nothing is in the way. */
+void hand_poll(hand *h, world *w);
 
 /* True when something moves on the tracker clock while time stands still (a
  * file still playing, or flying): the prompt should wake to call hand_wall. */

@@ -28,6 +28,7 @@
 
 static shell *g_sh;     /* the shell readline's callbacks work on */
 static bool g_done;     /* quit or end of input */
+static double g_wall;   /* the wall clock up to which the hand's clock ran */
 static char g_history[4096];
 
 static void on_sigint(int sig)
@@ -55,8 +56,24 @@ static void mend_line(shell *sh)
     rl_redisplay();
 }
 
+/* How often the prompt wakes while the hand moves on the wall clock, s. */
+#define HAND_TICK 0.02
+
+/* While time stands still, the hand's clock runs on the wall clock, up to now. */
+static void hand_tick(shell *sh)
+{
+    double now = shell_clock();
+    if (!sh->running) {
+        hand_wall(&sh->hand, &sh->w, now - g_wall);
+        shell_after_hand(sh);
+        mend_line(sh);
+    }
+    g_wall = now;
+}
+
 static void on_line(char *line)
 {
+    hand_tick(g_sh); /* what the statement sees of the hand is up to date */
     g_sh->at_prompt = false;
     if (!line) { /* Ctrl-D */
         g_done = true;
@@ -73,22 +90,6 @@ static void on_line(char *line)
     }
     free(line);
     g_sh->at_prompt = !g_done;
-}
-
-/* How often the prompt wakes while the hand moves on the wall clock, s. */
-#define HAND_TICK 0.02
-
-/* While time stands still, the hand's clock runs on the wall clock: from *last
- * to now. */
-static void hand_tick(shell *sh, double *last)
-{
-    double now = shell_clock();
-    if (!sh->running) {
-        hand_wall(&sh->hand, &sh->w, now - *last);
-        shell_after_hand(sh);
-        mend_line(sh);
-    }
-    *last = now;
 }
 
 /* Advances the frames that are due in real time; returns seconds to the next. */
@@ -128,12 +129,13 @@ static int loop_readline(shell *sh)
     install_sigint();
     rl_callback_handler_install("vroc> ", on_line);
     sh->at_prompt = true;
-    double next = 0, wall = shell_clock();
+    double next = 0;
+    g_wall = shell_clock();
     while (!g_done) {
+        hand_tick(sh); /* it may press Start */
         double wait = run_due_frames(sh, &next);
         mend_line(sh);
         if (!sh->running) next = 0;
-        hand_tick(sh, &wall);
         if (hand_busy(&sh->hand) && !sh->running && (wait < 0 || wait > HAND_TICK)) wait = HAND_TICK;
         int in = fileno(rl_instream ? rl_instream : stdin), feed = hand_feed_fd(&sh->hand);
         fd_set fds;
@@ -163,7 +165,7 @@ static int loop_readline(shell *sh)
             continue;
         }
         if (n > 0 && feed >= 0 && FD_ISSET(feed, &fds)) { /* rows act as they come */
-            hand_poll(&sh->hand, &sh->w, !sh->running);
+            hand_poll(&sh->hand, &sh->w);
             shell_after_hand(sh);
             mend_line(sh);
         }
