@@ -264,4 +264,15 @@ case "$out" in *"time_step = 0.2"*"select on"*) ok "panel-demo: the slider set t
     *) notok "panel-demo: slider and Select" "$out" ;; esac
 check "panel-demo: the hand grabbed the ball and threw it" "$TMP/pd.csv" '
     $3 == "ball" && $17 == "held" { held = 1 } $3 == "ball" { y = $5 } END { exit !(held && y > 2) }'
+
+# ---- no invalid access and no leak under valgrind (the sanitizer build has its own) ----
+if [ "${BUILD:-build}" != build-san ] && command -v valgrind >/dev/null 2>&1; then
+    VG="valgrind -q --error-exitcode=3 --leak-check=full --errors-for-leak-kinds=definite,indirect"
+    out=$($VG "$VROC" -b -q "$S/bounce-throw.vroc" -c "hand_log = $TMP/vg.csv; run 14; save $TMP/vg.vroc" \
+        -c "restart; read $TMP/vg.vroc; tracker = $TMP/bad.csv" 2>&1 >/dev/null)
+    [ $? -ne 3 ] && ok "valgrind: a thrown ball, the hand log, save and read, a bad tracker file" ||
+        notok "valgrind: the hand" "$(printf '%s' "$out" | head -20)"
+    out=$($VG "$VROC" -b -q "$S/panel-demo.vroc" -c "run 40; delete ball; grip = panel; restart" 2>&1 >/dev/null)
+    [ $? -ne 3 ] && ok "valgrind: the panel by hand" || notok "valgrind: the panel by hand" "$(printf '%s' "$out" | head -20)"
+fi
 exit 0
