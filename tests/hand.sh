@@ -104,30 +104,26 @@ n=$(awk 'END { print NR - 1 }' "$TMP/press-events.csv")
 
 # ---- fly ----
 # Outside select mode, the trigger flies head and look_at at fly_speed along the
-# hand's +x: turned 0.7 rad about z, for 0.55 s at 2 m/s: 1.1 (cos 0.7, sin 0.7, 0).
+# hand's +x: turned 0.7 rad about z, for 0.5 s at 2.2 m/s: 1.1 (cos 0.7, sin 0.7, 0).
 # Then turning at 2 rad/s about z from 0.7, for 0.5 s: the integral of the turning
 # direction, (v / w) (sin(0.7 + w T) - sin 0.7, cos 0.7 - cos(0.7 + w T), 0).
-cat > "$TMP/fly.csv" <<EOF
-$H
-0,0,0,0,$(awk 'BEGIN { printf "%.17g,0,0,%.17g", cos(0.35), sin(0.35) }'),1,0
-0.55,0,0,0,$(awk 'BEGIN { printf "%.17g,0,0,%.17g", cos(0.35), sin(0.35) }'),0,0
-EOF
-"$VROC" -b -q -c "fly_speed = 2; tracker = $TMP/fly.csv; run 10; show" > "$TMP/fly-out" 2>&1
-check "fly: the head moves fly_speed t along where the hand points" "$TMP/fly-out" -F'[(), ]+' '
-    /^head = / { hx = $3; hy = $4; hz = $5 } /^look_at = / { lx = $3; ly = $4; lz = $5 }
-    END { ex = 1.1 * cos(0.7); ey = 1.1 * sin(0.7)
-          e = (hx-ex)^2 + (hy-ey)^2 + hz^2 + (lx-ex)^2 + (ly-1-ey)^2 + lz^2
-          if (e > 1e-24) { print hx, hy, hz, lx, ly, lz, "want", ex, ey; exit 1 } }'
-cat > "$TMP/fly2.csv" <<EOF
-$H
-0,0,0,0,$(awk 'BEGIN { printf "%.17g,0,0,%.17g", cos(0.35), sin(0.35) }'),1,0
-0.5,0,0,0,$(awk 'BEGIN { printf "%.17g,0,0,%.17g", cos(0.85), sin(0.85) }'),0,0
-EOF
-"$VROC" -b -q -c "fly_speed = 3; tracker = $TMP/fly2.csv; run 10; show" > "$TMP/fly-out" 2>&1
-check "fly: a turning hand flies the head along the integral of its turning direction" "$TMP/fly-out" -F'[(), ]+' '
-    /^head = / { hx = $3; hy = $4; hz = $5 }
-    END { ex = 1.5 * (sin(1.7) - sin(0.7)); ey = 1.5 * (cos(0.7) - cos(1.7))
-          if ((hx-ex)^2 + (hy-ey)^2 + hz^2 > 1e-24) { print hx, hy, hz, "want", ex, ey; exit 1 } }'
+# fly TEXT SPEED TURN X Y: the hand turned 0.7 rad about z, the trigger down from 0
+# to 0.5 s while it turns on to 0.7 + TURN, at fly_speed SPEED: head and look_at
+# must have moved by (X, Y, 0).
+fly() {
+    q() { awk -v a="$1" 'BEGIN { printf "%.17g,0,0,%.17g", cos(a / 2), sin(a / 2) }'; }
+    printf '%s\n0,0,0,0,%s,1,0\n0.5,0,0,0,%s,0,0\n' "$H" "$(q 0.7)" "$(q "$(awk -v t="$3" 'BEGIN { print 0.7 + t }')")" \
+        > "$TMP/fly.csv"
+    "$VROC" -b -q -c "fly_speed = $2; tracker = $TMP/fly.csv; run 10; show" > "$TMP/fly-out" 2>&1
+    check "$1" "$TMP/fly-out" -F'[(), ]+' -v ex="$4" -v ey="$5" '
+        /^head = / { hx = $3; hy = $4; hz = $5 } /^look_at = / { lx = $3; ly = $4; lz = $5 }
+        END { e = (hx-ex)^2 + (hy-ey)^2 + hz^2 + (lx-ex)^2 + (ly-1-ey)^2 + lz^2
+              if (e > 1e-24) { print hx, hy, hz, lx, ly, lz, "want", ex, ey; exit 1 } }'
+}
+fly "fly: the head moves fly_speed t along where the hand points" 2.2 0 \
+    "$(awk 'BEGIN { printf "%.17g", 1.1 * cos(0.7) }')" "$(awk 'BEGIN { printf "%.17g", 1.1 * sin(0.7) }')"
+fly "fly: a turning hand flies the head along the integral of its turning direction" 3 1 \
+    "$(awk 'BEGIN { printf "%.17g", 1.5 * (sin(1.7) - sin(0.7)) }')" "$(awk 'BEGIN { printf "%.17g", 1.5 * (cos(0.7) - cos(1.7)) }')"
 
 # ---- the tool panel, every control pressed from a tracker file ----
 # The panel at its default place: the sheet's point (x, y) is at world (x, 0.5,

@@ -6,27 +6,9 @@
 # replayed, does the same; Tab completes grip's words.  The test starts its own
 # tmux server (in its own folder) and stops it.
 . "$(dirname "$0")/lib.sh"
-if ! command -v tmux >/dev/null 2>&1; then
-    notok "tmux is installed (make deps installs it)"
-    exit 0
-fi
-export TMUX_TMPDIR="$TMP"
+tmux_ready || exit 0
 SES=vrochand$$
 trap 'tmux kill-server 2>/dev/null; rm -rf "$TMP"' EXIT
-screen() { tmux capture-pane -p -t "$SES" -S -80; }
-type_() { tmux send-keys -t "$SES" "$@"; }
-wait_for() { # PATTERN: up to 20 s (sanitizer builds are slow)
-    i=0
-    while [ $i -lt 200 ]; do
-        screen | grep -qF -- "$1" && return 0
-        sleep 0.1
-        i=$((i + 1))
-    done
-    return 1
-}
-check_screen() { # TEXT PATTERN
-    if wait_for "$2"; then ok "$1"; else notok "$1" "screen: $(screen | tail -8)"; fi
-}
 
 tmux -f /dev/null new-session -d -s "$SES" -x 160 -y 50 \
     "cd '$TMP' && HOME='$TMP' ASAN_OPTIONS='$ASAN_OPTIONS' '$VROC' -q; echo EXIT=\$?; sleep 30"

@@ -42,60 +42,51 @@ cmd_status cmd_select(shell *sh, const stmt *st)
     return CMD_OK;
 }
 
+/* A handler's answer: ok when rc is 0, else the error err under its command's
+ * name. */
+static cmd_status answer(shell *sh, const stmt *st, int rc, const char *err)
+{
+    if (rc == 0) return CMD_OK;
+    sh_error(sh, st, "%s: %s", st->cmd->name, err);
+    return CMD_ERROR;
+}
+
 cmd_status cmd_reselect(shell *sh, const stmt *st)
 {
     char err[256];
-    if (hand_reselect(&sh->hand, &sh->w, err, sizeof err) != 0) {
-        sh_error(sh, st, "reselect: %s", err);
-        return CMD_ERROR;
+    return answer(sh, st, hand_reselect(&sh->hand, &sh->w, err, sizeof err), err);
+}
+
+/* tracker and hand_log: a file the hand reads or writes, or off. */
+static cmd_status hand_file(shell *sh, const stmt *st,
+                            int (*open_file)(hand *, const char *, char *, size_t), void (*off)(hand *))
+{
+    if (st->n == 1) {
+        off(&sh->hand);
+        return CMD_OK;
     }
-    return CMD_OK;
+    char err[HAND_PATH_MAX + 400];
+    return answer(sh, st, open_file(&sh->hand, st->word, err, sizeof err), err);
 }
 
 cmd_status cmd_tracker(shell *sh, const stmt *st)
 {
-    if (st->n == 1) {
-        hand_tracker_off(&sh->hand);
-        return CMD_OK;
-    }
-    char err[HAND_PATH_MAX + 400];
-    if (hand_tracker(&sh->hand, st->word, err, sizeof err) != 0) {
-        sh_error(sh, st, "tracker: %s", err);
-        return CMD_ERROR;
-    }
-    return CMD_OK;
+    return hand_file(sh, st, hand_tracker, hand_tracker_off);
 }
 
 cmd_status cmd_tracker_time(shell *sh, const stmt *st)
 {
     char err[256];
-    if (hand_seek(&sh->hand, &sh->w, st->num[0], err, sizeof err) != 0) {
-        sh_error(sh, st, "tracker_time: %s", err);
-        return CMD_ERROR;
-    }
-    return CMD_OK;
+    return answer(sh, st, hand_seek(&sh->hand, &sh->w, st->num[0], err, sizeof err), err);
 }
 
 cmd_status cmd_hand_log(shell *sh, const stmt *st)
 {
-    if (st->n == 1) {
-        hand_log_close(&sh->hand);
-        return CMD_OK;
-    }
-    char err[HAND_PATH_MAX + 64];
-    if (hand_log_open(&sh->hand, st->word, err, sizeof err) != 0) {
-        sh_error(sh, st, "hand_log: %s", err);
-        return CMD_ERROR;
-    }
-    return CMD_OK;
+    return hand_file(sh, st, hand_log_open, hand_log_close);
 }
 
 cmd_status cmd_grip(shell *sh, const stmt *st)
 {
     char err[BODY_NAME_MAX + 200];
-    if (hand_set_grip(&sh->hand, &sh->w, st->word, err, sizeof err) != 0) {
-        sh_error(sh, st, "grip: %s", err);
-        return CMD_ERROR;
-    }
-    return CMD_OK;
+    return answer(sh, st, hand_set_grip(&sh->hand, &sh->w, st->word, err, sizeof err), err);
 }

@@ -57,12 +57,18 @@ static void triangle(double ax, double ay, double bx, double by, double cx, doub
     glEnd();
 }
 
-static void draw_pointer(const view_overlay *o)
+/* Pushes the model-view and moves it to the pose (x, q). */
+static void push_pose(vec3 x, quat q)
 {
     GLdouble m[16];
-    overlay_pose_matrix(o->hand_p, o->hand_q, m);
+    overlay_pose_matrix(x, q, m);
     glPushMatrix();
     glMultMatrixd(m);
+}
+
+static void draw_pointer(const view_overlay *o)
+{
+    push_pose(o->hand_p, o->hand_q);
     glColor3ub(255, 220, 110);
     const double L = POINTER_LENGTH, h = POINTER_HALF;
     const double base[4][2] = {{h, h}, {-h, h}, {-h, -h}, {h, -h}};
@@ -97,12 +103,8 @@ static void icon(view_icon k, double x, double y, double s)
     case VIEW_ICON_SELECT: /* a pointer aimed up and to the left */
         triangle(x - h, y + h, x + 0.2 * h, y - 0.1 * h, x - 0.1 * h, y + 0.2 * h, MARK_Z);
         triangle(x - h, y + h, x - 0.1 * h, y + 0.2 * h, x - 0.75 * h, y - 0.4 * h, MARK_Z);
-        glBegin(GL_QUADS);
-        glVertex3d(x - 0.35 * h, y + 0.05 * h, MARK_Z);
-        glVertex3d(x - 0.15 * h, y + 0.25 * h, MARK_Z);
-        glVertex3d(x + h, y - 0.9 * h, MARK_Z);
-        glVertex3d(x + 0.8 * h, y - h, MARK_Z);
-        glEnd();
+        triangle(x - 0.35 * h, y + 0.05 * h, x - 0.15 * h, y + 0.25 * h, x + h, y - 0.9 * h, MARK_Z); /* the stem */
+        triangle(x - 0.35 * h, y + 0.05 * h, x + h, y - 0.9 * h, x + 0.8 * h, y - h, MARK_Z);
         break;
     default: break;
     }
@@ -110,10 +112,7 @@ static void icon(view_icon k, double x, double y, double s)
 
 static void draw_panel(const view_overlay *o)
 {
-    GLdouble m[16];
-    overlay_pose_matrix(o->panel_at, o->panel_q, m);
-    glPushMatrix();
-    glMultMatrixd(m);
+    push_pose(o->panel_at, o->panel_q);
     glColor3ub(52, 58, 70);
     rect(-o->half_w, -o->half_h, o->half_w, o->half_h, 0);
     for (int i = 0; i < o->ncontrols; i++) { /* buttons and the sliders' tracks */
