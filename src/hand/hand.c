@@ -17,8 +17,10 @@
 #include "hand.h"
 
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "core/closest.h"
@@ -467,7 +469,10 @@ int hand_tracker(hand *h, const char *path, char *err, size_t errlen)
         h->start = h->clock;
     }
     h->used = true;
-    snprintf(h->set.tracker, sizeof h->set.tracker, "%s", path);
+    /* its full path, so that a saved world finds it from anywhere */
+    char real[PATH_MAX];
+    const char *name = realpath(path, real) && strlen(real) < sizeof h->set.tracker ? real : path;
+    snprintf(h->set.tracker, sizeof h->set.tracker, "%.*s", (int)sizeof h->set.tracker - 1, name);
     return 0;
 }
 

@@ -59,11 +59,12 @@ static void mend_line(shell *sh)
 /* How often the prompt wakes while the hand moves on the wall clock, s. */
 #define HAND_TICK 0.02
 
-/* While time stands still, the hand's clock runs on the wall clock, up to now. */
+/* While time stands still (stopped, or halted by time_step 0), the hand's clock
+ * runs on the wall clock, up to now. */
 static void hand_tick(shell *sh)
 {
     double now = shell_clock();
-    if (!sh->running) {
+    if (!sh->running || !(sh->w.set.time_step > 0)) {
         hand_wall(&sh->hand, &sh->w, now - g_wall);
         shell_after_hand(sh);
         mend_line(sh);
@@ -136,7 +137,7 @@ static int loop_readline(shell *sh)
         double wait = run_due_frames(sh, &next);
         mend_line(sh);
         if (!sh->running) next = 0;
-        if (hand_busy(&sh->hand) && !sh->running && (wait < 0 || wait > HAND_TICK)) wait = HAND_TICK;
+        if (hand_busy(&sh->hand) && (wait < 0 || wait > HAND_TICK)) wait = HAND_TICK;
         int in = fileno(rl_instream ? rl_instream : stdin), feed = hand_feed_fd(&sh->hand);
         fd_set fds;
         FD_ZERO(&fds);
