@@ -51,6 +51,11 @@ typedef struct body {
     vec3 L;            /* angular momentum about the centre of mass, world axes */
     vec3 w;            /* angular velocity, world axes (derived from L, or as typed) */
     body_state state;
+    /* held by the hand (hold.h): it moves as the hand sets it, not by forces (next
+     * to what a flight reads, which asks first) */
+    bool held;
+    vec3 hold_pivot;   /* the point it turns about (the hand), where its flight is */
+    vec3 hold_v;       /* that point's velocity; w is the body's own */
 
     /* orientation as typed with `rotate`, valid while rot_given */
     vec3 rot_axis;
@@ -71,10 +76,6 @@ typedef struct body {
     int pinned_by[2];  /* the last two still objects it struck (rest.h), or -1; */
     vec3 pinned_n[2];  /*   those contacts' normals, towards this body, */
     double pinned_t[2];/*   and when */
-    /* held by the hand (hold.h): it moves as the hand sets it, not by forces */
-    bool held;
-    vec3 hold_pivot;   /* the point it turns about (the hand), where its flight is */
-    vec3 hold_v;       /* that point's velocity; w is the body's own */
 } body;
 
 /* Copies src's state (x to the end) over dst's, for a dst that is a copy of the

@@ -24,12 +24,13 @@ int sim_frame(world *w, char *err, size_t errlen);
 
 /* A caller's say within a frame: the hand, whose trigger and tracker rows act at
  * their exact times (hold.h).  next gives the earliest instant (simulated time)
- * at which it wants to act, or HUGE_VAL; if that falls within the frame, the
- * internal step under way is cut there, every object is brought to that instant,
- * and at is called with world.time exactly it.  at may hold, release and place
- * bodies (hold.h) and set velocities; it must not add or delete objects or change
- * settings; after it, next must give a later instant.  An instant at the frame's
- * very end is not the frame's: the caller acts there after it. */
+ * at which it wants to act, or HUGE_VAL; it is asked when the frame starts and
+ * after each at.  If that instant falls within the frame, the internal step under
+ * way is cut there, every object is brought to that instant, and at is called
+ * with world.time exactly it.  at may hold, release and place bodies (hold.h) and
+ * set velocities; it must not add or delete objects or change settings; after
+ * it, next must give a later instant.  An instant at the frame's very end is not
+ * the frame's: the caller acts there after it. */
 typedef struct {
     double (*next)(void *ctx, const world *w);
     void (*at)(void *ctx, world *w);
