@@ -257,7 +257,7 @@ cmd_status shell_advance(shell *sh, const stmt *st, long n)
         }
         log_events_frame(&sh->logs, &sh->w);
         log_trace_frame(&sh->logs, &sh->w);
-        shell_overlay(sh);
+        if (sh->view_set.record) shell_overlay(sh);
         if (sh->view_set.record && view_refresh(&sh->view, &sh->w, &sh->view_set, sh->w.frame,
                                                 &sh->view_st, err, sizeof err) != 0) {
             /* at the prompt the simulation goes on without the pictures; a batch

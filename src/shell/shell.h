@@ -116,7 +116,7 @@ double shell_clock(void);
 cmd_status shell_after_hand(shell *sh);
 
 /* The hand and the panel as the views draw them (view_settings.overlay), from the
- * hand now. */
+ * hand now: called before each drawing. */
 void shell_overlay(shell *sh);
 
 /* The address of setting c's field (a FORM_SETTING) in its owner's settings. */
