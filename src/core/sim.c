@@ -63,9 +63,9 @@ static vec3 still_accel(const world *w, const body *b)
 }
 
 /* Moves the dynamic objects of the pair apart along n until they are sep apart
- * (they are gap apart now; a held one does not move), the lighter one more, so that their centre of mass
- * stays; when both move, their spins take back the angular momentum the shift
- * adds (s n x (va - vb)), so that it stays too. */
+ * (they are gap apart now; a held one does not move), the lighter one more, so
+ * that their centre of mass stays; when both move, their spins take back the
+ * angular momentum the shift adds (s n x (va - vb)), so that it stays too. */
 static void separate(body *a, body *b, vec3 n, double gap, double sep)
 {
     double need = sep - gap;
