@@ -128,10 +128,10 @@ static vec3 fly_path(quat q, vec3 w, double T)
  * the way), without acting on rows. */
 static void glide(hand *h, double c)
 {
-    double T = c - h->fly_from;
+    double T = c - h->pose_clock;
     if (!(T > 0)) return;
     if (h->grip == GRIP_FLY) h->fly = v3_add(h->fly, v3_scale(fly_path(h->q, h->mw, T), h->set.fly_speed));
-    h->fly_from = c;
+    h->pose_clock = c;
     if (h->playing && h->next > 0) {
         tracker_pose(&h->path, c - h->start, &h->p, &h->q);
         show_pose(h);
@@ -148,7 +148,7 @@ static void velocity_now(const hand *h, vec3 *v, vec3 *wv)
         return;
     }
     int k = h->next - 1; /* the last row reached */
-    if (k >= 0 && h->fly_from == h->start + h->path.rows[k].t) k--;
+    if (k >= 0 && h->pose_clock == h->start + h->path.rows[k].t) k--;
     tracker_segment_rates(&h->path, k, v, wv);
 }
 
@@ -161,7 +161,7 @@ static void held_place(const hand *h, vec3 p, quat q, vec3 *x, quat *qo)
     *qo = q_normalize(q_mul(q, h->grip_q));
 }
 
-/* Holds x, q of a thing at (x, q) relative to the hand now. */
+/* Keeps the pose (x, q) of what the hand takes, relative to the hand now. */
 static void grip_from(hand *h, vec3 x, quat q)
 {
     h->grip_x = q_unrotate(h->q, v3_sub(x, h->p));
@@ -392,7 +392,7 @@ static bool same_row(const tracker_row *a, const tracker_row *b)
 static void log_row(hand *h, bool always)
 {
     if (!h->log) return;
-    tracker_row r = {h->fly_from - h->log_start, h->p, h->q, h->set.trigger, h->button};
+    tracker_row r = {h->pose_clock - h->log_start, h->p, h->q, h->set.trigger, h->button};
     if (!always && h->have_logged && same_row(&r, &h->logged)) return;
     if (h->have_logged && r.t < h->logged.t) r.t = h->logged.t;
     tracker_write_row(h->log, &r);
@@ -411,7 +411,7 @@ int hand_log_open(hand *h, const char *path, char *err, size_t errlen)
     hand_log_close(h);
     fprintf(f, "%s\n", TRACKER_HEADER);
     h->log = f;
-    h->log_start = h->fly_from;
+    h->log_start = h->pose_clock;
     h->have_logged = false;
     snprintf(h->set.hand_log, sizeof h->set.hand_log, "%s", path);
     log_row(h, true);
@@ -436,8 +436,8 @@ static void act_rows(hand *h, world *w)
         int k = h->next;
         const tracker_row *r = &h->path.rows[k];
         glide(h, h->start + r->t);
-        if (h->fly_from < h->start + r->t) h->fly_from = h->start + r->t;
-        if (h->clock < h->fly_from) h->clock = h->fly_from;
+        if (h->pose_clock < h->start + r->t) h->pose_clock = h->start + r->t;
+        if (h->clock < h->pose_clock) h->clock = h->pose_clock;
         h->p = r->p;
         h->q = r->q;
         show_pose(h);
@@ -497,7 +497,7 @@ int hand_seek(hand *h, world *w, double t, char *err, size_t errlen)
     while (k < h->path.n && h->path.rows[k].t <= t) k++;
     h->next = k;
     h->start = h->clock - t;
-    h->fly_from = h->clock;
+    h->pose_clock = h->clock;
     if (k > 0) {
         tracker_pose(&h->path, t, &h->p, &h->q);
         show_pose(h);
@@ -628,7 +628,7 @@ void hand_frame_begin(hand *h, world *w)
     h->t0 = w->time;
     h->c0 = h->clock;
     h->tf = w->time + w->set.time_step;
-    if (h->fly_from < h->clock) glide(h, h->clock);
+    if (h->pose_clock < h->clock) glide(h, h->clock);
     carry(h, w, next_update(h));
 }
 

@@ -104,7 +104,7 @@ typedef struct hand {
                              * settings get at the end of the frame (NAN: none) */
 
     vec3 fly;               /* head movement not yet given (hand_take_fly) */
-    double fly_from;        /* the clock up to which fly counted */
+    double pose_clock;      /* the clock at which p and q are (fly counted up to it) */
 
     FILE *log;              /* hand_log */
     double log_start;
