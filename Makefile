@@ -13,7 +13,8 @@
 # The layers are libraries, each linked only with what it may use:
 #   build/libvroc-core.a   src/core/: the simulation (libc, libm and qhull only; its
 #                          objects see no header outside src/core/)
-#   build/libvroc.a        src/shell/ (but main.c) and src/view/, on top of the core
+#   build/libvroc.a        src/shell/ (but main.c), src/view/ and src/hand/, on top of
+#                          the core
 # The core's unit tests link the core library alone, so a call from the core into
 # a higher layer fails to link.  Objects go to build/ (normal), build-san/
 # (sanitizers) and build-val/ (validation: the schedule's and the polyhedra's
@@ -52,7 +53,8 @@ SAN        = -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-
 VAL        = -DVROC_VALIDATE
 
 CORE_SRC  = $(sort $(wildcard src/core/*.c))
-UPPER_SRC = $(sort $(filter-out src/shell/main.c,$(wildcard src/shell/*.c)) $(wildcard src/view/*.c))
+UPPER_SRC = $(sort $(filter-out src/shell/main.c,$(wildcard src/shell/*.c)) $(wildcard src/view/*.c) \
+                   $(wildcard src/hand/*.c))
 COMMANDS  = $(sort $(wildcard commands/*))
 # the core's own tests link libvroc-core.a alone; the others the whole program
 CORE_TESTS  = test_closest test_collide test_flight test_geometry test_lcp test_physics test_schedule test_spin
@@ -104,6 +106,10 @@ $(1)/shell/%.o: src/shell/%.c build/flags | build/gen/help_data.c
 	$$(or $(3),$$(CC)) $$(CFLAGS_ALL) $(2) -MMD -MP -c -o $$@ $$<
 
 $(1)/view/%.o: src/view/%.c build/flags
+	@mkdir -p $$(@D)
+	$$(or $(3),$$(CC)) $$(CFLAGS_ALL) $(2) -MMD -MP -c -o $$@ $$<
+
+$(1)/hand/%.o: src/hand/%.c build/flags
 	@mkdir -p $$(@D)
 	$$(or $(3),$$(CC)) $$(CFLAGS_ALL) $(2) -MMD -MP -c -o $$@ $$<
 
@@ -185,7 +191,7 @@ install: vroc man/vroc.1
 	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(MANDIR) $(DESTDIR)$(SCENEDIR)
 	install -m 755 vroc $(DESTDIR)$(BINDIR)/vroc
 	install -m 644 man/vroc.1 $(DESTDIR)$(MANDIR)/vroc.1
-	install -m 644 scenes/*.vroc $(DESTDIR)$(SCENEDIR)/
+	install -m 644 scenes/*.vroc scenes/*.csv $(DESTDIR)$(SCENEDIR)/
 
 uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/vroc $(DESTDIR)$(MANDIR)/vroc.1
@@ -194,4 +200,4 @@ uninstall:
 clean:
 	rm -rf build build-san build-val build-fuzz vroc tests/out
 
--include $(wildcard build*/core/*.d build*/shell/*.d build*/view/*.d build*/tests/*.d)
+-include $(wildcard build*/core/*.d build*/shell/*.d build*/view/*.d build*/hand/*.d build*/tests/*.d)

@@ -59,7 +59,9 @@ cmd_status cmd_restart(shell *sh, const stmt *st)
     sh->view_set = sh->startup.view;
     sh->set = sh->startup.shell;
     sh->rng = sh->set.seed;
-    sh->current = sh->selected = sh->prev_selected = -1;
+    sh->current = -1;
+    hand_free(&sh->hand);
+    hand_init(&sh->hand, sh->hand.say, sh->hand.say_ctx);
     return r;
 }
 
@@ -86,6 +88,7 @@ cmd_status cmd_display(shell *sh, const stmt *st)
 cmd_status cmd_refresh(shell *sh, const stmt *st)
 {
     char err[512];
+    shell_overlay(sh);
     if (view_refresh(&sh->view, &sh->w, &sh->view_set, sh->w.frame, &sh->view_st, err,
                      sizeof err) != 0) {
         sh_error(sh, st, "refresh: %s", err);

@@ -531,6 +531,20 @@ static int load_sub(stmt *st, const lang_paths *paths, int depth, const char **s
     return st->sub ? 0 : -1;
 }
 
+/* A file the statement reads (a tracker file) is found as read finds its file:
+ * st->word becomes the path found, or stays as written when there is none (its
+ * handler then says so).  Returns 0, or -1 when out of memory. */
+static int resolve_word(stmt *st, const lang_paths *paths)
+{
+    char full[PATH_MAX];
+    if (lang_resolve(st->word, paths, full, sizeof full) != 0 || strcmp(full, st->word) == 0) return 0;
+    char *found = strdup(full);
+    if (!found) return -1;
+    free(st->word);
+    st->word = found;
+    return 0;
+}
+
 program *lang_parse(const char *text, size_t len, const char *name, int first_line,
                     const lang_paths *paths, int depth, const char **stack, int n_stack, char *err, size_t errlen)
 {
@@ -567,6 +581,10 @@ program *lang_parse(const char *text, size_t len, const char *name, int first_li
                     goto fail;
                 }
                 st.file = prog->path;
+                if (strcmp(st.cmd->name, "tracker") == 0 && st.n == 0 && resolve_word(&st, paths) != 0) {
+                    stmt_clear(&st);
+                    goto oom;
+                }
                 if (strcmp(st.cmd->name, "read") == 0 &&
                     load_sub(&st, paths, depth, stack, n_stack, &at) != 0) {
                     stmt_clear(&st);

@@ -36,6 +36,10 @@
     {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SHELL, offsetof(shell_settings, field), cmd_setting, NO_AFTER}
 #define SHELLF(name, arg, range, lo, hi, field, fn) \
     {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SHELL, offsetof(shell_settings, field), fn, NO_AFTER}
+#define HAND(name, arg, range, lo, hi, field) \
+    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_HAND, offsetof(hand_settings, field), cmd_setting, NO_AFTER}
+#define HANDF(name, arg, range, lo, hi, field, fn) \
+    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_HAND, offsetof(hand_settings, field), fn, NO_AFTER}
 /* a setting kept elsewhere (the logs): its handler knows where */
 #define OTHER(name, arg, fn) {name, FORM_SETTING, arg, 0, 0, 0, NULL, 0, OWN_NONE, 0, fn, NO_AFTER}
 #define OTHER_R(name, arg, lo, hi, fn) \
@@ -52,8 +56,8 @@
     {name, FORM_PROPERTY, VAL_VECTOR_ANGLE, range, lo, hi, NULL, classes, OWN_NONE, offsetof(body, field), cmd_property, what2, lo2, hi2}
 #define SIM_A(name, range, lo, hi, field, what2, lo2, hi2) \
     {name, FORM_SETTING, VAL_VECTOR_ANGLE, range, lo, hi, NULL, 0, OWN_SIM, offsetof(sim_settings, field), cmd_setting, what2, lo2, hi2}
-#define SHELL_A(name, range, lo, hi, field, what2, lo2, hi2) \
-    {name, FORM_SETTING, VAL_VECTOR_ANGLE, range, lo, hi, NULL, 0, OWN_SHELL, offsetof(shell_settings, field), cmd_setting, what2, lo2, hi2}
+#define HAND_A(name, range, lo, hi, field, what2, lo2, hi2, fn) \
+    {name, FORM_SETTING, VAL_VECTOR_ANGLE, range, lo, hi, NULL, 0, OWN_HAND, offsetof(hand_settings, field), fn, what2, lo2, hi2}
 
 /* In the order of help's groups; show and save write the settings in this order. */
 const command command_table[] = {
@@ -144,13 +148,23 @@ const command command_table[] = {
     VIEW("background", VAL_COLOR, R_RANGE, 0, 255, background),
     CHOICE("real", "solid|wire|hidden", cmd_real),
     VIEW("record", VAL_ONOFF, 0, 0, 0, record),
-    SHELL("hand", VAL_VECTOR, R_RANGE, -POS, POS, hand),
-    SHELL_A("hand_rotate", R_NONZERO_VEC | R_RANGE, -POS, POS, hand_rotate,
-            "angle", -LIM_ANGLE_MAX, LIM_ANGLE_MAX),
-    SHELL("trigger", VAL_ONOFF, 0, 0, 0, trigger),
+    HANDF("hand", VAL_VECTOR, R_RANGE, -POS, POS, hand, cmd_hand),
+    HAND_A("hand_rotate", R_NONZERO_VEC | R_RANGE, -POS, POS, hand_rotate,
+           "angle", -LIM_ANGLE_MAX, LIM_ANGLE_MAX, cmd_hand),
+    HANDF("trigger", VAL_ONOFF, 0, 0, 0, trigger, cmd_trigger),
     ACT("select", ARG_OPT_ONOFF, cmd_select),
     ACT("reselect", ARG_NONE, cmd_reselect),
-    SHELLF("tracker", VAL_FILE_OR_OFF, 0, 0, 0, tracker, cmd_tracker),
+    HAND("reach", VAL_NUMBER, R_RANGE, 0, LIM_LENGTH_MAX, reach),
+    HAND("fly_speed", VAL_NUMBER, R_RANGE, 0, LIM_SPEED_MAX, fly_speed),
+    HANDF("tracker", VAL_FILE_OR_OFF, 0, 0, 0, tracker, cmd_tracker),
+    OTHER_R("tracker_time", VAL_NUMBER, 0, LIM_CLOCK_MAX, cmd_tracker_time),
+    HANDF("hand_log", VAL_FILE_OR_OFF, 0, 0, 0, hand_log, cmd_hand_log),
+    {"grip", FORM_SETTING, ARG_NAME, 0, 0, 0, "off|none|fly|panel|time_step|collision_dist", 0, OWN_NONE, 0,
+     cmd_grip, NO_AFTER},
+    HAND("panel", VAL_ONOFF, 0, 0, 0, panel),
+    HAND("panel_at", VAL_VECTOR, R_RANGE, -POS, POS, panel_at),
+    HAND_A("panel_rotate", R_NONZERO_VEC | R_RANGE, -POS, POS, panel_rotate,
+           "angle", -LIM_ANGLE_MAX, LIM_ANGLE_MAX, cmd_setting),
 };
 
 const int command_count = (int)(sizeof command_table / sizeof command_table[0]);
