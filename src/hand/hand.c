@@ -25,6 +25,7 @@
 
 #include "core/closest.h"
 #include "core/hold.h"
+#include "shell/outfile.h"
 
 /* A held object this near the hand's place for it (m, and radians) is carried by
  * the hand's own motion. */
@@ -66,7 +67,8 @@ void hand_free(hand *h)
 {
     tracker_free(&h->path);
     feed_close(&h->feed);
-    hand_log_close(h);
+    char ignored[8];
+    hand_log_close(h, ignored, sizeof ignored); /* (checked before: shell_close_outputs) */
 }
 
 static void tell(hand *h, hand_message kind, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
@@ -395,34 +397,61 @@ static void log_row(hand *h, bool always)
     tracker_row r = {h->pose_clock - h->log_start, h->p, h->q, h->set.trigger, h->button};
     if (!always && h->have_logged && same_row(&r, &h->logged)) return;
     if (h->have_logged && r.t < h->logged.t) r.t = h->logged.t;
-    tracker_write_row(h->log, &r);
-    fflush(h->log);
+    /* (the reason is the failing write's: a later flush may have none) */
+    if (tracker_write_row(h->log, &r) < 0)
+        outfile_failed(h->set.hand_log, errno, h->log_error, sizeof h->log_error);
+    else
+        outfile_flush(h->log, h->set.hand_log, h->log_error, sizeof h->log_error);
+    if (h->log_error[0]) {
+        char ignored[8];
+        hand_log_close(h, ignored, sizeof ignored);
+        return;
+    }
     h->logged = r;
     h->have_logged = true;
 }
 
 int hand_log_open(hand *h, const char *path, char *err, size_t errlen)
 {
+    if (outfile_allowed(path, err, errlen) != 0) return -1;
     FILE *f = fopen(path, "w");
     if (!f) {
         snprintf(err, errlen, "cannot write '%s': %s", path, strerror(errno));
         return -1;
     }
-    hand_log_close(h);
-    fprintf(f, "%s\n", TRACKER_HEADER);
+    /* the header and the hand now, checked before the old log is let go */
+    tracker_row r = {0, h->p, h->q, h->set.trigger, h->button};
+    int rc = fprintf(f, "%s\n", TRACKER_HEADER) < 0 || tracker_write_row(f, &r) < 0
+                 ? outfile_failed(path, errno, err, errlen)
+                 : outfile_flush(f, path, err, errlen);
+    if (rc != 0) {
+        fclose(f);
+        return -1;
+    }
+    rc = outfile_close(h->log, h->set.hand_log, err, errlen);
     h->log = f;
     h->log_start = h->pose_clock;
-    h->have_logged = false;
+    h->logged = r;
+    h->have_logged = true;
+    h->log_error[0] = '\0';
     snprintf(h->set.hand_log, sizeof h->set.hand_log, "%s", path);
-    log_row(h, true);
-    return 0;
+    return rc;
 }
 
-void hand_log_close(hand *h)
+int hand_log_close(hand *h, char *err, size_t errlen)
 {
-    if (h->log) fclose(h->log);
+    int rc = outfile_close(h->log, h->set.hand_log, err, errlen);
     h->log = NULL;
     h->set.hand_log[0] = '\0';
+    return rc;
+}
+
+bool hand_log_failed(hand *h, char *err, size_t errlen)
+{
+    if (!h->log_error[0]) return false;
+    snprintf(err, errlen, "%s", h->log_error);
+    h->log_error[0] = '\0';
+    return true;
 }
 
 /* ---- rows ---- */

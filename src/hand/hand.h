@@ -108,6 +108,7 @@ typedef struct hand {
 
     FILE *log;              /* hand_log */
     double log_start;
+    char log_error[HAND_PATH_MAX + 256]; /* a row that did not reach it ("" none) */
     tracker_row logged;     /* the last row written */
     bool have_logged;
 
@@ -146,9 +147,17 @@ int hand_seek(hand *h, world *w, double t, char *err, size_t errlen);
 /* The tracker clock's time in the file playing (0 without one). */
 double hand_tracker_time(const hand *h);
 
-/* hand_log = path / off.  Returns 0, or -1 with a message (the old log stays). */
+/* hand_log = path / off, written and checked as every output (shell/outfile.h).
+ * Open returns 0, or -1 with a message in err: the new file could not be written
+ * (the old log stays), or the old log's last rows (the new one is open).  Close
+ * returns 0, or -1 with a message when its last rows did not reach the file (it is
+ * closed either way; nothing to close is 0). */
 int hand_log_open(hand *h, const char *path, char *err, size_t errlen);
-void hand_log_close(hand *h);
+int hand_log_close(hand *h, char *err, size_t errlen);
+/* True, with "cannot write 'PATH': REASON" in err, when a row written since the
+ * last call did not reach the log: the log is then closed, and hand_log off (the
+ * caller says so: shell_output_failed). */
+bool hand_log_failed(hand *h, char *err, size_t errlen);
 
 /* grip = what: sets the trigger down and what it holds without pressing, grabbing
  * or releasing anything (save writes it): off (the trigger up), none, fly, panel,

@@ -248,8 +248,8 @@ void tracker_segment_rates(const tracker_path *tp, int k, vec3 *v, vec3 *w)
     *w = v3_scale(tracker_turn(a->q, b->q), 1 / dt);
 }
 
-void tracker_write_row(FILE *f, const tracker_row *r)
+int tracker_write_row(FILE *f, const tracker_row *r)
 {
-    fprintf(f, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%d\n", r->t, r->p.x, r->p.y,
+    return fprintf(f, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%d\n", r->t, r->p.x, r->p.y,
             r->p.z, r->q.w, r->q.x, r->q.y, r->q.z, r->trigger, r->button);
 }

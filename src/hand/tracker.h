@@ -71,7 +71,7 @@ vec3 tracker_turn(quat a, quat b);
 quat tracker_turned(quat a, vec3 r);
 
 /* Writes row as a line of the format (17 significant digits, so that it reads
- * back to the bit). */
-void tracker_write_row(FILE *f, const tracker_row *row);
+ * back to the bit); fprintf's count, negative when the write failed. */
+int tracker_write_row(FILE *f, const tracker_row *row);
 
 #endif

@@ -57,21 +57,14 @@ cmd_status cmd_reselect(shell *sh, const stmt *st)
     return answer(sh, st, hand_reselect(&sh->hand, &sh->w, err, sizeof err), err);
 }
 
-/* tracker and hand_log: a file the hand reads or writes, or off. */
-static cmd_status hand_file(shell *sh, const stmt *st,
-                            int (*open_file)(hand *, const char *, char *, size_t), void (*off)(hand *))
+cmd_status cmd_tracker(shell *sh, const stmt *st)
 {
     if (st->n == 1) {
-        off(&sh->hand);
+        hand_tracker_off(&sh->hand);
         return CMD_OK;
     }
     char err[HAND_PATH_MAX + 400];
-    return answer(sh, st, open_file(&sh->hand, st->word, err, sizeof err), err);
-}
-
-cmd_status cmd_tracker(shell *sh, const stmt *st)
-{
-    return hand_file(sh, st, hand_tracker, hand_tracker_off);
+    return answer(sh, st, hand_tracker(&sh->hand, st->word, err, sizeof err), err);
 }
 
 cmd_status cmd_tracker_time(shell *sh, const stmt *st)
@@ -80,9 +73,13 @@ cmd_status cmd_tracker_time(shell *sh, const stmt *st)
     return answer(sh, st, hand_seek(&sh->hand, &sh->w, st->num[0], err, sizeof err), err);
 }
 
+/* hand_log = FILE or off: the old log's last rows are checked as it closes. */
 cmd_status cmd_hand_log(shell *sh, const stmt *st)
 {
-    return hand_file(sh, st, hand_log_open, hand_log_close);
+    char err[HAND_PATH_MAX + 400];
+    int rc = st->n == 1 ? hand_log_close(&sh->hand, err, sizeof err)
+                        : hand_log_open(&sh->hand, st->word, err, sizeof err);
+    return answer(sh, st, rc, err);
 }
 
 cmd_status cmd_grip(shell *sh, const stmt *st)

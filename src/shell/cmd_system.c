@@ -42,17 +42,9 @@ cmd_status cmd_stop(shell *sh, const stmt *st)
 
 cmd_status cmd_restart(shell *sh, const stmt *st)
 {
-    /* the logs end with the world they logged (commands/trace, commands/events) */
-    cmd_status r = CMD_OK;
-    char err[LOG_PATH_MAX + 256];
-    if (log_trace_close(&sh->logs, err, sizeof err) != 0) {
-        sh_error(sh, st, "trace: %s", err);
-        r = CMD_ERROR;
-    }
-    if (log_events_close(&sh->logs, err, sizeof err) != 0) {
-        sh_error(sh, st, "events: %s", err);
-        r = CMD_ERROR;
-    }
+    /* the logs end with the world they logged (commands/trace, commands/events,
+     * commands/hand_log) */
+    cmd_status r = shell_close_outputs(sh, st);
     world_free(&sh->w);
     world_init(&sh->w);
     sh->w.set = sh->startup.sim;

@@ -159,7 +159,7 @@ int main(int argc, char **argv)
     }
     /* the logs' last rows and standard output are checked too: a write that
      * failed is never silent */
-    if (shell_close_outputs(&sh) != CMD_OK && sh.stop_on_error) status = 1;
+    if (shell_close_outputs(&sh, NULL) != CMD_OK && sh.stop_on_error) status = 1;
     shell_free(&sh);
     free(cmds);
     free(files);

@@ -69,16 +69,20 @@ void shell_init(shell *sh, FILE *out, FILE *err)
     hand_init(&sh->hand, shell_hand_say, sh);
 }
 
-cmd_status shell_close_outputs(shell *sh)
+cmd_status shell_close_outputs(shell *sh, const stmt *st)
 {
-    char err[LOG_PATH_MAX + 256];
+    char err[HAND_PATH_MAX + 512];
     cmd_status r = CMD_OK;
     if (log_trace_close(&sh->logs, err, sizeof err) != 0) {
-        sh_error(sh, NULL, "trace: %s", err);
+        sh_error(sh, st, "trace: %s", err);
         r = CMD_ERROR;
     }
     if (log_events_close(&sh->logs, err, sizeof err) != 0) {
-        sh_error(sh, NULL, "events: %s", err);
+        sh_error(sh, st, "events: %s", err);
+        r = CMD_ERROR;
+    }
+    if (hand_log_close(&sh->hand, err, sizeof err) != 0) {
+        sh_error(sh, st, "hand_log: %s", err);
         r = CMD_ERROR;
     }
     return r;
@@ -87,7 +91,7 @@ cmd_status shell_close_outputs(shell *sh)
 void shell_free(shell *sh)
 {
     world_free(&sh->w);
-    shell_close_outputs(sh);
+    shell_close_outputs(sh, NULL);
     view_free(sh->view);
     sh->view = NULL;
     hand_free(&sh->hand);
@@ -170,6 +174,9 @@ cmd_status shell_after_hand(shell *sh)
     sh->view_set.head = v3_add(sh->view_set.head, fly);
     sh->view_set.look_at = v3_add(sh->view_set.look_at, fly);
     cmd_status r = CMD_OK;
+    char err[HAND_PATH_MAX + 256];
+    if (hand_log_failed(&sh->hand, err, sizeof err))
+        r = shell_output_failed(sh, sh->running_st, "hand_log", err);
     panel_part k;
     while (r == CMD_OK && (k = hand_take_press(&sh->hand)) != PANEL_OFF)
         r = shell_run_text(sh, panel_control_of(k)->name, NULL);

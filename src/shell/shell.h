@@ -105,9 +105,10 @@ cmd_status shell_advance(shell *sh, const stmt *st, long n);
  * (stop_on_error) stops there (CMD_ERROR, and vroc exits 1). */
 cmd_status shell_output_failed(shell *sh, const stmt *st, const char *what, const char *err);
 
-/* Closes the logs, checking their last writes; at the end of the program, before
- * shell_free.  Returns CMD_ERROR (after saying why) when one failed. */
-cmd_status shell_close_outputs(shell *sh);
+/* Closes the logs (trace, events, hand_log), checking their last writes: at the
+ * end of the program, before shell_free (st NULL), and at restart (st).  Returns
+ * CMD_ERROR (after saying why) when one failed. */
+cmd_status shell_close_outputs(shell *sh, const stmt *st);
 
 /* Messages about statement st (NULL: no location). */
 void sh_error(shell *sh, const stmt *st, const char *fmt, ...)
@@ -121,9 +122,11 @@ void sh_info(shell *sh, const char *fmt, ...) __attribute__((format(printf, 2, 3
 double shell_clock(void);
 
 /* After the hand acted (a statement, a frame, a tick of the wall clock): the object
- * it grabbed or re-selected becomes current, the head flies as it flew, and the
- * panel's buttons it pressed run as their commands.  Returns what the buttons'
- * commands returned (CMD_OK when none). */
+ * it grabbed or re-selected becomes current, the head flies as it flew, a hand_log
+ * row that failed turns hand_log off (shell_output_failed), and the panel's
+ * buttons it pressed run as their commands.  Returns CMD_ERROR when the log's
+ * failure stops the run, else what the buttons' commands returned (CMD_OK when
+ * none). */
 cmd_status shell_after_hand(shell *sh);
 
 /* The hand and the panel as the views draw them (view_settings.overlay), from the
