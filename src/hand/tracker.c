@@ -8,6 +8,8 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "shell/grow.h"
+
 /* How far from 1 a row's quaternion may be before it is an error. */
 #define TRACKER_UNIT_TOL 1e-6
 
@@ -107,13 +109,9 @@ void tracker_free(tracker_path *tp)
 
 static int append(tracker_path *tp, const tracker_row *r)
 {
-    if (tp->n == tp->cap) {
-        int cap = tp->cap ? 2 * tp->cap : 64;
-        tracker_row *n = realloc(tp->rows, (size_t)cap * sizeof *n);
-        if (!n) return -1;
-        tp->rows = n;
-        tp->cap = cap;
-    }
+    tracker_row *rows = grow_for_one(tp->rows, tp->n, &tp->cap, sizeof *rows, 64);
+    if (!rows) return -1;
+    tp->rows = rows;
     tp->rows[tp->n++] = *r;
     return 0;
 }

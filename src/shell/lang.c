@@ -21,6 +21,7 @@
 #include "core/limits.h"
 #include "lex.h"
 #include "fmt.h"
+#include "grow.h"
 
 /* Files larger than this are refused (a scene is a few kilobytes). */
 #define LANG_MAX_FILE (64L * 1024 * 1024)
@@ -501,13 +502,9 @@ static int parse_stmt(stmt *st, const token *t, int nt, const where *at)
 
 static int prog_push(program *p, const stmt *st)
 {
-    if (p->n == p->cap) {
-        int cap = p->cap ? 2 * p->cap : 16;
-        stmt *ns = realloc(p->s, (size_t)cap * sizeof *ns);
-        if (!ns) return -1;
-        p->s = ns;
-        p->cap = cap;
-    }
+    stmt *ns = grow_for_one(p->s, p->n, &p->cap, sizeof *ns, 16);
+    if (!ns) return -1;
+    p->s = ns;
     p->s[p->n++] = *st;
     return 0;
 }
