@@ -14,7 +14,7 @@
 # The layers are libraries, each linked only with what it may use:
 #   build/libvroc-core.a   src/core/: the simulation (libc, libm and qhull only; its
 #                          objects see no header outside src/core/)
-#   build/libvroc.a        src/shell/ (but main.c), src/view/ and src/sound/, on top of
+#   build/libvroc.a        src/shell/ (but main.c), src/view/, src/sound/ and src/hand/, on top of
 #                          the core
 # The core's unit tests link the core library alone, so a call from the core into
 # a higher layer fails to link.  Objects go to build/ (normal), build-san/
@@ -55,7 +55,7 @@ VAL        = -DVROC_VALIDATE
 
 CORE_SRC  = $(sort $(wildcard src/core/*.c))
 UPPER_SRC = $(sort $(filter-out src/shell/main.c,$(wildcard src/shell/*.c)) $(wildcard src/view/*.c) \
-                   $(wildcard src/sound/*.c))
+                   $(wildcard src/sound/*.c) $(wildcard src/hand/*.c))
 COMMANDS  = $(sort $(wildcard commands/*))
 # the core's own tests link libvroc-core.a alone; the others the whole program
 CORE_TESTS  = test_closest test_collide test_flight test_geometry test_lcp test_physics test_schedule test_spin
@@ -111,6 +111,10 @@ $(1)/view/%.o: src/view/%.c build/flags
 	$$(or $(3),$$(CC)) $$(CFLAGS_ALL) $(2) -MMD -MP -c -o $$@ $$<
 
 $(1)/sound/%.o: src/sound/%.c build/flags
+	@mkdir -p $$(@D)
+	$$(or $(3),$$(CC)) $$(CFLAGS_ALL) $(2) -MMD -MP -c -o $$@ $$<
+
+$(1)/hand/%.o: src/hand/%.c build/flags
 	@mkdir -p $$(@D)
 	$$(or $(3),$$(CC)) $$(CFLAGS_ALL) $(2) -MMD -MP -c -o $$@ $$<
 
@@ -201,7 +205,7 @@ install: vroc man/vroc.1
 	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(MANDIR) $(DESTDIR)$(SCENEDIR)
 	install -m 755 vroc $(DESTDIR)$(BINDIR)/vroc
 	install -m 644 man/vroc.1 $(DESTDIR)$(MANDIR)/vroc.1
-	install -m 644 scenes/*.vroc $(DESTDIR)$(SCENEDIR)/
+	install -m 644 scenes/*.vroc scenes/*.csv $(DESTDIR)$(SCENEDIR)/
 
 uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/vroc $(DESTDIR)$(MANDIR)/vroc.1
@@ -210,4 +214,4 @@ uninstall:
 clean:
 	rm -rf build build-san build-val build-fuzz vroc tests/out
 
--include $(wildcard build*/core/*.d build*/shell/*.d build*/view/*.d build*/sound/*.d build*/tests/*.d)
+-include $(wildcard build*/core/*.d build*/shell/*.d build*/view/*.d build*/sound/*.d build*/hand/*.d build*/tests/*.d)

@@ -1,5 +1,5 @@
 #!/bin/sh
-# outputs.sh: a write that fails is never silent.  The trace, the events, save,
+# outputs.sh: a write that fails is never silent.  The trace, the events, the hand log, save,
 # the frames (record and refresh), the soundtrack (libsndfile writes it), the
 # movie (ffmpeg writes it) and standard output each fail loudly: an error that
 # names the file and the system's reason, and in a batch run exit status 1 at the
@@ -17,6 +17,8 @@ expect "events = /dev/full is an error" 1 "error: events: cannot write '/dev/ful
     "$VROC" -b -c 'sphere a; events = /dev/full; run 30'
 expect "save /dev/full is an error" 1 "error: save: cannot write '/dev/full': No space left on device" \
     "$VROC" -b -c 'sphere a; save /dev/full'
+expect "hand_log = /dev/full is an error" 1 "error: hand_log: cannot write '/dev/full': No space left on device" \
+    "$VROC" -b -c 'sphere a; hand_log = /dev/full; run 30'
 out=$("$VROC" -b -c 'sphere a; trace = /dev/full; print a' 2>/dev/null); status=$?
 [ $status -eq 1 ] && [ -z "$out" ] && ok "the failed trace stops the batch run before print" ||
     notok "the failed trace stops the batch run before print" "status $status" "$out"
@@ -43,6 +45,18 @@ out=$(limited 4 "$VROC" -b "$S/bounce.vroc" -c "events = e.csv; run 300; print b
 case "$status:$out" in "1:error: events: cannot write 'e.csv': File too large; events is now off, time stopped")
     ok "an events log that outgrows the limit stops the batch run, saying why" ;;
     *) notok "an events log that outgrows the limit stops the batch run, saying why" "status $status" "$out" ;; esac
+
+# the hand log gets a row every frame: the hand moved by statements between runs
+out=$(limited 4 "$VROC" -b "$S/basketball-throw.vroc" -c "hand_log = h.csv; hand = (0, 0, 0); run 300; hand = (1, 1, 1); run 300; print ball" 2>&1); status=$?
+case "$status:$out" in "1:error: hand_log: cannot write 'h.csv': File too large; hand_log is now off, time stopped")
+    ok "a hand log that outgrows the limit stops the batch run, saying why" ;;
+    *) notok "a hand log that outgrows the limit stops the batch run, saying why" "status $status" "$out" ;; esac
+out=$(VROC_SANDBOX=1 "$VROC" -b -c 'hand_log = /tmp/h.csv' 2>&1); status=$?
+case "$status:$out" in "1:error: hand_log: '/tmp/h.csv' is outside the current folder, and VROC_SANDBOX allows writing only below it")
+    ok "under VROC_SANDBOX the hand log is written only below the working folder" ;;
+    *) notok "under VROC_SANDBOX the hand log is written only below the working folder" "status $status" "$out" ;; esac
+expect "hand_log = off checks the last rows" 0 "sphere a" \
+    "$VROC" -b -c "sphere a; hand_log = h2.csv; hand = (1, 0, 0); hand_log = off; print a"
 
 # frames: output is a folder, so only the size limit can fail them
 # (the sanitizer build may add LeakSanitizer's list of the suppressions it used:

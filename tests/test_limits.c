@@ -139,6 +139,13 @@ static const char *kind_for(const command *c)
     return (c->classes & C_CUBE) ? "cube" : "superquadric";
 }
 
+/* What c needs before it: a tracker file playing, for tracker_time (which is an
+ * error without one). */
+static const char *context_for(const command *c)
+{
+    return strcmp(c->name, "tracker_time") == 0 ? "tracker = scenes/panel-demo.csv; " : "";
+}
+
 /* Runs set (a statement of c) on a fresh world with object o; *accepted gets
  * whether it ran.  Actions (run N, random N) are only parsed: their limits are
  * the parser's, and running a billion frames proves nothing more. */
@@ -157,8 +164,8 @@ static cmd_status try_value(const command *c, const char *set)
         program_free(p);
         return p ? CMD_OK : CMD_ERROR;
     }
-    snprintf(text, sizeof text, "restart; %s o; angular_vel = (0.5, 0.2, 0.1); %s\n",
-             kind_for(c), set);
+    snprintf(text, sizeof text, "restart; %s o; angular_vel = (0.5, 0.2, 0.1); %s%s\n",
+             kind_for(c), context_for(c), set);
     return run(text);
 }
 

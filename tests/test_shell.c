@@ -197,7 +197,7 @@ static void the_bad_input_catalogue(void **state)
     assert_int_equal(access(path, F_OK), -1); /* no file left behind */
     bad("tracker = /nonexistent.trk\n", "cannot read '/nonexistent.trk'");
     bad("run 1; run 1; run 1e9999\n", "run must be a finite number");
-    bad("reselect\n", "no object has been selected");
+    bad("reselect\n", "reselect: no object has been held yet");
     bad("ball.size = (1, 1, 1); box.radius = 2; bogus\n", "unknown command 'bogus'");
 }
 

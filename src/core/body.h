@@ -57,6 +57,10 @@ typedef struct body {
     vec3 L;            /* angular momentum about the centre of mass, world axes */
     vec3 w;            /* angular velocity, world axes (derived from L, or as typed) */
     body_state state;
+    /* held by the hand (hold.h): it moves as the hand sets it, not by forces */
+    bool held;
+    vec3 hold_pivot;   /* the point it turns about (the hand's) */
+    vec3 hold_v;       /* that point's velocity; w is the body's own, constant */
 
     /* orientation as typed with `rotate`, valid while rot_given */
     vec3 rot_axis;

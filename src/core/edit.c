@@ -17,6 +17,15 @@ static int rebuild(body *b, shape_params old, char *err, size_t errlen)
     return 0;
 }
 
+/* Object i's lasting contacts end. */
+static void end_contacts(world *w, int i)
+{
+    for (long k = 0; k < w->pairs.n; k++) {
+        pair *p = &w->pairs.p[k];
+        if (p->a == i || p->b == i) p->touching = false;
+    }
+}
+
 /* Object i and every dynamic object pressed together with it move again, and find
  * their modes anew when time next runs; when `moved`, what i touches is found anew
  * too (its lasting contacts end).  (A scan of the pairs: the schedule's lists of
@@ -46,10 +55,7 @@ static void disturb(world *w, int i, bool moved)
     }
     if (!moved) return;
     w->bodies[i]->moved = true;
-    for (long k = 0; k < w->pairs.n; k++) {
-        pair *p = &w->pairs.p[k];
-        if (p->a == i || p->b == i) p->touching = false;
-    }
+    end_contacts(w, i);
 }
 
 /* v, or v scaled down to length max when it is longer: for any finite v, since the
@@ -92,6 +98,7 @@ int edit_property(world *w, int i, size_t off, const double *num, char *err, siz
     case offsetof(body, mass):
         disturb(w, i, true);
         body_set_mass(b, num[0]);
+        if (num[0] < 0) b->held = false; /* (the hand lets go: hold.h) */
         w->pairs.dirty = true; /* static objects have no pairs among themselves */
         return 0;
     case offsetof(body, x):
@@ -127,6 +134,12 @@ void edit_force(world *w, dir_amount force)
         if (w->bodies[i]->state == STATE_RESTING) rest_wake(w, i);
     }
     w->set.force = force;
+}
+
+void edit_unpress(world *w, int i)
+{
+    disturb(w, i, false);
+    end_contacts(w, i);
 }
 
 void edit_delete(world *w, int i)

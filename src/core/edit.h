@@ -69,6 +69,11 @@ int edit_exact_touching(world *w, int i, int j, char *err, size_t errlen);
 /* The clock: time = base + frames * time_step, as frames add it up (exactly so). */
 void edit_clock(world *w, double base, long frames);
 
+/* Object i's lasting contacts end, and it and every dynamic object pressed
+ * together with it move again, their modes found anew when the simulation starts
+ * over (for a body the hand takes: hold.h). */
+void edit_unpress(world *w, int i);
+
 /* Removes object i; what pressed on it moves again. */
 void edit_delete(world *w, int i);
 

@@ -122,7 +122,7 @@ void rest_classify(world *w, const int *list, int n)
     for (int k = 0; k < n; k++) {
         int i = list[k];
         body *b = w->bodies[i];
-        if (body_is_static(b)) continue;
+        if (body_is_static(b) || b->held) continue; /* (a held one: free, hold.h) */
         if (b->state == STATE_RESTING) b->state = STATE_DYNAMIC;
         int count = 0, other = -1;
         pair *touch = NULL;

@@ -117,6 +117,24 @@ void step_sync(world *w, int i, double t)
     if (step_moves(w, i)) flight_at(&w->step.fl[i], w->bodies[i], t, w->bodies[i]);
 }
 
+sched_move step_move(const world *w, int i, const body *o)
+{
+    const flight *f = &w->step.fl[i];
+    sched_move m = {.moves = step_moves(w, i) && f->kind != FLIGHT_STILL, .reach = o->shape.r_out};
+    if (!m.moves) return m;
+    m.c = body_com(o);
+    m.v = o->v;
+    m.a = f->a;
+    m.rate = f->rate;
+    if (f->kind == FLIGHT_HELD) {
+        m.held = true;
+        m.reach += v3_len(v3_sub(m.c, o->hold_pivot));
+        m.c = o->hold_pivot;
+        m.v = o->hold_v;
+    }
+    return m;
+}
+
 void step_start(world *w, int i, double t)
 {
     body *b = w->bodies[i];
@@ -124,6 +142,10 @@ void step_start(world *w, int i, double t)
     long id = w->step.flight_count++;
     if (!step_moves(w, i)) {
         flight_start(f, b, FLIGHT_STILL, t, v3(0, 0, 0), v3(0, 0, 0), id);
+        return;
+    }
+    if (b->held) {
+        flight_start(f, b, FLIGHT_HELD, t, v3(0, 0, 0), v3(0, 0, 0), id);
         return;
     }
     if (b->mode == MODE_SLIDE) {

@@ -173,6 +173,11 @@ unsigned long long world_hash(const world *w)
         h = fnv(h, b->name, strlen(b->name) + 1);
         h = fnv(h, tags, sizeof tags);
         h = fnv(h, s, sizeof s);
+        if (b->held) { /* (hold.h; a world holding nothing hashes as before) */
+            double hs[6] = {b->hold_pivot.x, b->hold_pivot.y, b->hold_pivot.z,
+                            b->hold_v.x,     b->hold_v.y,     b->hold_v.z};
+            h = fnv(h, hs, sizeof hs);
+        }
     }
     return h;
 }

@@ -44,8 +44,7 @@ cmd_status cmd_list(shell *sh, const stmt *st)
     (void)st;
     for (int i = 0; i < sh->w.n; i++) {
         const body *b = sh->w.bodies[i];
-        fprintf(sh->out, "%-20s %-13s %s\n", b->name, body_type_name(b->sp.kind),
-                log_state_name(b->state));
+        fprintf(sh->out, "%-20s %-13s %s\n", b->name, body_type_name(b->sp.kind), log_body_state(b));
     }
     return CMD_OK;
 }
@@ -79,13 +78,15 @@ cmd_status cmd_save(shell *sh, const stmt *st)
         body_write(f, sh->w.bodies[i]);
         fputc('\n', f);
     }
-    /* the contact state last: placing an object ends its lasting contacts */
+    /* the contact state: placing an object ends its lasting contacts */
     fprintf(f, "# the contact state: modes, rest and lasting contacts, as the simulation left "
                "them\n");
     for (int i = 0; i < sh->w.n; i++) {
         fprintf(f, "%s %s\n", body_type_name(sh->w.bodies[i]->sp.kind), sh->w.bodies[i]->name);
         contact_write(f, &sh->w, i, 1);
     }
+    /* the hand last: what it holds is gripped again */
+    hand_write(f, sh);
     if (sh->current >= 0) fprintf(f, "\n# the current object\n%s %s\n",
                                   body_type_name(sh->w.bodies[sh->current]->sp.kind),
                                   sh->w.bodies[sh->current]->name);

@@ -80,8 +80,7 @@ cmd_status cmd_delete(shell *sh, const stmt *st)
     }
     edit_delete(&sh->w, i);
     fix_index(&sh->current, i);
-    fix_index(&sh->selected, i);
-    fix_index(&sh->prev_selected, i);
+    hand_object_deleted(&sh->hand, i);
     return CMD_OK;
 }
 

@@ -2,8 +2,8 @@
  * (commands.h).  Each either applies its statement whole or changes nothing and
  * reports an error.  They live by concern: cmd_object.c (objects and their
  * properties), cmd_setting.c (settings), cmd_time.c (time and files),
- * cmd_console.c (what a console tool adds), cmd_sound.c (sound and movies),
- * random.c (random objects). */
+ * cmd_console.c (what a console tool adds), cmd_hand.c (the hand and the tool
+ * panel), cmd_sound.c (sound and movies), random.c (random objects). */
 #ifndef VROC_HANDLERS_H
 #define VROC_HANDLERS_H
 
@@ -23,12 +23,18 @@ cmd_status cmd_seed(struct shell *sh, const stmt *st);
 cmd_status cmd_image_size(struct shell *sh, const stmt *st);
 cmd_status cmd_stereo(struct shell *sh, const stmt *st);
 cmd_status cmd_real(struct shell *sh, const stmt *st);
-cmd_status cmd_tracker(struct shell *sh, const stmt *st);
 cmd_status cmd_log(struct shell *sh, const stmt *st);
 cmd_status cmd_gravity(struct shell *sh, const stmt *st);
 cmd_status cmd_reset(struct shell *sh, const stmt *st);
+
+cmd_status cmd_hand(struct shell *sh, const stmt *st);
+cmd_status cmd_trigger(struct shell *sh, const stmt *st);
 cmd_status cmd_select(struct shell *sh, const stmt *st);
 cmd_status cmd_reselect(struct shell *sh, const stmt *st);
+cmd_status cmd_tracker(struct shell *sh, const stmt *st);
+cmd_status cmd_tracker_time(struct shell *sh, const stmt *st);
+cmd_status cmd_hand_log(struct shell *sh, const stmt *st);
+cmd_status cmd_grip(struct shell *sh, const stmt *st);
 
 cmd_status cmd_step(struct shell *sh, const stmt *st);
 cmd_status cmd_run(struct shell *sh, const stmt *st);

@@ -21,6 +21,7 @@
 #include "core/limits.h"
 #include "lex.h"
 #include "fmt.h"
+#include "grow.h"
 
 /* Files larger than this are refused (a scene is a few kilobytes). */
 #define LANG_MAX_FILE (64L * 1024 * 1024)
@@ -501,13 +502,9 @@ static int parse_stmt(stmt *st, const token *t, int nt, const where *at)
 
 static int prog_push(program *p, const stmt *st)
 {
-    if (p->n == p->cap) {
-        int cap = p->cap ? 2 * p->cap : 16;
-        stmt *ns = realloc(p->s, (size_t)cap * sizeof *ns);
-        if (!ns) return -1;
-        p->s = ns;
-        p->cap = cap;
-    }
+    stmt *ns = grow_for_one(p->s, p->n, &p->cap, sizeof *ns, 16);
+    if (!ns) return -1;
+    p->s = ns;
     p->s[p->n++] = *st;
     return 0;
 }
@@ -529,6 +526,20 @@ static int load_sub(stmt *st, const lang_paths *paths, int depth, const char **s
     st->sub = lang_parse_file(st->word, paths, depth + 1, stack, n_stack, at->name, at->line,
                               at->err, at->errlen);
     return st->sub ? 0 : -1;
+}
+
+/* A file the statement reads (a tracker file) is found as read finds its file:
+ * st->word becomes the path found, or stays as written when there is none (its
+ * handler then says so).  Returns 0, or -1 when out of memory. */
+static int resolve_word(stmt *st, const lang_paths *paths)
+{
+    char full[PATH_MAX];
+    if (lang_resolve(st->word, paths, full, sizeof full) != 0 || strcmp(full, st->word) == 0) return 0;
+    char *found = strdup(full);
+    if (!found) return -1;
+    free(st->word);
+    st->word = found;
+    return 0;
 }
 
 program *lang_parse(const char *text, size_t len, const char *name, int first_line,
@@ -567,6 +578,10 @@ program *lang_parse(const char *text, size_t len, const char *name, int first_li
                     goto fail;
                 }
                 st.file = prog->path;
+                if (strcmp(st.cmd->name, "tracker") == 0 && st.n == 0 && resolve_word(&st, paths) != 0) {
+                    stmt_clear(&st);
+                    goto oom;
+                }
                 if (strcmp(st.cmd->name, "read") == 0 &&
                     load_sub(&st, paths, depth, stack, n_stack, &at) != 0) {
                     stmt_clear(&st);

@@ -18,6 +18,7 @@
 
 #include "commands.h"
 #include "core/world.h"
+#include "hand/hand.h"
 #include "lang.h"
 #include "log.h"
 #include "sound/sound.h"
@@ -26,21 +27,13 @@
 /* Longest path a setting of the shell's holds, with its final NUL. */
 #define SHELL_PATH_MAX 1024
 
-/* The settings the shell owns: where `random` places objects, and the hand's,
- * which are kept here until their own layer gives them effect. */
+/* The settings the shell owns: where `random` places objects. */
 typedef struct {
     vec3 random_box;        /* half-extents of the box random objects go in */
     unsigned long seed;     /* of random's sequence */
-    /* the hand-held tracker (thesis Appendix A.1.2) */
-    vec3 hand;
-    dir_amount hand_rotate; /* axis and angle, radians */
-    bool trigger;
-    bool select_mode;
-    char tracker[SHELL_PATH_MAX];
 } shell_settings;
 
-/* The start-up values: random_box (2, 2, 2), seed 1, the hand at the origin,
- * trigger up, select mode off, no tracker. */
+/* The start-up values: random_box (2, 2, 2), seed 1. */
 shell_settings shell_settings_defaults(void);
 
 typedef struct shell {
@@ -48,6 +41,7 @@ typedef struct shell {
     view_settings view_set;
     shell_settings set;
     sound_settings sound_set;
+    hand hand;             /* the hand-held tracker and the tool panel */
     struct {               /* what restart returns to: defaults and -o */
         sim_settings sim;
         view_settings view;
@@ -61,14 +55,18 @@ typedef struct shell {
     double wall_time;      /* seconds spent advancing time */
     bool running;          /* `start` given and not stopped */
     int current;           /* index of the current object, or -1 */
-    int selected;          /* object held by the hand, or -1 */
-    int prev_selected;     /* for reselect, or -1 */
+    const stmt *running_st; /* the statement running (for the hand's messages) */
+    bool hand_failed;      /* the hand reported an error since it began */
     bool interactive;      /* a terminal with readline */
     bool quiet;            /* -q */
     bool stop_on_error;    /* -b, or input that is not a terminal */
     FILE *out, *err;
     const char *scene_dir; /* installed scenes folder */
     unsigned long long rng; /* state of `random`, reset by seed */
+    bool at_prompt;        /* readline shows the prompt and a line being typed: a
+                            * message first breaks the line (line_broken), and
+                            * the prompt is drawn again after it (prompt.c) */
+    bool line_broken;
     bool found_apart;      /* shell_check_start found no overlap since the last
                             * statement began: time may run on unchecked */
 } shell;
@@ -108,9 +106,14 @@ cmd_status shell_advance(shell *sh, const stmt *st, long n);
 cmd_status shell_output_failed(shell *sh, const stmt *st, const char *what, const char *err);
 
 /* Finishes the movie and the soundtrack (media.h) and closes the logs, checking
- * their last writes; at the end of the program, before shell_free.  Returns
+ * their last writes: at the end of the program, before shell_free.  Returns
  * CMD_ERROR (after saying why) when one failed. */
 cmd_status shell_close_outputs(shell *sh);
+
+/* Closes the logs (trace, events, hand_log), checking their last writes, as the
+ * end of the program and restart (st) do; the movie and soundtrack go on.
+ * Returns CMD_ERROR (after saying why) when one failed. */
+cmd_status shell_close_logs(shell *sh, const stmt *st);
 
 /* Messages about statement st (NULL: no location). */
 void sh_error(shell *sh, const stmt *st, const char *fmt, ...)
@@ -122,6 +125,18 @@ void sh_info(shell *sh, const char *fmt, ...) __attribute__((format(printf, 2, 3
 
 /* Seconds on the monotonic clock (wall time). */
 double shell_clock(void);
+
+/* After the hand acted (a statement, a frame, a tick of the wall clock): the object
+ * it grabbed or re-selected becomes current, the head flies as it flew, a hand_log
+ * row that failed turns hand_log off (shell_output_failed), and the panel's
+ * buttons it pressed run as their commands.  Returns CMD_ERROR when the log's
+ * failure stops the run, else what the buttons' commands returned (CMD_OK when
+ * none). */
+cmd_status shell_after_hand(shell *sh);
+
+/* The hand and the panel as the views draw them (view_settings.overlay), from the
+ * hand now: called before each drawing. */
+void shell_overlay(shell *sh);
 
 /* The address of setting c's field (a FORM_SETTING) in its owner's settings. */
 void *shell_setting_field(shell *sh, const command *c);

@@ -25,7 +25,7 @@
 /* a property of the body, at field (of body) */
 #define PROP(name, arg, range, lo, hi, classes, field) \
     {name, FORM_PROPERTY, arg, range, lo, hi, NULL, classes, OWN_NONE, offsetof(body, field), cmd_property, NO_AFTER}
-/* settings of the simulation, the views, the shell and the sound, at field of their struct */
+/* settings of the simulation, the views, the shell, the sound and the hand, at field of their struct */
 #define SIM(name, arg, range, lo, hi, field) \
     {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SIM, offsetof(sim_settings, field), cmd_setting, NO_AFTER}
 #define VIEW(name, arg, range, lo, hi, field) \
@@ -40,6 +40,10 @@
     {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SOUND, offsetof(sound_settings, field), cmd_setting, NO_AFTER}
 #define SOUNDF(name, arg, range, lo, hi, field, fn) \
     {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SOUND, offsetof(sound_settings, field), fn, NO_AFTER}
+#define HAND(name, arg, range, lo, hi, field) \
+    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_HAND, offsetof(hand_settings, field), cmd_setting, NO_AFTER}
+#define HANDF(name, arg, range, lo, hi, field, fn) \
+    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_HAND, offsetof(hand_settings, field), fn, NO_AFTER}
 /* a setting kept elsewhere (the logs, the soundtrack, the movie): its handler knows where */
 #define OTHER(name, arg, fn) {name, FORM_SETTING, arg, 0, 0, 0, NULL, 0, OWN_NONE, 0, fn, NO_AFTER}
 #define OTHER_R(name, arg, lo, hi, fn) \
@@ -56,8 +60,8 @@
     {name, FORM_PROPERTY, VAL_VECTOR_ANGLE, range, lo, hi, NULL, classes, OWN_NONE, offsetof(body, field), cmd_property, what2, lo2, hi2}
 #define SIM_A(name, range, lo, hi, field, what2, lo2, hi2) \
     {name, FORM_SETTING, VAL_VECTOR_ANGLE, range, lo, hi, NULL, 0, OWN_SIM, offsetof(sim_settings, field), cmd_setting, what2, lo2, hi2}
-#define SHELL_A(name, range, lo, hi, field, what2, lo2, hi2) \
-    {name, FORM_SETTING, VAL_VECTOR_ANGLE, range, lo, hi, NULL, 0, OWN_SHELL, offsetof(shell_settings, field), cmd_setting, what2, lo2, hi2}
+#define HAND_A(name, range, lo, hi, field, what2, lo2, hi2, fn) \
+    {name, FORM_SETTING, VAL_VECTOR_ANGLE, range, lo, hi, NULL, 0, OWN_HAND, offsetof(hand_settings, field), fn, what2, lo2, hi2}
 
 /* In the order of help's groups; show and save write the settings in this order. */
 const command command_table[] = {
@@ -148,13 +152,23 @@ const command command_table[] = {
     VIEW("background", VAL_COLOR, R_RANGE, 0, 255, background),
     CHOICE("real", "solid|wire|hidden", cmd_real),
     VIEW("record", VAL_ONOFF, 0, 0, 0, record),
-    SHELL("hand", VAL_VECTOR, R_RANGE, -POS, POS, hand),
-    SHELL_A("hand_rotate", R_NONZERO_VEC | R_RANGE, -POS, POS, hand_rotate,
-            "angle", -LIM_ANGLE_MAX, LIM_ANGLE_MAX),
-    SHELL("trigger", VAL_ONOFF, 0, 0, 0, trigger),
+    HANDF("hand", VAL_VECTOR, R_RANGE, -POS, POS, hand, cmd_hand),
+    HAND_A("hand_rotate", R_NONZERO_VEC | R_RANGE, -POS, POS, hand_rotate,
+           "angle", -LIM_ANGLE_MAX, LIM_ANGLE_MAX, cmd_hand),
+    HANDF("trigger", VAL_ONOFF, 0, 0, 0, trigger, cmd_trigger),
     ACT("select", ARG_OPT_ONOFF, cmd_select),
     ACT("reselect", ARG_NONE, cmd_reselect),
-    SHELLF("tracker", VAL_FILE_OR_OFF, 0, 0, 0, tracker, cmd_tracker),
+    HAND("reach", VAL_NUMBER, R_RANGE, 0, LIM_LENGTH_MAX, reach),
+    HAND("fly_speed", VAL_NUMBER, R_RANGE, 0, LIM_SPEED_MAX, fly_speed),
+    HANDF("tracker", VAL_FILE_OR_OFF, 0, 0, 0, tracker, cmd_tracker),
+    OTHER_R("tracker_time", VAL_NUMBER, 0, LIM_CLOCK_MAX, cmd_tracker_time),
+    HANDF("hand_log", VAL_FILE_OR_OFF, 0, 0, 0, hand_log, cmd_hand_log),
+    {"grip", FORM_SETTING, ARG_NAME, 0, 0, 0, "off|none|fly|panel|time_step|collision_dist", 0, OWN_NONE, 0,
+     cmd_grip, NO_AFTER},
+    HAND("panel", VAL_ONOFF, 0, 0, 0, panel),
+    HAND("panel_at", VAL_VECTOR, R_RANGE, -POS, POS, panel_at),
+    HAND_A("panel_rotate", R_NONZERO_VEC | R_RANGE, -POS, POS, panel_rotate,
+           "angle", -LIM_ANGLE_MAX, LIM_ANGLE_MAX, cmd_setting),
     /* sound and movies */
     SOUNDF("sound", VAL_ONOFF, 0, 0, 0, live, cmd_sound),
     OTHER("soundtrack", VAL_FILE_OR_OFF, cmd_soundtrack),

@@ -24,9 +24,12 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
     const view_settings *vs = &sh->view_set;
     char a[32];
     const char *n = c->name;
+    const hand_settings *hs = &sh->hand.set;
+    bool hand_log = strcmp(n, "hand_log") == 0;
     if (strcmp(n, "trace") == 0 || strcmp(n, "events") == 0 || strcmp(n, "soundtrack") == 0 ||
-        strcmp(n, "movie") == 0) { /* outputs: a save does not start them again */
-        const char *path = strcmp(n, "trace") == 0    ? sh->logs.trace_path
+        strcmp(n, "movie") == 0 || hand_log) { /* outputs: a save does not start them again */
+        const char *path = hand_log                   ? hs->hand_log
+                           : strcmp(n, "trace") == 0  ? sh->logs.trace_path
                            : strcmp(n, "events") == 0 ? sh->logs.events_path
                            : n[0] == 's'              ? media_soundtrack_path(sh)
                                                       : media_movie_path(sh);
@@ -35,13 +38,26 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
                 path[0] ? path : "off", path[0] ? "\"" : "");
         return;
     }
+    /* what the hand does, after the objects it may hold (hand_write) */
+    bool after = strcmp(n, "tracker") == 0 || strcmp(n, "tracker_time") == 0 ||
+                 strcmp(n, "grip") == 0 || strcmp(n, "trigger") == 0;
+    if (for_save && (after || (!sh->hand.used && (strcmp(n, "hand") == 0 || strcmp(n, "hand_rotate") == 0))))
+        return;
     if (strcmp(n, "tracker") == 0) {
-        if (s->tracker[0]) fprintf(out, "tracker = \"%s\"\n", s->tracker);
+        if (hs->tracker[0]) fprintf(out, "tracker = \"%s\"\n", hs->tracker);
         else fprintf(out, "tracker = off\n");
         return;
     }
     if (strcmp(n, "sound") == 0) {
         fprintf(out, "sound = %s\n", media_live_on(sh) ? "on" : "off");
+        return;
+    }
+    if (strcmp(n, "tracker_time") == 0) {
+        fprintf(out, "tracker_time = %s\n", fmt_num(a, hand_tracker_time(&sh->hand)));
+        return;
+    }
+    if (strcmp(n, "grip") == 0) {
+        fprintf(out, "grip = %s\n", hand_grip_word(&sh->hand, &sh->w));
         return;
     }
     if (strcmp(n, "seed") == 0) {
@@ -103,8 +119,23 @@ void settings_write(FILE *out, const shell *sh, int for_save)
         const command *c = &command_table[i];
         if (c->form == FORM_SETTING) write_setting(out, sh, c, for_save);
         else if (c->run == cmd_select) /* the hand's select mode is a setting too */
-            fprintf(out, "select %s\n", sh->set.select_mode ? "on" : "off");
+            fprintf(out, "select %s\n", sh->hand.set.select_mode ? "on" : "off");
     }
+}
+
+void hand_write(FILE *out, const shell *sh)
+{
+    const hand *h = &sh->hand;
+    char a[32];
+    if (!h->used) return;
+    fprintf(out, "# the hand\n");
+    if (h->playing) {
+        fprintf(out, "tracker = \"%s\"\ntracker_time = %s\n", h->set.tracker,
+                fmt_num(a, hand_tracker_time(h)));
+    } else if (h->set.tracker[0]) {
+        fprintf(out, "# tracker = \"%s\" (a live feed: not opened again)\n", h->set.tracker);
+    }
+    fprintf(out, "grip = %s\n", hand_grip_word(h, &sh->w));
 }
 
 void body_write(FILE *out, const body *b)
