@@ -3,7 +3,8 @@
 #   make               build ./vroc
 #   make check         build and run every test: normal, ASan+UBSan and validation builds
 #   make bench         build and run the benchmarks
-#   make demo          the main job: run a thesis scene and write its stereo frames
+#   make demo          the main job: run a thesis scene and write its stereo frames,
+#                      and a movie of them with the collisions' sound
 #   make deps          install the missing Debian packages (apt-get, sudo when not root)
 #   make record-hashes record the scenes' trace hashes anew (after an intended change)
 #   make fuzz          an AFL++ campaign of FUZZ_TIME seconds (tools/fuzz.sh)
@@ -13,7 +14,8 @@
 # The layers are libraries, each linked only with what it may use:
 #   build/libvroc-core.a   src/core/: the simulation (libc, libm and qhull only; its
 #                          objects see no header outside src/core/)
-#   build/libvroc.a        src/shell/ (but main.c) and src/view/, on top of the core
+#   build/libvroc.a        src/shell/ (but main.c), src/view/, src/sound/ and src/hand/, on top of
+#                          the core
 # The core's unit tests link the core library alone, so a call from the core into
 # a higher layer fails to link.  Objects go to build/ (normal), build-san/
 # (sanitizers) and build-val/ (validation: the schedule's and the polyhedra's
@@ -27,10 +29,10 @@ SCENEDIR = $(PREFIX)/share/vroc/scenes
 
 VERSION  = 0.1.0
 CORE_PKGS = qhull_r
-PKGS     = readline osmesa libpng qhull_r sndfile
+PKGS     = readline osmesa libpng qhull_r sndfile samplerate libpulse-simple libpulse
 # linked: all but OSMesa, which the views load with dlopen when they first draw
 # (src/view/gl_load.h), so that a run that draws nothing never maps it
-LINK_PKGS = readline libpng qhull_r sndfile
+LINK_PKGS = readline libpng qhull_r sndfile samplerate libpulse-simple libpulse
 CC      ?= cc
 WARN     = -Wall -Wextra -Wpedantic -Werror -Wshadow -Wmissing-prototypes
 CSTD     = -std=c17 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
@@ -55,7 +57,8 @@ SAN        = -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-
 VAL        = -DVROC_VALIDATE
 
 CORE_SRC  = $(sort $(wildcard src/core/*.c))
-UPPER_SRC = $(sort $(filter-out src/shell/main.c,$(wildcard src/shell/*.c)) $(wildcard src/view/*.c))
+UPPER_SRC = $(sort $(filter-out src/shell/main.c,$(wildcard src/shell/*.c)) $(wildcard src/view/*.c) \
+                   $(wildcard src/sound/*.c) $(wildcard src/hand/*.c))
 COMMANDS  = $(sort $(wildcard commands/*))
 # the core's own tests link libvroc-core.a alone; the others the whole program
 CORE_TESTS  = test_broad test_closest test_collide test_flight test_geometry test_lcp test_physics test_schedule test_spin
@@ -114,6 +117,14 @@ $(1)/view/%.o: src/view/%.c build/flags
 	@mkdir -p $$(@D)
 	$$(or $(3),$$(CC)) $$(CFLAGS_ALL) $(2) -MMD -MP -c -o $$@ $$<
 
+$(1)/sound/%.o: src/sound/%.c build/flags
+	@mkdir -p $$(@D)
+	$$(or $(3),$$(CC)) $$(CFLAGS_ALL) $(2) -MMD -MP -c -o $$@ $$<
+
+$(1)/hand/%.o: src/hand/%.c build/flags
+	@mkdir -p $$(@D)
+	$$(or $(3),$$(CC)) $$(CFLAGS_ALL) $(2) -MMD -MP -c -o $$@ $$<
+
 $(1)/help_data.o: build/gen/help_data.c build/flags
 	@mkdir -p $$(@D)
 	$$(or $(3),$$(CC)) $$(CFLAGS_ALL) $(2) -c -o $$@ $$<
@@ -153,9 +164,15 @@ check: deps
 	@$(MAKE) --no-print-directory check-build
 	@sh tests/run.sh
 
-check-build: vroc man/vroc.1 build-san/vroc build-val/vroc \
+check-build: vroc man/vroc.1 build-san/vroc build-val/vroc build/tests/wavtool \
              $(addprefix build/tests/,$(CORE_TESTS) $(UPPER_TESTS)) \
              $(addprefix build-san/tests/,$(CORE_TESTS) $(UPPER_TESTS))
+
+# The sound tests' reader of WAV files (its own parser, not the libsndfile vroc
+# writes them with), built once for both builds' script tests.
+build/tests/wavtool: tests/wavtool.c tests/tone.h build/flags
+	@mkdir -p $(@D)
+	$(CC) $(BASE) -o $@ $< -lm
 
 # The scenes' trace hashes (tests/hashes.sh checks them): recorded anew only after a
 # change meant to change the simulation, and the commit says why.
@@ -187,8 +204,11 @@ fuzz:
 # ---- the main job ----
 demo: deps
 	@$(MAKE) --no-print-directory vroc
-	./vroc -b scenes/simple.vroc -c 'output = "frames"; record = on; run 30; stats'
-	@echo "demo: stereo frames of the Simple scene are in frames/"
+	@mkdir -p frames
+	./vroc -b scenes/simple.vroc -c 'output = "frames"; record = on; collision_sound = knock' \
+	    -c 'soundtrack = "frames/simple.wav"; movie = "frames/simple.mp4"; run 30; stats'
+	@echo "demo: stereo frames of the Simple scene are in frames/, and a movie of them"
+	@echo "      with the sound of the balls on the table: frames/simple.mp4"
 
 deps:
 	@sh tools/deps.sh
@@ -197,7 +217,7 @@ install: vroc man/vroc.1
 	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(MANDIR) $(DESTDIR)$(SCENEDIR)
 	install -m 755 vroc $(DESTDIR)$(BINDIR)/vroc
 	install -m 644 man/vroc.1 $(DESTDIR)$(MANDIR)/vroc.1
-	install -m 644 scenes/*.vroc $(DESTDIR)$(SCENEDIR)/
+	install -m 644 scenes/*.vroc scenes/*.csv $(DESTDIR)$(SCENEDIR)/
 
 uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/vroc $(DESTDIR)$(MANDIR)/vroc.1
@@ -206,4 +226,4 @@ uninstall:
 clean:
 	rm -rf build build-san build-val build-fuzz vroc tests/out
 
--include $(wildcard build*/core/*.d build*/shell/*.d build*/view/*.d build*/tests/*.d)
+-include $(wildcard build*/core/*.d build*/shell/*.d build*/view/*.d build*/sound/*.d build*/hand/*.d build*/tests/*.d)

@@ -3,9 +3,7 @@
 # runs as a script: `vroc -b -q` on it in an empty folder, with the scenes folder
 # at hand (VROC_SCENES) and VROC_SANDBOX=1, must end with status 0 and print no
 # error or warning, so that what help and the manual show stays true.  Examples
-# that need a terminal (none yet) are listed in NEEDS_TTY and skipped.  The
-# reselect page says its example is an error until the hand can hold objects:
-# that error is what its example must give.
+# that need a terminal (none yet) are listed in NEEDS_TTY and skipped.
 . "$(dirname "$0")/lib.sh"
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 NEEDS_TTY=""
@@ -17,12 +15,6 @@ for f in "$ROOT"/commands/*; do
     if [ ! -s "$TMP/ex/$name.vroc" ]; then notok "$name has an example"; continue; fi
     out=$(cd "$TMP/ex/$name" && VROC_SCENES="$ROOT/scenes" VROC_SANDBOX=1 "$VROC" -b -q "../$name.vroc" 2>&1 >/dev/null)
     status=$?
-    if [ "$name" = reselect ]; then
-        case "$status:$out" in "1:../reselect.vroc:2: error: reselect: no object has been selected yet")
-            ok "the example of reselect gives the error its page tells of" ;;
-            *) notok "the example of reselect gives the error its page tells of" "status $status" "$out" ;; esac
-        continue
-    fi
     if [ $status -eq 0 ] && ! printf '%s' "$out" | grep -qE '(error|warning):'; then
         ok "the example of $name runs as a script"
     else

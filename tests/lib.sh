@@ -28,3 +28,29 @@ expect() {
 same() {
     if cmp -s "$2" "$3"; then ok "$1"; else notok "$1" "$(diff "$2" "$3" | head -10)"; fi
 }
+
+# The prompt through tmux (prompt.sh, hand_prompt.sh).  tmux_ready: tmux is there
+# (else a failed check: the caller exits), its server kept in the test's folder.
+# Then the session $SES's screen, keys typed into it, and checks of what it shows.
+tmux_ready() {
+    if ! command -v tmux >/dev/null 2>&1; then
+        notok "tmux is installed (make deps installs it)"
+        return 1
+    fi
+    export TMUX_TMPDIR="$TMP"
+}
+screen() { tmux capture-pane -p -t "$SES" -S -80; }
+type_() { tmux send-keys -t "$SES" "$@"; }
+# wait until the screen shows PATTERN (fixed string), up to 20 s (sanitizer builds are slow)
+wait_for() {
+    i=0
+    while [ $i -lt 200 ]; do
+        screen | grep -qF -- "$1" && return 0
+        sleep 0.1
+        i=$((i + 1))
+    done
+    return 1
+}
+check_screen() { # TEXT PATTERN
+    if wait_for "$2"; then ok "$1"; else notok "$1" "screen: $(screen | tail -8)"; fi
+}

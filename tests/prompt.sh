@@ -2,27 +2,8 @@
 # prompt.sh: the prompt driven through tmux as a person would use it: typing, Tab
 # completion, history, an error and going on, start and Ctrl-C, Ctrl-D.
 . "$(dirname "$0")/lib.sh"
-if ! command -v tmux >/dev/null 2>&1; then
-    notok "tmux is installed (make deps installs it)"
-    exit 0
-fi
-export TMUX_TMPDIR="$TMP"
+tmux_ready || exit 0
 SES=vroc$$
-screen() { tmux capture-pane -p -t "$SES" -S -60; }
-type_() { tmux send-keys -t "$SES" "$@"; }
-# wait until the screen shows PATTERN (fixed string), up to 20 s (sanitizer builds are slow)
-wait_for() {
-    i=0
-    while [ $i -lt 200 ]; do
-        screen | grep -qF -- "$1" && return 0
-        sleep 0.1
-        i=$((i + 1))
-    done
-    return 1
-}
-check_screen() { # TEXT PATTERN
-    if wait_for "$2"; then ok "$1"; else notok "$1" "screen: $(screen | tail -8)"; fi
-}
 
 tmux -f /dev/null new-session -d -s "$SES" -x 120 -y 40 \
     "cd '$TMP' && HOME='$TMP' ASAN_OPTIONS='$ASAN_OPTIONS' '$VROC'; echo EXIT=\$?; sleep 30"

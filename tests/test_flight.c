@@ -4,7 +4,8 @@
  * the box's closed-form inertia (not vroc's mass code) and against an independent
  * RK4 integration of Euler's equations with tiny steps; a symmetric top, turned in
  * closed form, against the same at any step; the speed limits; the
- * internal-step count of language.md ("Time"). */
+ * internal-step count of language.md ("Time"); a held body's flight about its
+ * moving pivot (hold.h), and a hook acting within a frame (sim.h). */
 #include "check.h"
 
 #include <stdlib.h>
@@ -12,6 +13,7 @@
 
 #include "core/edit.h"
 #include "core/flight.h"
+#include "core/hold.h"
 #include "core/rest.h"
 #include "core/sim.h"
 #include "core/world.h"
@@ -283,6 +285,78 @@ static void pair_counts(void **state)
     world_free(&w);
 }
 
+/* A held box (hold.h) under gravity: its centre goes round the pivot, which moves
+ * at a constant velocity, and it turns rigidly with it, exactly whatever the
+ * internal step; gravity does not move it. */
+static void held_body_turns_about_its_moving_pivot(void **state)
+{
+    (void)state;
+    const double steps[] = {0, 0.0123, 0.1};
+    for (size_t k = 0; k < sizeof steps / sizeof steps[0]; k++) {
+        world w;
+        world_init(&w);
+        w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
+        w.set.internal_step = steps[k];
+        body *b = add_box(&w, "bat", v3(0.3, 0.05, 0.05));
+        b->x = v3(0.5, 0, 1);
+        vec3 p0 = v3(0.2, 0, 1), v = v3(0.5, -0.25, 1), wv = v3(0, 0, 2);
+        assert_int_equal(hold_set(&w, 0, (hold_motion){p0, v, wv}), 0);
+        assert_true(b->held);
+        run_frames(&w, 10);
+        double t = 1.0, a = 2 * t;
+        vec3 r = v3(0.3 * cos(a), 0.3 * sin(a), 0); /* (0.3, 0, 0) turned by 2 rad */
+        vec3 want = v3_add(v3_mad(p0, v, t), r);
+        assert_vec_near(b->x, want, 1e-12);
+        assert_vec_near(b->v, v3_add(v, v3_cross(wv, r)), 1e-12);
+        assert_near(fabs(b->q.w), cos(0.5 * a), 1e-12);
+        assert_vec_near(b->w, wv, 0);
+        assert_vec_near(b->hold_pivot, v3_mad(p0, v, t), 1e-12);
+        world_free(&w);
+    }
+}
+
+/* sim_frame_hooked: the hook acts at its exact instant within an internal step;
+ * a held ball released there flies the projectile from that instant. */
+typedef struct {
+    double at;
+    bool done;
+} release_hook;
+
+static double release_next(void *ctx, const world *w)
+{
+    (void)w;
+    const release_hook *r = ctx;
+    return r->done ? HUGE_VAL : r->at;
+}
+
+static void release_at(void *ctx, world *w)
+{
+    release_hook *r = ctx;
+    assert_true(w->time == r->at); /* the step was cut there */
+    hold_release(w, 0, v3(1, 0, 3), v3(0, 0, 0));
+    r->done = true;
+}
+
+static void hook_acts_at_its_instant(void **state)
+{
+    (void)state;
+    world w;
+    world_init(&w);
+    w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
+    w.set.internal_step = 0.1; /* one internal step a frame: the hook cuts it */
+    body *b = add(&w, "ball", SHAPE_SPHERE);
+    b->x = v3(0, 0, 2);
+    assert_int_equal(hold_set(&w, 0, (hold_motion){b->x, v3(0, 0, 0), v3(0, 0, 0)}), 0);
+    release_hook r = {0.1234, false};
+    sim_hook hook = {release_next, release_at, &r};
+    char err[128];
+    for (int f = 0; f < 5; f++) assert_int_equal(sim_frame_hooked(&w, &hook, err, sizeof err), 0);
+    assert_true(r.done && !b->held);
+    double t = 0.5 - 0.1234;
+    assert_vec_near(b->x, v3(t, 0, 2 + 3 * t - 0.5 * 9.8 * t * t), 1e-12);
+    world_free(&w);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -294,6 +368,8 @@ int main(void)
         cmocka_unit_test(static_objects_never_move),
         cmocka_unit_test(internal_steps_per_frame),
         cmocka_unit_test(pair_counts),
+        cmocka_unit_test(held_body_turns_about_its_moving_pivot),
+        cmocka_unit_test(hook_acts_at_its_instant),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -310,7 +310,8 @@ static void numbers_print_to_read_back_exactly(void **state)
     (void)state;
     char buf[32];
     assert_string_equal(fmt_num(buf, 0.1), "0.1");
-    assert_string_equal(fmt_num(buf, -0.0), "0");
+    assert_string_equal(fmt_num(buf, -0.0), "-0"); /* the sign bit too: exact state */
+    assert_string_equal(fmt_num(buf, 0.0), "0");
     assert_string_equal(fmt_num(buf, 1e-300), "1e-300");
     unsigned long long s = 42;
     for (int i = 0; i < 100000; i++) {

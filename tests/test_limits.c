@@ -72,6 +72,7 @@ static bool is_numeric(const command *c)
     case VAL_VECTOR_ANGLE:
     case VAL_SIZE2:
     case VAL_RANGE2:
+    case VAL_PAIR:
     case VAL_COLOR: return true;
     default: return false;
     }
@@ -120,6 +121,7 @@ static void statement(const command *c, double x, int k, double other, char *buf
     case VAL_INTEGER: snprintf(buf, len, "%s = %s", n, fmt_num(a, x)); break;
     case VAL_SIZE2:
     case VAL_RANGE2:
+    case VAL_PAIR:
         snprintf(buf, len, "%s = (%s, %s)", n, fmt_num(a, v[0]), fmt_num(b, v[1]));
         break;
     case VAL_VECTOR_ANGLE:
@@ -137,6 +139,13 @@ static const char *kind_for(const command *c)
 {
     if (c->form != FORM_PROPERTY || (c->classes & C_SPHERE)) return "sphere";
     return (c->classes & C_CUBE) ? "cube" : "superquadric";
+}
+
+/* What c needs before it: a tracker file playing, for tracker_time (which is an
+ * error without one). */
+static const char *context_for(const command *c)
+{
+    return strcmp(c->name, "tracker_time") == 0 ? "tracker = scenes/panel-demo.csv; " : "";
 }
 
 /* Runs set (a statement of c) on a fresh world with object o; *accepted gets
@@ -157,8 +166,8 @@ static cmd_status try_value(const command *c, const char *set)
         program_free(p);
         return p ? CMD_OK : CMD_ERROR;
     }
-    snprintf(text, sizeof text, "restart; %s o; angular_vel = (0.5, 0.2, 0.1); %s\n",
-             kind_for(c), set);
+    snprintf(text, sizeof text, "restart; %s o; angular_vel = (0.5, 0.2, 0.1); %s%s\n",
+             kind_for(c), context_for(c), set);
     return run(text);
 }
 
@@ -181,11 +190,12 @@ static void run_at(const command *c, const char *set)
                  fmt_num(a, body_com(o).x - o->shape.r_out - 1.5), fmt_num(b, at.y),
                  fmt_num(d, at.z));
     if (run(text) != CMD_OK) fail_msg("after '%s': '%s' failed: %s", set, text, g_errbuf);
+    long frame0 = g_sh.w.frame; /* (frame = N sets it) */
     cmd_status r = run("run 2\n");
     /* a frame that needs more internal steps than a frame may take is refused */
     if (r != CMD_OK && !strstr(g_errbuf, "internal steps per frame"))
         fail_msg("after '%s': run 2 failed: %s", set, g_errbuf);
-    if (r == CMD_OK) assert_int_equal(g_sh.w.frame, 2);
+    if (r == CMD_OK) assert_int_equal(g_sh.w.frame, frame0 + 2);
     g_runs += r == CMD_OK;
     assert_int_equal(run("print o; print p; show; stats; distance o p; time; list\n"), CMD_OK);
     char what[700];
@@ -200,11 +210,11 @@ static void walk_limit(const command *c, double x, int outwards, bool open)
     double at = open ? nextafter(x, outwards < 0 ? INFINITY : -INFINITY) : x;
     double out = open ? x : beyond(c, x, outwards);
     bool vector = c->arg == VAL_VECTOR || c->arg == VAL_VECTOR_ANGLE || c->arg == VAL_SIZE2 ||
-                  c->arg == VAL_RANGE2 || c->arg == VAL_COLOR;
+                  c->arg == VAL_RANGE2 || c->arg == VAL_PAIR || c->arg == VAL_COLOR;
     statement(c, at, -1, at, set, sizeof set);
     if (try_value(c, set) != CMD_OK) fail_msg("'%s' (at the limit) was refused: %s", set, g_errbuf);
     if (c->form != FORM_ACTION) run_at(c, set);
-    int ncomp = c->arg == VAL_SIZE2 || c->arg == VAL_RANGE2 ? 2 : vector ? 3 : 1;
+    int ncomp = c->arg == VAL_SIZE2 || c->arg == VAL_RANGE2 || c->arg == VAL_PAIR ? 2 : vector ? 3 : 1;
     for (int k = 0; k < ncomp; k++) {
         statement(c, out, vector ? k : -1, at, set, sizeof set);
         if (try_value(c, set) != CMD_ERROR) fail_msg("'%s' (beyond the limit) was accepted", set);

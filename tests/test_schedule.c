@@ -126,18 +126,10 @@ static double first_contact(const world *w, double h, double tmax, double gap)
     return HUGE_VAL;
 }
 
-/* The motion of body i of w at time 0, as the bounds take it. */
+/* The motion of body i of w at time 0, as the bounds take it (step.h). */
 static sched_move move_of(const world *w, int i)
 {
-    const flight *f = &w->step.fl[i];
-    const body *b = w->bodies[i];
-    sched_move m = {.moves = step_moves(w, i)};
-    if (!m.moves) return m;
-    m.c = body_com(b);
-    m.v = b->v;
-    m.a = f->a;
-    m.rate = f->rate;
-    return m;
+    return step_move(w, i, w->bodies[i]);
 }
 
 /* Random pairs, spinning and aimed at each other, some static, some under

@@ -80,6 +80,16 @@ static void path_in_dir(char *out, size_t len, const char *name)
     snprintf(out, len, "%s/%s", g_dir, name);
 }
 
+/* The statements fmt makes of the path of name in the test's folder (fmt's one
+ * %s), in text (returned). */
+static const char *about(char *text, size_t len, const char *fmt, const char *name)
+{
+    char path[256];
+    path_in_dir(path, sizeof path, name);
+    snprintf(text, len, fmt, path);
+    return text;
+}
+
 static void write_file(const char *name, const char *text, size_t n)
 {
     char path[256];
@@ -164,9 +174,30 @@ static void the_bad_input_catalogue(void **state)
     bad("save /nonexistent/dir/world.vroc\n", "cannot write '/nonexistent/dir/world.vroc'");
     bad("trace = /nonexistent/dir/t.csv\n", "cannot write '/nonexistent/dir/t.csv'");
     bad("collision_sound = /nonexistent.wav\n", "cannot read '/nonexistent.wav'");
+    /* sound and movies: the sound in use and the outputs stay as they were */
+    write_file("empty.wav", "", 0);
+    write_file("words.wav", "not a sound at all\n", 19);
+    bad(about(text, sizeof text, "collision_sound = \"%s\"\n", "empty.wav"), "is empty");
+    bad(about(text, sizeof text, "collision_sound = \"%s\"\n", "words.wav"),
+        "is not a sound file libsndfile can read");
+    snprintf(text, sizeof text, "collision_sound = \"%s\"\n", g_dir);
+    bad(text, "is a folder, not a file");
+    about(text, sizeof text, "collision_sound = bell; collision_sound = \"%s\"\n", "words.wav");
+    assert_int_equal(run(text), CMD_ERROR);
+    assert_string_equal(g_sh.sound_set.collision_sound, "bell");
+    bad("collision_vol = -0.5\n", "collision_vol must be between 0 and 1000 (got -0.5)");
+    bad("volume = -1\n", "volume must be between 0 and 1000 (got -1)");
+    bad("soundtrack = /nonexistent/dir/t.wav\n", "soundtrack: cannot write '/nonexistent/dir/t.wav'");
+    bad("movie = /nonexistent/dir/m.mp4\n", "movie: cannot write '/nonexistent/dir/m.mp4'");
+    bad(about(text, sizeof text, "movie = \"%s\"\n", "movie"), "has no extension");
+    path_in_dir(path, sizeof path, "m.mp4");
+    snprintf(text, sizeof text, "time_step = 0; movie = \"%s\"\n", path);
+    assert_int_equal(run(text), CMD_ERROR);
+    assert_non_null(strstr(g_errbuf, "a movie's frame rate is 1 / time_step, so it must be > 0"));
+    assert_int_equal(access(path, F_OK), -1); /* no file left behind */
     bad("tracker = /nonexistent.trk\n", "cannot read '/nonexistent.trk'");
     bad("run 1; run 1; run 1e9999\n", "run must be a finite number");
-    bad("reselect\n", "no object has been selected");
+    bad("reselect\n", "reselect: no object has been held yet");
     bad("ball.size = (1, 1, 1); box.radius = 2; bogus\n", "unknown command 'bogus'");
 }
 

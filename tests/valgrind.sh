@@ -26,6 +26,10 @@ grind "a thesis scene runs, saves and reads back" "$VROC" -b -q "$S/simple.vroc"
 grind "objects of every kind collide" "$VROC" -b -q \
     -c "gravity; cube floor; mass = -1; size = (2, 2, 0.1); superquadric p; exp1 = 0.5; translate = (0, 0, 1.5)" \
     -c "angular_vel = (1, 2, 0); cube c; translate = (0.4, 0.3, 3); sphere s; radius = 0.3; translate = (-1, 0, 2); run 40"
+grind "a soundtrack of the built-in sounds" "$VROC" -b -q "$S/simple.vroc" \
+    -c "collision_sound = bell; soundtrack = $TMP/b.wav; run 8; collision_sound = click; run 4"
+grind "a soundtrack of a sound file (the one just written)" "$VROC" -b -q "$S/simple.vroc" \
+    -c "collision_sound = $TMP/b.wav; soundtrack = $TMP/f.wav; run 12; soundtrack = off"
 grind "a broken script" "$VROC" -b -q -c "sphere a; radius = -1"
 grind "random objects with the heap off" "$VROC" -b -q -c "random 20; collision_heap = off; run 10"
 grind "a scene that draws: refresh, then record" "$VROC" -b -q "$S/simple.vroc" \

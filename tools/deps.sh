@@ -7,11 +7,14 @@
 set -u
 
 missing=""
+add() { # Debian package, once
+    case " $missing " in *" $1 "*) ;; *) missing="$missing $1" ;; esac
+}
 need_pkg() { # pkg-config module, Debian package
-    pkg-config --exists "$1" 2>/dev/null || missing="$missing $2"
+    pkg-config --exists "$1" 2>/dev/null || add "$2"
 }
 need_cmd() { # command, Debian package
-    command -v "$1" >/dev/null 2>&1 || missing="$missing $2"
+    command -v "$1" >/dev/null 2>&1 || add "$2"
 }
 
 need_cmd pkg-config pkg-config
@@ -23,14 +26,25 @@ if command -v pkg-config >/dev/null 2>&1; then
     need_pkg libpng libpng-dev
     need_pkg qhull_r libqhull-dev
     need_pkg sndfile libsndfile1-dev
+    need_pkg samplerate libsamplerate0-dev
+    need_pkg libpulse-simple libpulse-dev
     need_pkg cmocka libcmocka-dev
     need_pkg bullet libbullet-dev # the peer of the gas benchmark (make bench)
 else
-    missing="$missing libreadline-dev libosmesa6-dev libpng-dev libqhull-dev libsndfile1-dev libcmocka-dev libbullet-dev"
+    missing="$missing libreadline-dev libosmesa6-dev libpng-dev libqhull-dev libsndfile1-dev"
+    missing="$missing libsamplerate0-dev libpulse-dev libcmocka-dev libbullet-dev"
 fi
 need_cmd tmux tmux
 need_cmd mandoc mandoc
 need_cmd valgrind valgrind
+# movies: the ffmpeg program (and ffprobe, which the tests read movies with)
+need_cmd ffmpeg ffmpeg
+need_cmd ffprobe ffmpeg
+# the live sound test: a PulseAudio server of its own, parecord (and pactl,
+# pacat), and pgrep, which counts the servers
+need_cmd pulseaudio pulseaudio
+need_cmd parecord pulseaudio-utils
+need_cmd pgrep procps
 if [ "${1:-}" = fuzz ]; then need_cmd afl-fuzz afl++; fi
 
 if [ -z "$missing" ]; then

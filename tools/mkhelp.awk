@@ -6,7 +6,7 @@
 # Each file commands/NAME describes the command or property NAME in five fields,
 # always in this order:
 #
-#   group: object | property | system | console | view
+#   group: object | property | system | console | view | sound
 #   usage: one line, starting with NAME            (radius = r)
 #   summary: one line, lower case, no final period
 #   description:
@@ -26,8 +26,8 @@ BEGIN {
     nfields = 5
     for (gk = 1; gk <= nfields; gk++)
         fieldno[field[gk]] = gk
-    ngroups = split("object property system console view", groupname, " ")
-    split("Objects|Object properties|System commands|Console commands|Views and hand",
+    ngroups = split("object property system console view sound", groupname, " ")
+    split("Objects|Object properties|System commands|Console commands|Views and hand|Sound and movies",
           grouptitle, "|")
     for (gk = 1; gk <= ngroups; gk++)
         isgroup[groupname[gk]] = 1

@@ -26,6 +26,7 @@ void body_init(body *b, const char *name, shape_kind kind)
     b->state = STATE_DYNAMIC;
     b->mode = MODE_FREE;
     b->slide_on = -1;
+    b->slide_face = -1;
     b->moved = b->woken = true;
     b->I_body = m3_identity();
     b->I_body_inv = m3_identity();

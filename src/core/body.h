@@ -57,6 +57,10 @@ typedef struct body {
     vec3 L;            /* angular momentum about the centre of mass, world axes */
     vec3 w;            /* angular velocity, world axes (derived from L, or as typed) */
     body_state state;
+    /* held by the hand (hold.h): it moves as the hand sets it, not by forces */
+    bool held;
+    vec3 hold_pivot;   /* the point it turns about (the hand's) */
+    vec3 hold_v;       /* that point's velocity; w is the body's own, constant */
 
     /* orientation as typed with `rotate`, valid while rot_given */
     vec3 rot_axis;
@@ -66,7 +70,8 @@ typedef struct body {
     body_mode mode;    /* how a dynamic body moves (sim.h): free, sliding, or in a
                         * cluster of bodies pressed together (general) */
     int slide_on;      /* MODE_SLIDE: the static object it slides on, or -1, */
-    vec3 slide_n;      /*   that face's normal, towards this body */
+    int slide_face;    /*   the face of it, */
+    vec3 slide_n;      /*   and that face's normal, towards this body */
     bool moved;        /* a command placed, turned, reshaped it or changed its mass
                         * since the simulation last ran: what it touches is found
                         * anew */

@@ -91,16 +91,21 @@ static void sweep1(double x0, double v, double a, double s0, double s1, double *
 }
 
 /* The box that holds moving object i, flying flight f, from time t0 to t1: the
- * sphere about its centre of mass swept, widened by `more`. */
+ * sphere about its centre of mass swept, widened by `more`.  A held body's
+ * (FLIGHT_HELD) centre turns about the pivot, which goes at a constant velocity:
+ * the sphere about the pivot that holds it, swept. */
 static aabb swept_box(const body *b, const flight *f, double t0, double t1, double more)
 {
     double s0 = d_max(0, t0 - f->t0), s1 = d_max(s0, t1 - f->t0);
+    bool held = f->kind == FLIGHT_HELD;
+    vec3 c = held ? f->p0 : f->c0, acc = held ? v3(0, 0, 0) : f->a;
+    double r = b->shape.r_out + (held ? v3_len(f->r0) : 0);
     aabb a;
-    sweep1(f->c0.x, f->v0.x, f->a.x, s0, s1, &a.lo.x, &a.hi.x);
-    sweep1(f->c0.y, f->v0.y, f->a.y, s0, s1, &a.lo.y, &a.hi.y);
-    sweep1(f->c0.z, f->v0.z, f->a.z, s0, s1, &a.lo.z, &a.hi.z);
-    double reach = v3_len(f->v0) * s1 + v3_len(f->a) * s1 * s1;
-    return box_grow(a, b->shape.r_out + slack(b, f->c0, reach) + more);
+    sweep1(c.x, f->v0.x, acc.x, s0, s1, &a.lo.x, &a.hi.x);
+    sweep1(c.y, f->v0.y, acc.y, s0, s1, &a.lo.y, &a.hi.y);
+    sweep1(c.z, f->v0.z, acc.z, s0, s1, &a.lo.z, &a.hi.z);
+    double reach = v3_len(f->v0) * s1 + v3_len(acc) * s1 * s1 + r;
+    return box_grow(a, r + slack(b, c, reach) + more);
 }
 
 /* The box a moving object's sphere needs where it stands. */

@@ -27,13 +27,15 @@ typedef struct {
     int n;
     impulse_row row[SIM_CLUSTER_ROWS];
     cpoint cp[SIM_CLUSTER_ROWS]; /* p and q renumbered as body indices */
+    int np;                      /* the lasting contacts they come from */
+    pair *pr[SIM_CLUSTER_ROWS];
 } points;
 
 /* The pressed points of the cluster's lasting contacts, its objects in the states
  * of w->bodies (each pair once). */
 static void gather(world *w, const int *list, int n, points *pts, double reach)
 {
-    pts->n = 0;
+    pts->n = pts->np = 0;
     bool *in = w->step.mark;
     for (int k = 0; k < n; k++) in[list[k]] = true;
     for (int k = 0; k < n; k++) {
@@ -47,6 +49,7 @@ static void gather(world *w, const int *list, int n, points *pts, double reach)
             if (r.status == CLOSEST_INVALID) continue;
             cpoint cp[16];
             int nc = contact_cpoints(A, B, &r, d_max(SIM_CONTACT_TOL * scale, reach), cp, 16);
+            if (pts->np < SIM_CLUSTER_ROWS) pts->pr[pts->np++] = p;
             for (int c = 0; c < nc && pts->n < SIM_CLUSTER_ROWS; c++) {
                 cpoint *x = &pts->cp[pts->n];
                 *x = cp[c];
@@ -81,6 +84,67 @@ static double fastest(const world *w, const int *list, int n)
     return s;
 }
 
+/* The gap floor of a point at gap g0 now: kept at a hover's gap; one already
+ * closer (or in, by the steps' rounding) goes no closer, and comes out slowly, so
+ * as to add no bounce (over a step of h). */
+static double floor_of(const world *w, const cpoint *cp, double g0, double h)
+{
+    const body *P = w->bodies[cp->p], *Q = w->bodies[cp->q];
+    double hover = SIM_HOVER * (1 + P->shape.r_out + Q->shape.r_out);
+    return g0 >= hover ? hover : g0 >= 0 ? g0 : d_min(0, g0 + h * CLUSTER_RECOVER_SPEED);
+}
+
+/* The rows of pts (m of them) whose contacts' closest points at the step's end
+ * (the objects' states there in bs) lie closer than the contact's points allow:
+ * one more row for each, at those points (appended to pts, its floor and gap
+ * written); returns how many. */
+static int deepest_rows(world *w, points *pts, body **bs, double *floor_gap, double *gap, int m,
+                        double t, double h)
+{
+    (void)t;
+    int added = 0;
+    for (int c = 0; c < pts->np && pts->n < SIM_CLUSTER_ROWS; c++) {
+        pair *p = pts->pr[c];
+        const body *A = bs[p->a], *B = bs[p->b];
+        closest_cache cache = p->cache;
+        closest_result r = body_distance(A, B, &cache);
+        w->st.pair_checks++;
+        if (r.status == CLOSEST_INVALID) continue;
+        /* the least floor of its points, and the tolerance of their gaps */
+        double least = HUGE_VAL, tol = 0;
+        for (int k = 0; k < m; k++) {
+            const cpoint *x = &pts->cp[k];
+            if ((x->p == p->a && x->q == p->b) || (x->p == p->b && x->q == p->a)) {
+                least = d_min(least, floor_gap[k]);
+                tol = 1e-3 * touch_at(w, x);
+            }
+        }
+        if (!(least < HUGE_VAL) || r.distance >= least - tol) continue;
+        /* their points there (material points and features, so rows now) */
+        cpoint cp[16];
+        double scale = A->shape.r_out + B->shape.r_out;
+        int nc = contact_cpoints(A, B, &r, SIM_CONTACT_TOL * scale, cp, 16);
+        for (int j = 0; j < nc && pts->n < SIM_CLUSTER_ROWS; j++) {
+            cpoint *x = &pts->cp[pts->n];
+            *x = cp[j];
+            x->p = cp[j].p == 0 ? p->a : p->b;
+            x->q = cp[j].p == 0 ? p->b : p->a;
+            impulse_row *row = &pts->row[pts->n];
+            row->p = x->p;
+            row->q = x->q;
+            row->e = 0;
+            vec3 nn, at;
+            double g1 = cpoint_eval(x, bs[x->p], bs[x->q], &nn, &at);
+            double g0 = cpoint_eval(x, w->bodies[x->p], w->bodies[x->q], &row->n, &row->at);
+            int k = pts->n++;
+            floor_gap[k] = floor_of(w, x, g0, h);
+            gap[k] = g1 - floor_gap[k];
+            added++;
+        }
+    }
+    return added;
+}
+
 double cluster_kick(world *w, const int *list, int n, double t, double t_end)
 {
     double h = d_min(SIM_CLUSTER_STEP, t_end - t);
@@ -100,16 +164,11 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end)
     for (int k = 0; k < m * m; k++) A[k] *= h;
     for (int k = 0; k < m; k++) lam[k] = 0;
     vec3 g = world_accel(w);
-    /* each pressed point is kept at a hover's gap; one already closer (or in, by
-     * the steps' rounding) goes no closer, and comes out slowly, so as to add no
-     * bounce */
     double floor_gap[SIM_CLUSTER_ROWS];
     for (int k = 0; k < m; k++) {
         vec3 nn, at;
         double g0 = cpoint_eval(&pts.cp[k], bs[pts.cp[k].p], bs[pts.cp[k].q], &nn, &at);
-        const body *P = w->bodies[pts.cp[k].p], *Q = w->bodies[pts.cp[k].q];
-        double hover = SIM_HOVER * (1 + P->shape.r_out + Q->shape.r_out);
-        floor_gap[k] = g0 >= hover ? hover : g0 >= 0 ? g0 : d_min(0, g0 + h * CLUSTER_RECOVER_SPEED);
+        floor_gap[k] = floor_of(w, &pts.cp[k], g0, h);
     }
     for (int it = 0; it < CLUSTER_NEWTON; it++) {
         /* the gaps at the step's end after kicks lam: each object's copy kicked,
@@ -134,7 +193,19 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end)
             double tol = 1e-3 * touch_at(w, &pts.cp[k]);
             if ((lam[k] > 0 && fabs(gap[k]) > tol) || gap[k] < -tol) done = false;
         }
+        /* the points followed may miss where the objects meet at the step's end (a
+         * curved side rolling over an edge brings its next facet): each contact's
+         * own closest points there, when they are closer than its points allow,
+         * are followed too */
+        int added = deepest_rows(w, &pts, bs, floor_gap, gap, m, t, h);
         for (int k = 0; k < n; k++) bs[list[k]] = w->bodies[list[k]];
+        if (added > 0) {
+            for (int k = m; k < m + added; k++) lam[k] = 0;
+            m += added;
+            impulse_matrix(pts.row, m, bs, mobile, A);
+            for (int k = 0; k < m * m; k++) A[k] *= h;
+            done = false;
+        }
         if (done) break;
         /* Newton: gaps + h A (next - lam) >= 0, complementary to next >= 0 */
         for (int k = 0; k < m; k++) {

@@ -465,6 +465,27 @@ static void plane_of(const body *o, vec3 x, vec3 m, cpoint *cp)
     cp->f1 = v3(v3_dot(cp->f0, local_of(o, x)), 0, 0);
 }
 
+/* Edges no closer to parallel than this (the sine of their angle) are followed as
+ * two edges; closer, as a point and a line. */
+#define CONTACT_EDGES_SIN 1e-6
+
+/* Closest features two edges (r of a against b): cp becomes a's edge against b's
+ * (EDGES), p = 0; false when they are too near parallel for it. */
+static bool edges_of(const body *a, const body *b, const closest_result *r, cpoint *cp)
+{
+    const poly *ha = a->shape.hull, *hb = b->shape.hull;
+    if (!ha || !hb || r->fa.index >= ha->ne || r->fb.index >= hb->ne) return false;
+    const poly_edge *ea = &ha->e[r->fa.index], *eb = &hb->e[r->fb.index];
+    vec3 a0 = ha->v[ea->v[0]], da = v3_norm(v3_sub(ha->v[ea->v[1]], a0));
+    vec3 b0 = hb->v[eb->v[0]], db = v3_norm(v3_sub(hb->v[eb->v[1]], b0));
+    vec3 c = v3_cross(q_rotate(a->q, da), q_rotate(b->q, db));
+    double l = v3_len(c);
+    if (!(l > 1e3 * CONTACT_EDGES_SIN)) return false;
+    *cp = (cpoint){.p = 0, .q = 1, .kind = CPT_EDGES, .sp = a0, .r = 0, .f0 = b0, .f1 = db, .sd = da,
+                   .sgn = v3_dot(c, r->normal) >= 0 ? 1 : -1};
+    return true;
+}
+
 /* The point of sphere s (side p) against the feature f of polyhedron o (side q). */
 static void sphere_against(const body *s, const body *o, closest_feature f, vec3 n_to_s,
                            vec3 on_o, cpoint *cp)
@@ -569,8 +590,12 @@ int contact_cpoints(const body *a, const body *b, const closest_result *r, doubl
             out[count++].sp = local_of(P, x);
         }
     } else {
-        /* one point: on a face of b, on a face of a, or neither (edges, vertices) */
+        /* one point: on a face of b, on a face of a, two edges, or neither */
         cpoint *cp = &out[count++];
+        if (r->fa.kind == CLOSEST_EDGE && r->fb.kind == CLOSEST_EDGE && edges_of(a, b, r, cp)) {
+            free_points(z.pts, z.local);
+            return count;
+        }
         bool a_face = r->fa.kind == CLOSEST_FACE && r->fb.kind != CLOSEST_FACE;
         cp->p = a_face ? 1 : 0;
         cp->q = a_face ? 0 : 1;
@@ -587,8 +612,31 @@ int contact_cpoints(const body *a, const body *b, const closest_result *r, doubl
     return count;
 }
 
+/* The gap of EDGES point cp (see cpoint_eval), its normal and point. */
+static double edges_eval(const cpoint *cp, const body *P, const body *Q, vec3 *n, vec3 *at)
+{
+    vec3 p0 = v3_add(P->x, q_rotate(P->q, cp->sp)), dp = q_rotate(P->q, cp->sd);
+    vec3 q0 = v3_add(Q->x, q_rotate(Q->q, cp->f0)), dq = q_rotate(Q->q, cp->f1);
+    vec3 c = v3_cross(dp, dq), w0 = v3_sub(p0, q0);
+    double l = v3_len(c);
+    if (!(l > CONTACT_EDGES_SIN)) {
+        /* turned parallel: the distance of p's point from q's line */
+        vec3 perp = v3_mad(w0, dq, -v3_dot(w0, dq));
+        double d = v3_len(perp);
+        *n = d > 0 ? v3_scale(perp, 1 / d) : v3_scale(c, cp->sgn / (l > 0 ? l : 1));
+        *at = p0;
+        return d;
+    }
+    vec3 m = v3_scale(c, cp->sgn / l);
+    double b = v3_dot(dp, dq), s = (b * v3_dot(dq, w0) - v3_dot(dp, w0)) / (1 - b * b);
+    *n = m;
+    *at = v3_mad(p0, dp, s);
+    return v3_dot(w0, m);
+}
+
 double cpoint_eval(const cpoint *cp, const body *P, const body *Q, vec3 *n, vec3 *at)
 {
+    if (cp->kind == CPT_EDGES) return edges_eval(cp, P, Q, n, at);
     vec3 pw = v3_add(P->x, q_rotate(P->q, cp->sp));
     vec3 pq = q_unrotate(Q->q, v3_sub(pw, Q->x));
     vec3 m;

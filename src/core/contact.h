@@ -30,9 +30,12 @@ vec3 contact_closing_corner(const body *a, const body *b, const closest_result *
  * that it can be followed as they move: a point of object p (a vertex, a corner of
  * the contact region, or a sphere's centre with its radius r) against a feature of
  * object q: a plane (a face's), a line (an edge's) or a point (a vertex, a
- * sphere's centre).  p and q are 0 (a) or 1 (b) as contact_cpoints writes them;
+ * sphere's centre); or an edge of p against an edge of q, whose gap is the
+ * distance between their lines along their common normal (crossing edges, as a
+ * drum's rim rolling over a box's edge: a point of either would leave the contact
+ * as they turn).  p and q are 0 (a) or 1 (b) as contact_cpoints writes them;
  * callers may renumber them. */
-typedef enum { CPT_PLANE, CPT_LINE, CPT_POINT } cpt_kind;
+typedef enum { CPT_PLANE, CPT_LINE, CPT_POINT, CPT_EDGES } cpt_kind;
 
 typedef struct {
     int p, q;
@@ -40,8 +43,10 @@ typedef struct {
     vec3 sp;   /* the point, in p's body frame */
     double r;  /* the radius about it (a sphere's, or two spheres' together) */
     vec3 f0;   /* q's feature in q's frame: PLANE its unit normal (towards p); */
-    vec3 f1;   /*   LINE a point f0 and unit direction f1; POINT f0; PLANE's offset
-                *   is f1.x (f0 . y = f1.x on the plane) */
+    vec3 f1;   /*   LINE and EDGES a point f0 and unit direction f1; POINT f0;
+                *   PLANE's offset is f1.x (f0 . y = f1.x on the plane) */
+    vec3 sd;   /* EDGES: p's edge's unit direction in p's frame (sp a point of it), */
+    double sgn; /*   and the sign that turns sd x f1 from q towards p */
 } cpoint;
 
 /* The points at which touching (or nearly touching) polyhedra or spheres a and b

@@ -17,6 +17,15 @@ static int rebuild(body *b, shape_params old, char *err, size_t errlen)
     return 0;
 }
 
+/* Object i's lasting contacts end. */
+static void end_contacts(world *w, int i)
+{
+    for (long k = 0; k < w->pairs.n; k++) {
+        pair *p = &w->pairs.p[k];
+        if (p->a >= 0 && (p->a == i || p->b == i)) p->touching = false;
+    }
+}
+
 /* Object i and every dynamic object pressed together with it move again, and find
  * their modes anew when time next runs; when `moved`, what i touches is found anew
  * too (its lasting contacts end).  (A scan of the pairs: the schedule's lists of
@@ -46,10 +55,7 @@ static void disturb(world *w, int i, bool moved)
     }
     if (!moved) return;
     w->bodies[i]->moved = true;
-    for (long k = 0; k < w->pairs.n; k++) {
-        pair *p = &w->pairs.p[k];
-        if (p->a >= 0 && (p->a == i || p->b == i)) p->touching = false;
-    }
+    end_contacts(w, i);
 }
 
 /* v, or v scaled down to length max when it is longer: for any finite v, since the
@@ -92,6 +98,7 @@ int edit_property(world *w, int i, size_t off, const double *num, char *err, siz
     case offsetof(body, mass):
         disturb(w, i, true);
         body_set_mass(b, num[0]);
+        if (num[0] < 0) b->held = false; /* (the hand lets go: hold.h) */
         w->pairs.dirty = true; /* static objects have no pairs among themselves */
         return 0;
     case offsetof(body, x):
@@ -129,6 +136,12 @@ void edit_force(world *w, dir_amount force)
     w->set.force = force;
 }
 
+void edit_unpress(world *w, int i)
+{
+    disturb(w, i, false);
+    end_contacts(w, i);
+}
+
 void edit_delete(world *w, int i)
 {
     for (long k = 0; k < w->pairs.n; k++) {
@@ -138,6 +151,91 @@ void edit_delete(world *w, int i)
         if (!body_is_static(w->bodies[o])) disturb(w, o, false);
     }
     world_delete(w, i);
+}
+
+void edit_exact_orientation(world *w, int i, quat q)
+{
+    body *b = w->bodies[i];
+    double n2 = q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z;
+    b->q = fabs(n2 - 1) <= 1e-12 ? q : q_normalize(q);
+    b->rot_given = false;
+    body_update_w(b);
+}
+
+void edit_exact_velocity(world *w, int i, vec3 v) { w->bodies[i]->v = v; }
+
+void edit_exact_momentum(world *w, int i, vec3 L)
+{
+    body *b = w->bodies[i];
+    b->L = L;
+    body_update_w(b);
+}
+
+void edit_exact_support(world *w, int i, int support, int face)
+{
+    body *b = w->bodies[i];
+    b->slide_on = support;
+    b->slide_face = face;
+}
+
+int edit_exact_contact(world *w, int i, body_mode mode, bool resting, char *err, size_t errlen)
+{
+    body *b = w->bodies[i];
+    if (body_is_static(b)) {
+        if (mode != MODE_FREE || resting) {
+            snprintf(err, errlen, "'%s' is static: it neither slides, leans nor rests", b->name);
+            return -1;
+        }
+        b->moved = b->woken = false; /* placed as saved */
+        return 0;
+    }
+    if (mode == MODE_SLIDE) {
+        int support = b->slide_on, face = b->slide_face;
+        const body *s = support >= 0 && support < w->n ? w->bodies[support] : NULL;
+        if (!s || !body_is_static(s) || !s->shape.hull || face < 0 || face >= s->shape.hull->nf) {
+            snprintf(err, errlen, "a slide needs slide_on, a static object, and slide_face, one "
+                     "of its faces, before it");
+            return -1;
+        }
+        b->slide_n = v3_norm(q_rotate(s->q, s->shape.hull->f[face].n));
+    } else {
+        b->slide_on = b->slide_face = -1;
+    }
+    b->mode = mode;
+    b->state = resting ? STATE_RESTING : STATE_DYNAMIC;
+    b->moved = b->woken = false;
+    return 0;
+}
+
+int edit_exact_touching(world *w, int i, int j, char *err, size_t errlen)
+{
+    const body *a = w->bodies[i], *b = w->bodies[j];
+    if (i == j || (body_is_static(a) && body_is_static(b))) {
+        snprintf(err, errlen, "'%s' and '%s' cannot be in contact: %s", a->name, b->name,
+                 i == j ? "the same object" : "both are static");
+        return -1;
+    }
+    if (pairs_update(w) != 0) {
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    for (long k = 0; k < w->pairs.n; k++) {
+        pair *p = &w->pairs.p[k];
+        if ((p->a == i && p->b == j) || (p->a == j && p->b == i)) {
+            p->touching = true;
+            return 0;
+        }
+    }
+    snprintf(err, errlen, "'%s' and '%s' have no pair", a->name, b->name);
+    return -1;
+}
+
+void edit_clock(world *w, double base, long frames)
+{
+    w->time_base = base;
+    w->base_frames = frames;
+    w->base_step = w->set.time_step;
+    w->time = base + (double)frames * w->base_step;
 }
 
 void edit_done(world *w)

@@ -37,6 +37,43 @@ int edit_property(world *w, int i, size_t off, const double *num, char *err, siz
  * object: rest depends on the force. */
 void edit_force(world *w, dir_amount force);
 
+/* ---- exact state (language.md, "Exact state"), as save writes it ----
+ * Each sets what it names exactly, with no limit applied and nothing woken.  The
+ * contact state (edit_exact_contact, edit_exact_touching) takes object i's contacts
+ * and mode as given: they are not found anew when time runs, and i is not checked
+ * for overlaps (the state is the simulation's own). */
+
+/* Orientation q (a unit quaternion, scalar first; used as given when within
+ * 1e-12 of unit length, else normalised); w is found from L anew. */
+void edit_exact_orientation(world *w, int i, quat q);
+
+/* Linear velocity v, not limited. */
+void edit_exact_velocity(world *w, int i, vec3 v);
+
+/* Angular momentum L (world axes), not limited; w found from it. */
+void edit_exact_momentum(world *w, int i, vec3 L);
+
+/* The static object (support, an index) and its face that a slide is on; the
+ * mode statement that follows checks them. */
+void edit_exact_support(world *w, int i, int support, int face);
+
+/* The mode (for MODE_SLIDE, on the support and face given before), and resting or
+ * not.  Returns 0, or -1 with a message in err (a static object; a slide whose
+ * support is not static or has no such face). */
+int edit_exact_contact(world *w, int i, body_mode mode, bool resting, char *err, size_t errlen);
+
+/* Objects i and j are in lasting contact.  Returns 0, or -1 with a message in err
+ * (the same object, two static objects, out of memory). */
+int edit_exact_touching(world *w, int i, int j, char *err, size_t errlen);
+
+/* The clock: time = base + frames * time_step, as frames add it up (exactly so). */
+void edit_clock(world *w, double base, long frames);
+
+/* Object i's lasting contacts end, and it and every dynamic object pressed
+ * together with it move again, their modes found anew when the simulation starts
+ * over (for a body the hand takes: hold.h). */
+void edit_unpress(world *w, int i);
+
 /* Removes object i; what pressed on it moves again. */
 void edit_delete(world *w, int i);
 

@@ -17,6 +17,27 @@ static bool aligned(const body *b)
     return p.w == 1 && p.x == 0 && p.y == 0 && p.z == 0;
 }
 
+/* The state of a held body's flight h after its start (flight.h, FLIGHT_HELD). */
+static void held_at(const flight *f, const body *shape_of, double h, body *out)
+{
+    vec3 pivot = v3_mad(f->p0, f->v0, h), r = f->r0;
+    out->q = f->q0;
+    if (f->rate > 0) {
+        quat turn = q_axis_angle(f->w, f->rate * h);
+        r = q_rotate(turn, r);
+        out->q = q_normalize(q_mul(turn, f->q0));
+        out->rot_given = false;
+    }
+    vec3 c = v3_add(pivot, r), com = shape_of->shape.mass.com;
+    out->x = c;
+    if (com.x != 0 || com.y != 0 || com.z != 0) out->x = v3_sub(c, q_rotate(out->q, com));
+    out->v = v3_add(f->v0, v3_cross(f->w, r));
+    out->w = f->w;
+    out->L = m3_mulv(body_inertia_world(out), f->w);
+    out->hold_pivot = pivot;
+    out->hold_v = f->v0;
+}
+
 void flight_start(flight *f, const body *b, flight_kind kind, double t0, vec3 a, vec3 n, long id)
 {
     f->kind = kind;
@@ -31,7 +52,13 @@ void flight_start(flight *f, const body *b, flight_kind kind, double t0, vec3 a,
     f->wn = 0;
     f->rate = 0;
     f->id = id;
-    if (kind == FLIGHT_FREE && v3_len2(b->L) != 0) {
+    if (kind == FLIGHT_HELD) {
+        f->p0 = b->hold_pivot;
+        f->v0 = b->hold_v;
+        f->r0 = v3_sub(f->c0, f->p0);
+        f->w = b->w;
+        f->rate = v3_len(b->w);
+    } else if (kind == FLIGHT_FREE && v3_len2(b->L) != 0) {
         f->spins = true;
         quat qp = aligned(b) ? b->q : q_mul(b->q, b->q_principal);
         spin_init(&f->spin, b->I_princ, qp, b->L);
@@ -46,6 +73,10 @@ void flight_at(const flight *f, const body *shape_of, double t, body *out)
 {
     double h = t - f->t0;
     assert(h >= 0 || f->kind == FLIGHT_STILL);
+    if (f->kind == FLIGHT_HELD) {
+        held_at(f, shape_of, h, out);
+        return;
+    }
     vec3 c = f->c0;
     out->v = v3(0, 0, 0);
     out->q = f->q0;

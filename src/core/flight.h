@@ -9,6 +9,10 @@
  *    its parabola under the force less its part along -n, and the body turns about
  *    n only, at a constant rate (what a frictionless face leaves free).
  *  - FLIGHT_STILL: the body stays where it is (resting, static).
+ *  - FLIGHT_HELD: held by the hand (hold.h), the body is fixed to a point, the
+ *    pivot, that moves at a constant velocity, and turns about it at a constant
+ *    angular velocity w: pivot(t) = p0 + v t, R the turn by w t, c = pivot + R r0,
+ *    q = R q0, v = v + w x (R r0), L = I_world w.  No force moves it.
  * No speed is limited in flight: max_linear and max_angular apply where a command
  * or a collision sets a speed (edit.c, sim.c).
  */
@@ -21,7 +25,7 @@
 #include "spin.h"
 #include "vmath.h"
 
-typedef enum { FLIGHT_STILL, FLIGHT_FREE, FLIGHT_SLIDE } flight_kind;
+typedef enum { FLIGHT_STILL, FLIGHT_FREE, FLIGHT_SLIDE, FLIGHT_HELD } flight_kind;
 
 typedef struct {
     flight_kind kind;
@@ -33,24 +37,21 @@ typedef struct {
     free_spin spin;
     vec3 n;           /* SLIDE: the support's normal, towards the body, */
     double wn;        /*   and the rate it turns about it */
+    vec3 p0, r0, w;   /* HELD: the pivot then (v0 its velocity), the centre of
+                       *   mass from it, and the constant spin */
     double rate;      /* no point of the body turns faster than rate (rad/s) */
     long id;          /* a number no other flight of this world has */
 } flight;
 
 /* Starts flight f of kind at time t0 from body b's state (x, q, v, L; b's w is
  * taken as consistent with L): a the acceleration of the centre of mass (FREE,
- * SLIDE), n the support's normal (SLIDE: b turns about n only, at w . n). */
+ * SLIDE), n the support's normal (SLIDE: b turns about n only, at w . n).  HELD
+ * takes the pivot, its velocity and w from b (hold_pivot, hold_v, w). */
 void flight_start(flight *f, const body *b, flight_kind kind, double t0, vec3 a, vec3 n, long id);
 
 /* Writes the state at time t (t >= t0) into out, a copy of the flight's body:
- * x, q, v, L and w. */
+ * x, q, v, L and w (and a held body's pivot). */
 void flight_at(const flight *f, const body *shape_of, double t, body *out);
-
-/* The centre of mass's velocity and acceleration at time t. */
-static inline vec3 flight_velocity(const flight *f, double t)
-{
-    return f->kind == FLIGHT_STILL ? v3(0, 0, 0) : v3_mad(f->v0, f->a, t - f->t0);
-}
 
 /* How body b moves at one instant, for the velocity and the acceleration of its
  * points. */
@@ -59,15 +60,18 @@ typedef struct {
 } flight_motion;
 
 /* Body b's motion at the state given (b as flight_at wrote it), a its centre's
- * acceleration: nothing for a still body. */
-static inline flight_motion flight_motion_of(const body *b, bool moving, vec3 a)
+ * acceleration: nothing for a still body.  A held body (pivot not NULL: where the
+ * pivot is) turns at a constant w about its pivot: its centre accelerates by
+ * w x (w x (c - pivot)), and w does not change. */
+static inline flight_motion flight_motion_of(const body *b, bool moving, vec3 a, const vec3 *pivot)
 {
     flight_motion m = {body_com(b), v3(0, 0, 0), v3(0, 0, 0), v3(0, 0, 0), v3(0, 0, 0)};
     if (!moving) return m;
     m.v = b->v;
     m.w = b->w;
     m.a = a;
-    if (v3_len2(b->w) != 0) m.dw = v3_neg(body_inertia_inv_mulv(b, v3_cross(b->w, b->L)));
+    if (pivot) m.a = v3_cross(b->w, v3_cross(b->w, v3_sub(m.c, *pivot)));
+    else if (v3_len2(b->w) != 0) m.dw = v3_neg(body_inertia_inv_mulv(b, v3_cross(b->w, b->L)));
     return m;
 }
 

@@ -60,5 +60,10 @@
 /* random_size (m): each of random's objects has half-extents from 0.6 to 1 times
  * the size drawn, so that they stay within the lengths above */
 #define LIM_RANDOM_SIZE_MIN 1e-5
+/* exact state (save): angular momentum (kg m^2/s), as I w above; the clock's base
+ * time (s) and frame counts, which a double holds exactly below 2^53 */
+#define LIM_MOMENTUM_MAX 1e21
+#define LIM_CLOCK_MAX 1e12
+#define LIM_FRAMES_MAX 1e15
 
 #endif

@@ -108,7 +108,7 @@ static bool try_slide(world *w, int mi, int si, pair *p)
     m->mode = MODE_SLIDE;
     m->slide_on = si;
     m->slide_n = n;
-    w->step.slide_face[mi] = face;
+    m->slide_face = face;
     m->v = v3_mad(m->v, n, -v3_dot(m->v, n));
     body_set_angular_vel(m, v3_scale(n, v3_dot(m->w, n)));
     m->rot_given = false;
@@ -121,7 +121,7 @@ void rest_classify(world *w, const int *list, int n)
     for (int k = 0; k < n; k++) {
         int i = list[k];
         body *b = w->bodies[i];
-        if (body_is_static(b)) continue;
+        if (body_is_static(b) || b->held) continue; /* (a held one: free, hold.h) */
         if (b->state == STATE_RESTING) b->state = STATE_DYNAMIC;
         int count = 0, other = -1;
         pair *touch = NULL;
@@ -172,7 +172,7 @@ double rest_slide_exit(const world *w, int i, double t)
     if (m->state != STATE_DYNAMIC || m->mode != MODE_SLIDE || m->slide_on < 0) return HUGE_VAL;
     const body *s = w->bodies[m->slide_on];
     const poly *h = s->shape.hull;
-    int face = w->step.slide_face[i];
+    int face = m->slide_face;
     if (!h || face < 0 || face >= h->nf) return HUGE_VAL;
     const flight *f = &w->step.fl[i];
     double h0 = t - f->t0;

@@ -59,7 +59,6 @@ static double along_eval(const along_reach *r, int n, double t)
 double sched_ca_time(const body *a, const sched_move *ma, const body *b, const sched_move *mb,
                      double d, vec3 n, vec3 pa, vec3 pb, double target)
 {
-    const body *ob[2] = {a, b};
     const sched_move *mo[2] = {ma, mb};
     along_reach r[2];
     int m = 0;
@@ -71,7 +70,7 @@ double sched_ca_time(const body *a, const sched_move *ma, const body *b, const s
         r[m].acc = -sign * v3_dot(x->a, n);
         /* how far out along the normal its surface reaches from its centre now,
          * and how much further a turn can take it (to R at most, at |w| R) */
-        double R = ob[k]->shape.r_out;
+        double R = x->reach;
         double out = k == 0 ? v3_dot(v3_sub(x->c, pa), n) : v3_dot(v3_sub(pb, x->c), n);
         r[m].rate = x->rate * R;
         r[m].cap = r[m].rate > 0 ? d_max(0, R - out) : 0;
@@ -147,6 +146,7 @@ double sched_bound_gap(const body *a, const body *b, bool *turn_a, bool *turn_b)
 double sched_sphere_time(const body *a, const sched_move *ma, const body *b, const sched_move *mb)
 {
     if (!ma->moves && !mb->moves) return HUGE_VAL;
+    if (ma->held || mb->held) return 0; /* the hand may move it anywhere */
     bool turn_a, turn_b;
     double gap = sched_bound_gap(a, b, &turn_a, &turn_b);
     /* a box turns with its object: all of that object's R - r at once */

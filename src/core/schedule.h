@@ -26,12 +26,17 @@
 
 typedef struct world world;
 
-/* One object's motion as a bound sees it: at rest (moves false), or its centre of
- * mass c with velocity v and acceleration a, turning no faster than rate. */
+/* One object's motion as a bound sees it: at rest (moves false), or a point c
+ * with velocity v and acceleration a, about which the object turns no faster than
+ * rate, every point of it within reach of c: its centre of mass and r_out; or, for
+ * a held body (hold.h, held true), the hand's pivot, about which it turns at a
+ * constant w, and |c_m - pivot| + r_out. */
 typedef struct {
     bool moves;
     vec3 c, v, a;
     double rate;
+    double reach;
+    bool held;
 } sched_move;
 
 /* The time from now, never late, before which objects a and b (moving as ma and
@@ -42,7 +47,7 @@ double sched_ca_time(const body *a, const sched_move *ma, const body *b, const s
                      double d, vec3 n, vec3 pa, vec3 pb, double target);
 
 /* The same from the gap of their bounding spheres or boxes alone (no query):
- * 0 when those meet. */
+ * 0 when those meet, or when either is held (its pairs are searched at once). */
 double sched_sphere_time(const body *a, const sched_move *ma, const body *b, const sched_move *mb);
 
 /* A gap no more than the distance of a and b: between the spheres about their

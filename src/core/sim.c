@@ -43,19 +43,6 @@
 /* The contact distance of objects a and b. */
 static double touch_of(const body *a, const body *b) { return toi_touch(a, b); }
 
-/* Object i's motion at time t (its state o then), for the bounds. */
-static sched_move move_at(const world *w, int i, const body *o)
-{
-    const flight *f = &w->step.fl[i];
-    sched_move m = {.moves = step_moves(w, i) && f->kind != FLIGHT_STILL};
-    if (!m.moves) return m;
-    m.c = body_com(o);
-    m.v = o->v;
-    m.a = f->a;
-    m.rate = f->rate;
-    return m;
-}
-
 /* True when pair p needs searching: one of its objects moves, and they are not
  * pressed together. */
 static bool searched(const world *w, const pair *p)
@@ -63,13 +50,14 @@ static bool searched(const world *w, const pair *p)
     return !p->touching && (step_moves(w, p->a) || step_moves(w, p->b));
 }
 
-/* Pair k's cheap bound from time t, as its objects fly now. */
+/* Pair k's cheap bound from time t, as its objects fly now (t itself for a held
+ * object's: no bound foresees the hand). */
 static double bound_from(world *w, long k, double t)
 {
     pair *p = &w->pairs.p[k];
     if (!searched(w, p)) return HUGE_VAL;
     const body *a = step_flown(w, p->a, t, 1), *b = step_flown(w, p->b, t, 1);
-    sched_move ma = move_at(w, p->a, a), mb = move_at(w, p->b, b);
+    sched_move ma = step_move(w, p->a, a), mb = step_move(w, p->b, b);
     double dt = sched_sphere_time(a, &ma, b, &mb);
     return dt == HUGE_VAL ? dt : t + dt;
 }
@@ -105,7 +93,7 @@ static void set_event(world *w, int i, double t)
 
 /* The broad phase holds moving object i, flying from time t, until the end of the
  * step (broad.h); same: on the motion of its last flight. */
-static void hold(world *w, int i, double t, bool same)
+static void hold_box(world *w, int i, double t, bool same)
 {
     if (same && w->step.t_end <= w->broad.until[i]) return; /* (broad_hold's first test) */
     if (step_moves(w, i) && broad_hold(w, i, t, w->step.t_end, same) != 0) w->out_of_memory = true;
@@ -119,7 +107,7 @@ static void restart(world *w, int i, double t)
     double ev = HUGE_VAL;
     if (step_moves(w, i) && b->mode == MODE_SLIDE) ev = rest_slide_exit(w, i, t);
     set_event(w, i, ev);
-    hold(w, i, t, false);
+    hold_box(w, i, t, false);
     reschedule(w, i, t); /* (the pairs its box just made among them) */
     w->pairs.nfresh = 0;
 }
@@ -194,20 +182,42 @@ static int rows_of(world *w, const pair *p, const closest_result *r, double e, i
     return n;
 }
 
+/* Held body i stops where it is at time t, until the hand sets its motion again
+ * (hold.h): it met what cannot give way. */
+static void hold_stop(world *w, int i, double t)
+{
+    body *b = w->bodies[i];
+    step_sync(w, i, t);
+    b->hold_v = b->v = v3(0, 0, 0);
+    body_set_angular_vel(b, v3(0, 0, 0));
+    restart(w, i, t);
+}
+
 /* Answers pair k's contact at time t: the impulses of its points and of every
  * lasting contact of the objects pressed together with them, answered together;
- * then the modes and flights of all of them. */
+ * then the modes and flights of all of them.  A held object (hold.h) is not
+ * moved by them: it pushes with its velocity as an infinite mass would, and stops
+ * against a static or held object, or one that cannot give way. */
 static void answer_contact(world *w, long k, double t, double t_end)
 {
     pair *p = &w->pairs.p[k];
     int seeds[2], ns = 0, *list = w->step.list;
-    if (!body_is_static(w->bodies[p->a])) seeds[ns++] = p->a;
-    if (!body_is_static(w->bodies[p->b])) seeds[ns++] = p->b;
+    bool ha = w->bodies[p->a]->held, hb = w->bodies[p->b]->held, hand = ha || hb;
+    if (!body_is_static(w->bodies[p->a]) && !ha) seeds[ns++] = p->a;
+    if (!body_is_static(w->bodies[p->b]) && !hb) seeds[ns++] = p->b;
+    if (hand && ns == 0) {
+        w->time = t;
+        if (ha) hold_stop(w, p->a, t);
+        if (hb) hold_stop(w, p->b, t);
+        return;
+    }
     int n = rest_component(w, seeds, ns, list);
     int *mine = malloc((size_t)(n > 0 ? n : 1) * sizeof *mine);
     if (!mine) return;
     memcpy(mine, list, (size_t)n * sizeof *mine);
     for (int j = 0; j < n; j++) step_sync(w, mine[j], t);
+    int held = ha ? p->a : hb ? p->b : -1;
+    if (hand) step_sync(w, held, t);
     w->time = t;
     /* the rows: the contact's own, then the lasting contacts' */
     impulse_row rows[IMPULSE_MAX_ROWS];
@@ -232,6 +242,8 @@ static void answer_contact(world *w, long k, double t, double t_end)
         if (r < own) closing = d_max(closing, -u[r]);
         /* a rebound too slow to see is no rebound: they stay in contact */
         if (rows[r].e < 1 && rows[r].e * -u[r] < SIM_BOUNCE_SPEED) rows[r].e = 0;
+        /* but nothing stays on a held object: it parts at that speed */
+        if (hand && r < own && rows[r].e == 0) u[r] -= SIM_BOUNCE_SPEED;
     }
     bool solved = impulse_solve(rows, nr, w->step.now, mobile, u, lambda, w->step.lcp) == 0;
     if (!solved && own < nr) /* too many: the contact's own points alone */
@@ -248,7 +260,8 @@ static void answer_contact(world *w, long k, double t, double t_end)
             for (int r = 0; r < nr; r++) lambda[r] += l2[r];
     }
     for (int j = 0; j < n; j++) mobile[mine[j]] = false;
-    if (!solved) w->st.restarts++;
+    if (!solved && hand) hold_stop(w, held, t); /* what it pushes cannot give way */
+    else if (!solved) w->st.restarts++;
     /* the event: the contact's own impulses */
     double j_sum = 0;
     vec3 at = v3(0, 0, 0);
@@ -261,15 +274,17 @@ static void answer_contact(world *w, long k, double t, double t_end)
         vec3 nab = w->pairs.hits[k].r.normal; /* from b to a */
         world_event(w, &(sim_event){t, p->a, p->b, v3_scale(at, 1 / j_sum), nab, j_sum, closing});
     }
-    /* they stay in contact where a point of theirs no longer moves apart */
+    /* they stay in contact where a point of theirs no longer moves apart (never
+     * with a held object: each of its contacts is a collision) */
     p->hit = w->pairs.hits[k].cache;
-    for (int r = 0; r < own; r++) {
+    for (int r = 0; r < own && !hand; r++) {
         /* (a lossy contact that opens too slowly to see a rebound: none) */
         double open = rows[r].e < 1 || e < 1 ? SIM_BOUNCE_SPEED : 1e3 * SIM_SPEED_ROUND * scale;
         if (impulse_speed(&rows[r], w->step.now) <= open) p->touching = true;
     }
     rest_classify(w, mine, n);
     for (int j = 0; j < n; j++) restart(w, mine[j], t);
+    if (hand) restart(w, held, t);
     begin_clusters(w, mine, n, t, t_end);
     free(mine);
 }
@@ -413,10 +428,10 @@ static next_event find_next(world *w, double t_step, double t_end)
 
 /* ------------------------------------------------------------ steps and frames */
 
-/* One internal step of h seconds (thesis 3.4.2, steps 3 to 5). */
-static void internal_step(world *w, double h)
+/* One internal step, from now to t_end (thesis 3.4.2, steps 3 to 5). */
+static void internal_step(world *w, double t_end)
 {
-    double t = w->time, t_end = t + h;
+    double t = w->time;
     w->step.t_end = t_end;
     /* every moving object's flight starts afresh where it is, and its box holds it
      * to the step's end */
@@ -426,7 +441,7 @@ static void internal_step(world *w, double h)
         const body *b = w->bodies[i];
         double ev = b->mode == MODE_SLIDE ? rest_slide_exit(w, i, t) : HUGE_VAL;
         set_event(w, i, ev);
-        hold(w, i, t, true);
+        hold_box(w, i, t, true);
     }
     schedule_fresh(w, t);
     /* clusters start their steps (their kicks change their flights) */
@@ -473,7 +488,7 @@ static void find_contacts(world *w)
         pair *p = &w->pairs.p[k];
         if (p->a < 0 || !p->near) continue;
         body *a = w->bodies[p->a], *b = w->bodies[p->b];
-        if (!a->moved && !b->moved) continue;
+        if ((!a->moved && !b->moved) || a->held || b->held) continue; /* (hold.h) */
         closest_result r = pair_query(w, p, a, b);
         if (r.status == CLOSEST_INVALID) continue;
         double touch = touch_of(a, b);
@@ -506,32 +521,74 @@ static int update_pairs(world *w)
     return w->sched_dirty ? broad_commands(w) : 0;
 }
 
+/* After a change from outside the simulation (a statement, or the hook's at), the
+ * objects standing at w->time: the boxes of what moved, what the moved objects
+ * touch and the modes of the woken, then every flight, its box to t_end (the end
+ * of the internal step: so a held body's pairs are found afresh whenever the hand
+ * sets its motion), the schedule, and every pair's bound from now.  (The pairs
+ * the boxes make meanwhile go straight into the schedule made after them.)
+ * Returns 0, or -1 when out of memory. */
+static int start_over(world *w, double t_end)
+{
+    if (update_pairs(w) != 0) return -1;
+    find_contacts(w);
+    w->step.t_end = t_end;
+    for (int i = 0; i < w->n; i++) {
+        step_start(w, i, w->time);
+        w->step.event[i] = HUGE_VAL; /* (sched_build: every object's at +inf) */
+        hold_box(w, i, w->time, false);
+    }
+    if (w->out_of_memory || sched_build(w, w->time) != 0) return -1;
+    w->pairs.nfresh = 0; /* (every pair gets its bound below) */
+    for (long k = 0; k < w->pairs.n; k++)
+        if (w->pairs.p[k].a >= 0) sched_set(w, sched_pair_id(&w->sched, k), bound_from(w, k, w->time));
+    w->sched_dirty = false;
+    return 0;
+}
+
 int sim_prepare(world *w)
 {
     if (update_pairs(w) != 0) return -1;
     bool changed = w->sched_dirty;
     if (step_prepare(w, changed) != 0) return -1;
-    if (changed) {
-        find_contacts(w);
-        /* the boxes for the first internal step, made here rather than in it */
-        long n = world_subframes(w);
-        w->step.t_end = w->time + (n > 0 ? w->set.time_step / (double)n : 0);
-        for (int i = 0; i < w->n; i++) {
-            step_start(w, i, w->time);
-            w->step.event[i] = HUGE_VAL;
-            hold(w, i, w->time, false);
-        }
-        if (w->out_of_memory || sched_build(w, w->time) != 0) return -1; /* (objects: +inf) */
-        w->pairs.nfresh = 0; /* (every pair gets its bound below) */
-        for (long k = 0; k < w->pairs.n; k++)
-            if (w->pairs.p[k].a >= 0)
-                sched_set(w, sched_pair_id(&w->sched, k), bound_from(w, k, w->time));
+    if (!changed) return 0;
+    /* the boxes for the first internal step */
+    long n = world_subframes(w);
+    return start_over(w, w->time + (n > 0 ? w->set.time_step / (double)n : 0));
+}
+
+/* The hook acts at w->time, where the internal step under way was cut; what it
+ * changed (edit_done marks it) starts over from there, as after a statement.
+ * Returns the next instant it asks for; one that asks for the same instant again
+ * and again is let go after SIM_MAX_EVENTS_PER_STEP calls. */
+static double hook_act(world *w, const sim_hook *hook, double t_end, int *calls)
+{
+    hook->at(hook->ctx, w);
+    if (w->sched_dirty && start_over(w, t_end) != 0) w->out_of_memory = true;
+    double tn = hook->next(hook->ctx, w);
+    *calls = tn <= w->time ? *calls + 1 : 0;
+    return *calls > SIM_MAX_EVENTS_PER_STEP ? HUGE_VAL : tn;
+}
+
+/* The internal step that ends at t_end, cut at each instant tn before it that the
+ * hook asks for; returns the hook's next instant.  (Out of the frame's loop, so
+ * that a frame the hook has nothing in costs one comparison a step.) */
+static __attribute__((cold, noinline)) double hook_cut(world *w, const sim_hook *hook, double tn,
+                                                      double t_end, int *calls)
+{
+    while (tn < t_end) {
+        if (tn > w->time) internal_step(w, tn);
+        tn = hook_act(w, hook, t_end, calls);
     }
-    w->sched_dirty = false;
-    return 0;
+    return tn;
 }
 
 int sim_frame(world *w, char *err, size_t errlen)
+{
+    return sim_frame_hooked(w, NULL, err, errlen);
+}
+
+int sim_frame_hooked(world *w, const sim_hook *hook, char *err, size_t errlen)
 {
     long n = world_subframes(w);
     if (n > SIM_MAX_SUBFRAMES) {
@@ -548,8 +605,15 @@ int sim_frame(world *w, char *err, size_t errlen)
     }
     double t0 = w->time, h = n > 0 ? w->set.time_step / (double)n : 0;
     w->nevents = 0;
+    /* the hook's next instant: the internal step is cut there, and what the hook
+     * changed is seen by the rest of the step.  A frame it has nothing in runs as
+     * if there were none. */
+    int calls = 0;
+    double tn = hook ? hook->next(hook->ctx, w) : HUGE_VAL;
     for (long k = 0; k < n; k++) {
-        internal_step(w, h);
+        double t_end = w->time + h;
+        if (tn < t_end) tn = hook_cut(w, hook, tn, t_end, &calls);
+        internal_step(w, t_end);
         w->st.subframes++;
     }
     if (rest_frame_end(w) > 0) {
@@ -565,6 +629,13 @@ int sim_frame(world *w, char *err, size_t errlen)
     }
     w->base_frames++;
     w->time = w->time_base + (double)w->base_frames * w->base_step;
+    /* the pairs' closest features only speed queries up, but where features are
+     * equally close they pick which is reported: every frame starts from none, so
+     * that a world read back from save (which has none) goes on to the bit */
+    for (long k = 0; k < w->pairs.n; k++) w->pairs.p[k].cache.valid = w->pairs.p[k].hit.valid = false;
+    /* and each object's w is the one its L and orientation give, as when read back */
+    for (int i = 0; i < w->n; i++)
+        if (!body_is_static(w->bodies[i])) body_update_w(w->bodies[i]);
     w->frame++;
     w->st.frames++;
     if (w->out_of_memory) { /* (a pair or a box could not be made on the way) */
@@ -582,8 +653,10 @@ long sim_penetrations(world *w, sim_report report, void *ctx)
     /* only near objects can meet: their pairs, in the order of a, then b */
     for (int i = 0; i < w->n; i++) {
         FOR_PAIRS_OF(w, i, link, p) {
-            if (link->other < i || !p->near || p->touching) continue;
+            if (link->other < i || !p->near) continue;
             const body *a = w->bodies[p->a], *b = w->bodies[p->b];
+            /* only what a command placed: the simulation's own states are its own */
+            if (p->touching || (!a->moved && !b->moved)) continue;
             closest_result r = pair_query(w, p, a, b);
             if (r.status == CLOSEST_PENETRATING && r.distance < -touch_of(a, b)) {
                 count++;

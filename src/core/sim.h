@@ -23,6 +23,26 @@
  * With time_step 0 nothing moves and the frame still counts. */
 int sim_frame(world *w, char *err, size_t errlen);
 
+/* A caller's say within a frame: the hand, whose trigger and tracker rows act at
+ * their exact times (hold.h).  next gives the earliest instant (simulated time)
+ * at which it wants to act, or HUGE_VAL; it is asked when the frame starts and
+ * after each at.  If that instant falls within the frame, the internal step under
+ * way is cut there, every object is brought to that instant, and at is called
+ * with world.time exactly it.  at may hold, release and place bodies (hold.h);
+ * it must not add or delete objects or change settings.  What it changed starts
+ * over from there as after a statement (every flight, every pair's bound, the
+ * contacts and modes of the objects it woke), and the step goes on to its end.
+ * After at, next must give a later instant.  An instant at the frame's very end
+ * is not the frame's: the caller acts there after it. */
+typedef struct {
+    double (*next)(void *ctx, const world *w);
+    void (*at)(void *ctx, world *w);
+    void *ctx;
+} sim_hook;
+
+/* sim_frame with hook (NULL: none, which is sim_frame). */
+int sim_frame_hooked(world *w, const sim_hook *hook, char *err, size_t errlen);
+
 /* Makes ready what the frames need: the pairs, the schedule, the copies of the
  * objects that may move and the scratch of the internal steps, each allocated
  * and written once, so that frames allocate nothing and touch no fresh memory
@@ -30,8 +50,11 @@ int sim_frame(world *w, char *err, size_t errlen);
  * what a command changed since).  Returns 0, or -1 when out of memory. */
 int sim_prepare(world *w);
 
-/* Calls report for every pair that interpenetrates now (deeper than the contact
- * tolerance), with the depth estimate; returns how many.  -1 when out of memory. */
+/* Calls report for every pair that a command placed (one of its objects was
+ * placed, turned, reshaped or added since time last ran) and that interpenetrates
+ * now, deeper than the contact tolerance, with the depth estimate; returns how
+ * many.  States the simulation made itself are never reported: a run can be
+ * split anywhere.  -1 when out of memory. */
 typedef void (*sim_report)(void *ctx, const body *a, const body *b, double depth);
 long sim_penetrations(world *w, sim_report report, void *ctx);
 

@@ -24,7 +24,6 @@ void step_free(step_state *s)
 {
     free(s->fl);
     free(s->event);
-    free(s->slide_face);
     free(s->scratch);
     free(s->flown_id);
     free(s->flown_t);
@@ -55,7 +54,6 @@ int step_prepare(world *w, bool changed)
         changed = true;
         s->fl = resized(s->fl, sizeof *s->fl, w->n, &ok);
         s->event = resized(s->event, sizeof *s->event, w->n, &ok);
-        s->slide_face = resized(s->slide_face, sizeof *s->slide_face, w->n, &ok);
         s->scratch = resized(s->scratch, STEP_COPIES * sizeof *s->scratch, w->n, &ok);
         s->flown_id = resized(s->flown_id, STEP_FLOWN_COPIES * sizeof *s->flown_id, w->n, &ok);
         s->flown_t = resized(s->flown_t, STEP_FLOWN_COPIES * sizeof *s->flown_t, w->n, &ok);
@@ -100,7 +98,6 @@ static int step_copy(world *w, bool changed)
         s->now[i] = w->bodies[i];
         s->mark[i] = false;
         s->event[i] = HUGE_VAL;
-        s->slide_face[i] = -1;
         flight_start(&s->fl[i], w->bodies[i], FLIGHT_STILL, w->time, v3(0, 0, 0), v3(0, 0, 0),
                      s->flight_count++);
     }
@@ -136,6 +133,24 @@ void step_sync(world *w, int i, double t)
     if (step_moves(w, i)) flight_at(&w->step.fl[i], w->bodies[i], t, w->bodies[i]);
 }
 
+sched_move step_move(const world *w, int i, const body *o)
+{
+    const flight *f = &w->step.fl[i];
+    sched_move m = {.moves = step_moves(w, i) && f->kind != FLIGHT_STILL, .reach = o->shape.r_out};
+    if (!m.moves) return m;
+    m.c = body_com(o);
+    m.v = o->v;
+    m.a = f->a;
+    m.rate = f->rate;
+    if (f->kind == FLIGHT_HELD) {
+        m.held = true;
+        m.reach += v3_len(v3_sub(m.c, o->hold_pivot));
+        m.c = o->hold_pivot;
+        m.v = o->hold_v;
+    }
+    return m;
+}
+
 void step_start(world *w, int i, double t)
 {
     body *b = w->bodies[i];
@@ -143,6 +158,10 @@ void step_start(world *w, int i, double t)
     long id = w->step.flight_count++;
     if (!step_moves(w, i)) {
         flight_start(f, b, FLIGHT_STILL, t, v3(0, 0, 0), v3(0, 0, 0), id);
+        return;
+    }
+    if (b->held) {
+        flight_start(f, b, FLIGHT_HELD, t, v3(0, 0, 0), v3(0, 0, 0), id);
         return;
     }
     if (b->mode == MODE_SLIDE) {

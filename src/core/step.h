@@ -17,6 +17,7 @@
 #include "body.h"
 #include "flight.h"
 #include "lcp.h"
+#include "schedule.h"
 
 typedef struct world world;
 
@@ -30,7 +31,6 @@ typedef struct {
     flight *fl;           /* each object's flight (a static object's: still) */
     long flight_count;
     double *event;        /* each object's own next event, or +inf */
-    int *slide_face;      /* MODE_SLIDE: the support's face it slides on */
     body *scratch;        /* STEP_COPIES copies of each object */
     long *flown_id;       /* step_flown's copies: the flight each was flown on, */
     double *flown_t;      /*   and to when (-1: none) */
@@ -69,6 +69,11 @@ void step_sync(world *w, int i, double t);
 
 /* True when body i moves: dynamic and not resting. */
 bool step_moves(const world *w, int i);
+
+/* Body i's motion at its state o (at some time of its flight), as the bounds see
+ * it (schedule.h): still, flying about its centre of mass, or held (about the
+ * hand's pivot). */
+sched_move step_move(const world *w, int i, const body *o);
 
 /* Starts body i's flight at time t from its state, as its mode says (the caller
  * has set mode and state). */

@@ -205,3 +205,31 @@ long world_subframes(const world *w)
     if (n < 1) n = 1;
     return n > 1e12 ? (long)1e12 : (long)n;
 }
+
+/* FNV-1a over n bytes at p, continuing from h. */
+static unsigned long long fnv(unsigned long long h, const void *p, size_t n)
+{
+    const unsigned char *c = p;
+    for (size_t k = 0; k < n; k++) h = (h ^ c[k]) * 0x100000001b3ULL;
+    return h;
+}
+
+unsigned long long world_hash(const world *w)
+{
+    unsigned long long h = fnv(0xcbf29ce484222325ULL, &w->time, sizeof w->time);
+    for (int i = 0; i < w->n; i++) {
+        const body *b = w->bodies[i];
+        int tags[2] = {(int)b->state, (int)b->mode};
+        double s[16] = {b->x.x, b->x.y, b->x.z, b->q.w, b->q.x, b->q.y, b->q.z,
+                        b->v.x, b->v.y, b->v.z, b->L.x, b->L.y, b->L.z, b->w.x, b->w.y, b->w.z};
+        h = fnv(h, b->name, strlen(b->name) + 1);
+        h = fnv(h, tags, sizeof tags);
+        h = fnv(h, s, sizeof s);
+        if (b->held) { /* (hold.h; a world holding nothing hashes as before) */
+            double hs[6] = {b->hold_pivot.x, b->hold_pivot.y, b->hold_pivot.z,
+                            b->hold_v.x,     b->hold_v.y,     b->hold_v.z};
+            h = fnv(h, hs, sizeof hs);
+        }
+    }
+    return h;
+}

@@ -128,4 +128,9 @@ static inline vec3 world_body_accel(const world *w, const body *b)
  * time_step is 0. */
 long world_subframes(const world *w);
 
+/* A 64-bit hash (FNV-1a) of the simulated time and of every object's name,
+ * state, mode, position, orientation, velocity and angular momentum, and a held
+ * object's pivot and its velocity, bit for bit (language.md, "Exact state"). */
+unsigned long long world_hash(const world *w);
+
 #endif

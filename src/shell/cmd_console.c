@@ -2,10 +2,12 @@
  * "Commands a console tool needs"): run, time, print, list, show, save, distance,
  * stats and help. */
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "core/closest.h"
+#include "core/edit.h"
 #include "handlers.h"
 #include "outfile.h"
 #include "shell.h"
@@ -33,6 +35,7 @@ cmd_status cmd_print(shell *sh, const stmt *st)
         return CMD_ERROR;
     }
     body_write(sh->out, sh->w.bodies[i]);
+    contact_write(sh->out, &sh->w, i, 0);
     return CMD_OK;
 }
 
@@ -41,8 +44,7 @@ cmd_status cmd_list(shell *sh, const stmt *st)
     (void)st;
     for (int i = 0; i < sh->w.n; i++) {
         const body *b = sh->w.bodies[i];
-        fprintf(sh->out, "%-20s %-13s %s\n", b->name, body_type_name(b->sp.kind),
-                log_state_name(b->state));
+        fprintf(sh->out, "%-20s %-13s %s\n", b->name, body_type_name(b->sp.kind), log_body_state(b));
     }
     return CMD_OK;
 }
@@ -76,7 +78,16 @@ cmd_status cmd_save(shell *sh, const stmt *st)
         body_write(f, sh->w.bodies[i]);
         fputc('\n', f);
     }
-    if (sh->current >= 0) fprintf(f, "# the current object\n%s %s\n",
+    /* the contact state: placing an object ends its lasting contacts */
+    fprintf(f, "# the contact state: modes, rest and lasting contacts, as the simulation left "
+               "them\n");
+    for (int i = 0; i < sh->w.n; i++) {
+        fprintf(f, "%s %s\n", body_type_name(sh->w.bodies[i]->sp.kind), sh->w.bodies[i]->name);
+        contact_write(f, &sh->w, i, 1);
+    }
+    /* the hand last: what it holds is gripped again */
+    hand_write(f, sh);
+    if (sh->current >= 0) fprintf(f, "\n# the current object\n%s %s\n",
                                   body_type_name(sh->w.bodies[sh->current]->sp.kind),
                                   sh->w.bodies[sh->current]->name);
     char err[SHELL_PATH_MAX + 256];
@@ -158,7 +169,8 @@ static void help_summary(shell *sh)
                   {"property", "Properties of the current object (or NAME.property = value)"},
                   {"system", "System (thesis Table A.5)"},
                   {"console", "Console"},
-                  {"view", "Views and hand"}};
+                  {"view", "Views and hand"},
+                  {"sound", "Sound and movies"}};
     for (size_t g = 0; g < sizeof groups / sizeof groups[0]; g++) {
         fprintf(sh->out, "%s%s:\n", g ? "\n" : "", groups[g].title);
         for (int i = 0; i < command_count; i++) {
@@ -192,5 +204,28 @@ cmd_status cmd_help(shell *sh, const stmt *st)
             if (*p) p++;
         }
     }
+    return CMD_OK;
+}
+
+cmd_status cmd_clock(shell *sh, const stmt *st)
+{
+    if (st->num[1] < 0 || st->num[1] != floor(st->num[1])) {
+        sh_error(sh, st, "clock: the frames N in (T0, N) must be a whole number >= 0");
+        return CMD_ERROR;
+    }
+    edit_clock(&sh->w, st->num[0], (long)st->num[1]);
+    return CMD_OK;
+}
+
+cmd_status cmd_frame(shell *sh, const stmt *st)
+{
+    sh->w.frame = (long)st->num[0];
+    return CMD_OK;
+}
+
+cmd_status cmd_hash(shell *sh, const stmt *st)
+{
+    (void)st;
+    fprintf(sh->out, "hash = %016llx\n", world_hash(&sh->w));
     return CMD_OK;
 }

@@ -80,8 +80,7 @@ cmd_status cmd_delete(shell *sh, const stmt *st)
     }
     edit_delete(&sh->w, i);
     fix_index(&sh->current, i);
-    fix_index(&sh->selected, i);
-    fix_index(&sh->prev_selected, i);
+    hand_object_deleted(&sh->hand, i);
     return CMD_OK;
 }
 
@@ -113,4 +112,51 @@ cmd_status cmd_property(shell *sh, const stmt *st)
 {
     int i = target(sh, st);
     return i < 0 ? CMD_ERROR : cmd_property_of(sh, st, i);
+}
+
+/* The exact state's statements (language.md, "Exact state"): each sets what it
+ * names as save wrote it, through edit.h's exact functions. */
+cmd_status cmd_exact(shell *sh, const stmt *st)
+{
+    int i = target(sh, st);
+    if (i < 0) return CMD_ERROR;
+    world *w = &sh->w;
+    const body *b = w->bodies[i];
+    const char *n = st->cmd->name;
+    char err[256];
+    if (strcmp(n, "orientation") == 0) {
+        edit_exact_orientation(w, i, (quat){st->num[0], st->num[1], st->num[2], st->num[3]});
+    } else if (strcmp(n, "velocity") == 0) {
+        edit_exact_velocity(w, i, stmt_vec(st));
+    } else if (strcmp(n, "angular_momentum") == 0) {
+        edit_exact_momentum(w, i, stmt_vec(st));
+    } else if (strcmp(n, "slide_on") == 0) {
+        int s = world_find(w, st->word);
+        if (s < 0 || !body_is_static(w->bodies[s])) {
+            sh_error(sh, st, s < 0 ? "no object named '%s'" : "'%s' is not static: nothing slides on it",
+                     st->word);
+            return CMD_ERROR;
+        }
+        edit_exact_support(w, i, s, b->slide_face);
+    } else if (strcmp(n, "slide_face") == 0) {
+        edit_exact_support(w, i, b->slide_on, (int)st->num[0]);
+    } else if (strcmp(n, "mode") == 0 || strcmp(n, "resting") == 0) {
+        body_mode mode = strcmp(n, "mode") == 0 ? (body_mode)st->num[0] : b->mode;
+        bool resting = strcmp(n, "resting") == 0 ? st->num[0] != 0 : b->state == STATE_RESTING;
+        if (edit_exact_contact(w, i, mode, resting, err, sizeof err) != 0) {
+            sh_error(sh, st, "%s", err);
+            return CMD_ERROR;
+        }
+    } else { /* touching */
+        int j = world_find(w, st->word);
+        if (j < 0) {
+            sh_error(sh, st, "no object named '%s'", st->word);
+            return CMD_ERROR;
+        }
+        if (edit_exact_touching(w, i, j, err, sizeof err) != 0) {
+            sh_error(sh, st, "%s", err);
+            return CMD_ERROR;
+        }
+    }
+    return CMD_OK;
 }

@@ -1,7 +1,6 @@
 /* cmd_setting.c: the handlers of `name = value` settings (thesis Table A.5;
  * language.md): the generic one, which writes the value at the table's offset in
- * its owner's settings, and those that check or convert their value first; and
- * the hand's select and reselect buttons. */
+ * its owner's settings, and those that check or convert their value first. */
 #include <errno.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -65,6 +64,23 @@ cmd_status cmd_seed(shell *sh, const stmt *st)
     return CMD_OK;
 }
 
+/* splitmix64 adds this to its state at every draw (random.c) */
+#define DRAW_STEP 0x9E3779B97F4A7C15ULL
+
+cmd_status cmd_random_draws(shell *sh, const stmt *st)
+{
+    sh->rng = sh->set.seed + (unsigned long long)st->num[0] * DRAW_STEP;
+    return CMD_OK;
+}
+
+unsigned long long shell_random_draws(const shell *sh)
+{
+    /* the step's inverse modulo 2^64 (it is odd), by Newton's iteration */
+    unsigned long long inv = DRAW_STEP;
+    for (int k = 0; k < 6; k++) inv *= 2 - DRAW_STEP * inv;
+    return (sh->rng - sh->set.seed) * inv;
+}
+
 cmd_status cmd_image_size(shell *sh, const stmt *st)
 {
     sh->view_set.image_w = (int)st->num[0];
@@ -86,48 +102,6 @@ cmd_status cmd_real(shell *sh, const stmt *st)
     return CMD_OK;
 }
 
-static const char *const builtin_sounds[] = {"click", "knock", "bell", "off", NULL};
-
-static bool is_builtin_sound(const char *s)
-{
-    for (int i = 0; builtin_sounds[i]; i++)
-        if (strcmp(s, builtin_sounds[i]) == 0) return true;
-    return false;
-}
-
-/* A file the user names for reading must be a readable regular file. */
-static bool readable_file(shell *sh, const stmt *st, const char *path)
-{
-    struct stat sb;
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        sh_error(sh, st, "%s: cannot read '%s': %s", st->cmd->name, path, strerror(errno));
-        return false;
-    }
-    bool dir = fstat(fileno(f), &sb) == 0 && S_ISDIR(sb.st_mode);
-    fclose(f);
-    if (dir) sh_error(sh, st, "%s: '%s' is a folder, not a file", st->cmd->name, path);
-    return !dir;
-}
-
-cmd_status cmd_collision_sound(shell *sh, const stmt *st)
-{
-    if (!is_builtin_sound(st->word) && !readable_file(sh, st, st->word)) return CMD_ERROR;
-    snprintf(sh->set.collision_sound, sizeof sh->set.collision_sound, "%s", st->word);
-    return CMD_OK;
-}
-
-cmd_status cmd_tracker(shell *sh, const stmt *st)
-{
-    if (st->n == 1) {
-        sh->set.tracker[0] = '\0';
-        return CMD_OK;
-    }
-    if (!readable_file(sh, st, st->word)) return CMD_ERROR;
-    snprintf(sh->set.tracker, sizeof sh->set.tracker, "%s", st->word);
-    return CMD_OK;
-}
-
 cmd_status cmd_log(shell *sh, const stmt *st)
 {
     bool trace = strcmp(st->cmd->name, "trace") == 0;
@@ -145,26 +119,5 @@ cmd_status cmd_log(shell *sh, const stmt *st)
         sh_error(sh, st, "%s: %s", st->cmd->name, err);
         return CMD_ERROR;
     }
-    return CMD_OK;
-}
-
-cmd_status cmd_select(shell *sh, const stmt *st)
-{
-    if (st->n) {
-        sh->set.select_mode = st->num[0] != 0;
-    } else { /* the thesis's toggle: say where it went */
-        sh->set.select_mode = !sh->set.select_mode;
-        sh_info(sh, "select mode %s", sh->set.select_mode ? "on" : "off");
-    }
-    return CMD_OK;
-}
-
-cmd_status cmd_reselect(shell *sh, const stmt *st)
-{
-    if (sh->prev_selected < 0) {
-        sh_error(sh, st, "reselect: no object has been selected yet");
-        return CMD_ERROR;
-    }
-    sh->current = sh->prev_selected;
     return CMD_OK;
 }

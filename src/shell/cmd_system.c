@@ -42,24 +42,19 @@ cmd_status cmd_stop(shell *sh, const stmt *st)
 
 cmd_status cmd_restart(shell *sh, const stmt *st)
 {
-    /* the logs end with the world they logged (commands/trace, commands/events) */
-    cmd_status r = CMD_OK;
-    char err[LOG_PATH_MAX + 256];
-    if (log_trace_close(&sh->logs, err, sizeof err) != 0) {
-        sh_error(sh, st, "trace: %s", err);
-        r = CMD_ERROR;
-    }
-    if (log_events_close(&sh->logs, err, sizeof err) != 0) {
-        sh_error(sh, st, "events: %s", err);
-        r = CMD_ERROR;
-    }
+    /* the logs end with the world they logged (commands/trace, commands/events,
+     * commands/hand_log) */
+    cmd_status r = shell_close_logs(sh, st);
     world_free(&sh->w);
     world_init(&sh->w);
     sh->w.set = sh->startup.sim;
     sh->view_set = sh->startup.view;
     sh->set = sh->startup.shell;
+    sh->sound_set = sh->startup.sound; /* the soundtrack and movie go on, as the logs do */
     sh->rng = sh->set.seed;
-    sh->current = sh->selected = sh->prev_selected = -1;
+    sh->current = -1;
+    hand_free(&sh->hand);
+    hand_init(&sh->hand, sh->hand.say, sh->hand.say_ctx);
     return r;
 }
 
@@ -86,6 +81,7 @@ cmd_status cmd_display(shell *sh, const stmt *st)
 cmd_status cmd_refresh(shell *sh, const stmt *st)
 {
     char err[512];
+    shell_overlay(sh);
     if (view_refresh(&sh->view, &sh->w, &sh->view_set, sh->w.frame, &sh->view_st, err,
                      sizeof err) != 0) {
         sh_error(sh, st, "refresh: %s", err);

@@ -44,6 +44,9 @@ typedef enum {
     VAL_CHOICE,       /* one of the words in choices */
     VAL_FILE,         /* a file name */
     VAL_FILE_OR_OFF,  /* a file name, or off */
+    VAL_NAME,         /* an object name */
+    VAL_QUAT,         /* (w, x, y, z) */
+    VAL_PAIR,         /* (a, b) */
 } arg_kind;
 
 /* Range flags.  R_RANGE: every number of the value (each component of a vector)
@@ -64,8 +67,9 @@ enum { C_SPHERE = 1 << SHAPE_SPHERE, C_CUBE = 1 << SHAPE_CUBE, C_SQ = 1 << SHAPE
 typedef enum { CMD_OK, CMD_ERROR, CMD_QUIT } cmd_status;
 
 /* Whose settings a FORM_SETTING's field is in: the simulation's (world.set), the
- * views' (shell.view_set) or the shell's own (shell.set). */
-typedef enum { OWN_NONE, OWN_SIM, OWN_VIEW, OWN_SHELL } setting_owner;
+ * views' (shell.view_set), the sound's (shell.sound_set), the hand's
+ * (shell.hand.set) or the shell's own (shell.set). */
+typedef enum { OWN_NONE, OWN_SIM, OWN_VIEW, OWN_SHELL, OWN_SOUND, OWN_HAND } setting_owner;
 
 typedef struct command {
     const char *name;
@@ -73,7 +77,8 @@ typedef struct command {
     arg_kind arg;
     unsigned range;      /* R_ flags; R_RANGE: check lo and hi */
     double lo, hi;
-    const char *choices; /* VAL_CHOICE: "pair|sbs|anaglyph|mono" */
+    const char *choices; /* VAL_CHOICE: "pair|sbs|anaglyph|mono"; ARG_NAME: words
+                          * allowed besides names (completion offers them) */
     unsigned classes;    /* FORM_PROPERTY: the C_ classes it applies to */
     setting_owner owner; /* FORM_SETTING: whose settings hold its field */
     size_t off;          /* FORM_PROPERTY: offset of its field in body (edit.h);

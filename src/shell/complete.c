@@ -93,6 +93,19 @@ static void first_word_candidates(const shell *sh, const char *text)
     add_names(sh, ".");
 }
 
+/* The words of choices, "a|b|c" (NULL: none). */
+static void add_choices(const char *choices)
+{
+    char buf[64];
+    for (const char *p = choices; p && *p;) {
+        size_t n = strcspn(p, "|");
+        snprintf(buf, sizeof buf, "%.*s", (int)n, p);
+        cand_add(buf);
+        p += n;
+        if (*p) p++;
+    }
+}
+
 /* Candidates after the first word w0 (and '=' when has_eq). Returns false when
  * file names should be completed instead. */
 static bool later_candidates(const shell *sh, const char *w0, bool has_eq)
@@ -102,7 +115,11 @@ static bool later_candidates(const shell *sh, const char *w0, bool has_eq)
     if (!c) return true;
     switch (c->arg) {
     case ARG_NAME:
-    case ARG_NAME2: add_names(sh, ""); return true;
+    case ARG_NAME2:
+    case VAL_NAME:
+        add_names(sh, "");
+        add_choices(c->choices);
+        return true;
     case ARG_OPT_WORD:
         for (int i = 0; i < command_count; i++) cand_add(command_table[i].name);
         return true;
@@ -117,17 +134,7 @@ static bool later_candidates(const shell *sh, const char *w0, bool has_eq)
         cand_add("on");
         cand_add("off");
         return true;
-    case VAL_CHOICE: {
-        char buf[64];
-        for (const char *p = c->choices; *p;) {
-            size_t n = strcspn(p, "|");
-            snprintf(buf, sizeof buf, "%.*s", (int)n, p);
-            cand_add(buf);
-            p += n;
-            if (*p) p++;
-        }
-        return true;
-    }
+    case VAL_CHOICE: add_choices(c->choices); return true;
     default: return true;
     }
 }

@@ -21,6 +21,7 @@
 #include "core/limits.h"
 #include "lex.h"
 #include "fmt.h"
+#include "grow.h"
 
 /* Files larger than this are refused (a scene is a few kilobytes). */
 #define LANG_MAX_FILE (64L * 1024 * 1024)
@@ -82,7 +83,7 @@ static int get_number(const token *t, const command *c, double *out, const where
 static int get_tuple(const token *t, int nt, int *i, int n, const command *c, double *out,
                      const where *at)
 {
-    static const char *forms[] = {"", "(x)", "(x, y)", "(x, y, z)"};
+    static const char *forms[] = {"", "(x)", "(x, y)", "(x, y, z)", "(w, x, y, z)"};
     const char *form = forms[n];
     char buf[96];
     if (*i >= nt || t[*i].k != T_LP) {
@@ -326,21 +327,45 @@ static int parse_value(stmt *st, const token *t, int nt, const where *at)
             }
         }
         break;
-    case VAL_SIZE2:
+    case VAL_NAME:
+        if (get_name(t, nt, i, c, &st->word, at) != 0) return -1;
+        i++;
+        break;
+    case VAL_QUAT:
+    case VAL_PAIR:
     case VAL_RANGE2: {
-        if (get_tuple(t, nt, &i, 2, c, st->num, at) != 0) return -1;
+        int n = c->arg == VAL_QUAT ? 4 : 2;
+        if (get_tuple(t, nt, &i, n, c, st->num, at) != 0) return -1;
         char what[96];
         snprintf(what, sizeof what, "%s components", c->name);
-        for (int k = 0; k < 2; k++)
-            if ((c->arg == VAL_SIZE2 && check_integer(c, st->num[k], at) != 0) ||
-                check_range_of(what, c->range, c->lo, c->hi, st->num[k], at) != 0)
+        for (int k = 0; k < n; k++)
+            if (check_range_of(what, c->range, c->lo, c->hi, st->num[k], at) != 0) return -1;
+        if (c->arg == VAL_QUAT) {
+            double n2 = 0;
+            for (int k = 0; k < 4; k++) n2 += st->num[k] * st->num[k];
+            if (!(fabs(sqrt(n2) - 1) <= 1e-6)) {
+                perr(at, "%s must be a unit quaternion (w, x, y, z), within 1e-6 of length 1",
+                     c->name);
                 return -1;
+            }
+        }
         if (c->arg == VAL_RANGE2 && !(st->num[0] <= st->num[1])) {
             char a[32], b[32];
             perr(at, "%s: the least must not exceed the most (got %s, %s)", c->name,
                  num_text(st->num[0], a), num_text(st->num[1], b));
             return -1;
         }
+        st->n = n;
+        break;
+    }
+    case VAL_SIZE2: {
+        if (get_tuple(t, nt, &i, 2, c, st->num, at) != 0) return -1;
+        char what[96];
+        snprintf(what, sizeof what, "%s components", c->name);
+        for (int k = 0; k < 2; k++)
+            if (check_integer(c, st->num[k], at) != 0 ||
+                check_range_of(what, c->range, c->lo, c->hi, st->num[k], at) != 0)
+                return -1;
         st->n = 2;
         break;
     }
@@ -484,13 +509,9 @@ static int parse_stmt(stmt *st, const token *t, int nt, const where *at)
 
 static int prog_push(program *p, const stmt *st)
 {
-    if (p->n == p->cap) {
-        int cap = p->cap ? 2 * p->cap : 16;
-        stmt *ns = realloc(p->s, (size_t)cap * sizeof *ns);
-        if (!ns) return -1;
-        p->s = ns;
-        p->cap = cap;
-    }
+    stmt *ns = grow_for_one(p->s, p->n, &p->cap, sizeof *ns, 16);
+    if (!ns) return -1;
+    p->s = ns;
     p->s[p->n++] = *st;
     return 0;
 }
@@ -512,6 +533,20 @@ static int load_sub(stmt *st, const lang_paths *paths, int depth, const char **s
     st->sub = lang_parse_file(st->word, paths, depth + 1, stack, n_stack, at->name, at->line,
                               at->err, at->errlen);
     return st->sub ? 0 : -1;
+}
+
+/* A file the statement reads (a tracker file) is found as read finds its file:
+ * st->word becomes the path found, or stays as written when there is none (its
+ * handler then says so).  Returns 0, or -1 when out of memory. */
+static int resolve_word(stmt *st, const lang_paths *paths)
+{
+    char full[PATH_MAX];
+    if (lang_resolve(st->word, paths, full, sizeof full) != 0 || strcmp(full, st->word) == 0) return 0;
+    char *found = strdup(full);
+    if (!found) return -1;
+    free(st->word);
+    st->word = found;
+    return 0;
 }
 
 program *lang_parse(const char *text, size_t len, const char *name, int first_line,
@@ -550,6 +585,10 @@ program *lang_parse(const char *text, size_t len, const char *name, int first_li
                     goto fail;
                 }
                 st.file = prog->path;
+                if (strcmp(st.cmd->name, "tracker") == 0 && st.n == 0 && resolve_word(&st, paths) != 0) {
+                    stmt_clear(&st);
+                    goto oom;
+                }
                 if (strcmp(st.cmd->name, "read") == 0 &&
                     load_sub(&st, paths, depth, stack, n_stack, &at) != 0) {
                     stmt_clear(&st);

@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "grow.h"
+
 /* A token's text for a message: quoted, at most 40 characters. */
 const char *tok_text(const token *t, char buf[96])
 {
@@ -47,13 +49,9 @@ static bool is_word_char(unsigned char c)
 
 static int tl_push(toklist *tl, token t)
 {
-    if (tl->n == tl->cap) {
-        int cap = tl->cap ? 2 * tl->cap : 32;
-        token *nt = realloc(tl->t, (size_t)cap * sizeof *nt);
-        if (!nt) return -1;
-        tl->t = nt;
-        tl->cap = cap;
-    }
+    token *nt = grow_for_one(tl->t, tl->n, &tl->cap, sizeof *nt, 32);
+    if (!nt) return -1;
+    tl->t = nt;
     tl->t[tl->n++] = t;
     return 0;
 }

@@ -81,6 +81,11 @@ const char *log_state_name(body_state s)
     return "?";
 }
 
+const char *log_body_state(const body *b)
+{
+    return b->held ? "held" : log_state_name(b->state);
+}
+
 int log_trace_frame(shell_logs *l, const world *w, char *err, size_t errlen)
 {
     if (!l->trace) return 0;
@@ -91,8 +96,7 @@ int log_trace_frame(shell_logs *l, const world *w, char *err, size_t errlen)
                 "%ld,%.17g,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,"
                 "%.17g,%.17g,%.17g,%s\n",
                 w->frame, w->time, b->name, b->x.x, b->x.y, b->x.z, b->q.w, b->q.x, b->q.y,
-                b->q.z, b->v.x, b->v.y, b->v.z, b->w.x, b->w.y, b->w.z,
-                log_state_name(b->state)) < 0)
+                b->q.z, b->v.x, b->v.y, b->v.z, b->w.x, b->w.y, b->w.z, log_body_state(b)) < 0)
             return outfile_failed(l->trace_path, errno, err, errlen);
     }
     return outfile_flush(l->trace, l->trace_path, err, errlen);

@@ -50,4 +50,7 @@ int log_events_frame(shell_logs *l, const world *w, char *err, size_t errlen);
 /* The state word of a body: dynamic, static or resting. */
 const char *log_state_name(body_state s);
 
+/* The state word of body b: held (by the hand), or its state's. */
+const char *log_body_state(const body *b);
+
 #endif

@@ -1,8 +1,11 @@
 /* prompt.c: the input loops: the interactive prompt and plain lines from a pipe.
  *
  * On a terminal the prompt uses GNU readline's callback interface: select() waits
- * for a key or for the next frame's wall-clock time, so that after `start` time runs
- * in real time while the user types (no threads).  Ctrl-C only sets a flag: it
+ * for a key, for the next frame's wall-clock time, or for rows of the hand's live
+ * feed (a named pipe), so that after `start` time runs in real time while the user
+ * types and the hand moves (no threads).  While time stands still the hand's
+ * tracker clock runs on the wall clock (hand_wall), so that a recorded hand can
+ * press Start.  Ctrl-C only sets a flag: it
  * stops running time or an ongoing `run`, or clears the line being typed.  From a
  * pipe, lines are read plainly with no prompt.  (After Lua's lua.c and SQLite's
  * shell: readline only on a terminal, a signal handler that only sets a flag.)
@@ -20,11 +23,13 @@
 #include <readline/readline.h>
 
 #include "complete.h"
+#include "media.h"
 #include "shell.h"
 #include "fmt.h"
 
 static shell *g_sh;     /* the shell readline's callbacks work on */
 static bool g_done;     /* quit or end of input */
+static double g_wall;   /* the wall clock up to which the hand's clock ran */
 static char g_history[4096];
 
 static void on_sigint(int sig)
@@ -43,8 +48,35 @@ static void install_sigint(void)
     sigaction(SIGINT, &sa, NULL);
 }
 
+/* The prompt and the line being typed, drawn again after a message broke them. */
+static void mend_line(shell *sh)
+{
+    if (!sh->line_broken) return;
+    sh->line_broken = false;
+    rl_on_new_line();
+    rl_redisplay();
+}
+
+/* How often the prompt wakes while the hand moves on the wall clock, s. */
+#define HAND_TICK 0.02
+
+/* While time stands still (stopped, or halted by time_step 0), the hand's clock
+ * runs on the wall clock, up to now. */
+static void hand_tick(shell *sh)
+{
+    double now = shell_clock();
+    if (!sh->running || !(sh->w.set.time_step > 0)) {
+        hand_wall(&sh->hand, &sh->w, now - g_wall);
+        shell_after_hand(sh);
+        mend_line(sh);
+    }
+    g_wall = now;
+}
+
 static void on_line(char *line)
 {
+    hand_tick(g_sh); /* what the statement sees of the hand is up to date */
+    g_sh->at_prompt = false;
     if (!line) { /* Ctrl-D */
         g_done = true;
         rl_callback_handler_remove();
@@ -59,15 +91,18 @@ static void on_line(char *line)
         rl_callback_handler_remove();
     }
     free(line);
+    g_sh->at_prompt = !g_done;
 }
 
-/* Advances the frames that are due in real time; returns seconds to the next. */
+/* Advances the frames that are due in real time; returns seconds to the next.  A
+ * frame runs when it begins, ahead of its time, so that its collisions' sounds are
+ * queued before their moment (media.h). */
 static double run_due_frames(shell *sh, double *next)
 {
     double h = sh->w.set.time_step;
     if (!sh->running || h <= 0) return -1;
     double t = shell_clock();
-    if (*next <= 0) *next = t + h;
+    if (*next <= 0) *next = t;
     if (t < *next) return *next - t;
     long due = (long)((t - *next) / h) + 1;
     if (due > 5) due = 5; /* fall behind rather than stall the prompt */
@@ -97,20 +132,27 @@ static int loop_readline(shell *sh)
     rl_catch_signals = 0;
     install_sigint();
     rl_callback_handler_install("vroc> ", on_line);
+    sh->at_prompt = true;
     double next = 0;
+    g_wall = shell_clock();
     while (!g_done) {
-        double wait = run_due_frames(sh, &next);
+        hand_tick(sh); /* it may press Start */
+        double wait = media_pump(sh, run_due_frames(sh, &next)); /* frames, live sound */
+        mend_line(sh);
         if (!sh->running) next = 0;
+        if (hand_busy(&sh->hand) && (wait < 0 || wait > HAND_TICK)) wait = HAND_TICK;
+        int in = fileno(rl_instream ? rl_instream : stdin), feed = hand_feed_fd(&sh->hand);
         fd_set fds;
         FD_ZERO(&fds);
-        FD_SET(fileno(rl_instream ? rl_instream : stdin), &fds);
+        FD_SET(in, &fds);
+        if (feed >= 0) FD_SET(feed, &fds);
         struct timeval tv, *tvp = NULL;
         if (wait >= 0) {
             tv.tv_sec = (time_t)wait;
             tv.tv_usec = (suseconds_t)((wait - (double)tv.tv_sec) * 1e6);
             tvp = &tv;
         }
-        int n = select(fileno(rl_instream ? rl_instream : stdin) + 1, &fds, NULL, NULL, tvp);
+        int n = select((feed > in ? feed : in) + 1, &fds, NULL, NULL, tvp);
         if (n < 0 && errno == EINTR) {
             if (!shell_interrupted) continue;
             shell_interrupted = 0;
@@ -126,8 +168,14 @@ static int loop_readline(shell *sh)
             rl_redisplay();
             continue;
         }
-        if (n > 0) rl_callback_read_char();
+        if (n > 0 && feed >= 0 && FD_ISSET(feed, &fds)) { /* rows act as they come */
+            hand_poll(&sh->hand, &sh->w);
+            shell_after_hand(sh);
+            mend_line(sh);
+        }
+        if (n > 0 && FD_ISSET(in, &fds)) rl_callback_read_char();
     }
+    sh->at_prompt = false;
     if (g_history[0]) write_history(g_history);
     clear_history();
     complete_free();

@@ -5,7 +5,8 @@
  * run in turn through the command table; the first error stops it.  After every
  * statement the core is told that the world changed (edit_done).  Time advances
  * frame by frame: after each the shell writes the frame's events and trace rows,
- * and the views' files when record is on.
+ * the views' files when record is on, and gives the frame to the sound and the
+ * movie (media.h).
  */
 #include "shell.h"
 
@@ -18,6 +19,7 @@
 #include "core/sim.h"
 #include "view/view.h"
 #include "fmt.h"
+#include "media.h"
 
 volatile sig_atomic_t shell_interrupted;
 
@@ -29,13 +31,6 @@ shell_settings shell_settings_defaults(void)
     s.random_size[0] = 0.08;
     s.random_size[1] = 0.2;
     s.seed = 1;
-    s.hand = v3(0, 0, 0);
-    s.hand_rotate = (dir_amount){v3(1, 0, 0), 0};
-    s.trigger = false;
-    s.select_mode = false;
-    s.tracker[0] = '\0';
-    snprintf(s.collision_sound, sizeof s.collision_sound, "click");
-    s.collision_vol = 1.0;
     return s;
 }
 
@@ -46,48 +41,88 @@ double shell_clock(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* The hand's messages, about the statement running (hand.h). */
+static void shell_hand_say(void *ctx, hand_message kind, const char *msg)
+{
+    shell *sh = ctx;
+    if (kind == HAND_ERROR) {
+        sh_error(sh, sh->running_st, "%s", msg);
+        sh->hand_failed = true;
+    } else if (kind == HAND_WARNING) {
+        sh_warn(sh, sh->running_st, "%s", msg);
+    } else {
+        sh_info(sh, "%s", msg);
+    }
+}
+
 void shell_init(shell *sh, FILE *out, FILE *err)
 {
     memset(sh, 0, sizeof *sh);
     world_init(&sh->w);
     sh->view_set = view_settings_defaults();
     sh->set = shell_settings_defaults();
+    sh->sound_set = sound_settings_defaults();
     sh->startup.sim = sh->w.set;
     sh->startup.view = sh->view_set;
     sh->startup.shell = sh->set;
+    sh->startup.sound = sh->sound_set;
     sh->rng = sh->set.seed;
-    sh->current = sh->selected = sh->prev_selected = -1;
+    sh->current = -1;
     sh->out = out;
     sh->err = err;
+    hand_init(&sh->hand, shell_hand_say, sh);
 }
 
-cmd_status shell_close_outputs(shell *sh)
+cmd_status shell_close_logs(shell *sh, const stmt *st)
 {
-    char err[LOG_PATH_MAX + 256];
+    char err[HAND_PATH_MAX + 512];
     cmd_status r = CMD_OK;
     if (log_trace_close(&sh->logs, err, sizeof err) != 0) {
-        sh_error(sh, NULL, "trace: %s", err);
+        sh_error(sh, st, "trace: %s", err);
         r = CMD_ERROR;
     }
     if (log_events_close(&sh->logs, err, sizeof err) != 0) {
-        sh_error(sh, NULL, "events: %s", err);
+        sh_error(sh, st, "events: %s", err);
+        r = CMD_ERROR;
+    }
+    if (hand_log_close(&sh->hand, err, sizeof err) != 0) {
+        sh_error(sh, st, "hand_log: %s", err);
         r = CMD_ERROR;
     }
     return r;
 }
 
+cmd_status shell_close_outputs(shell *sh)
+{
+    cmd_status r = media_finish(sh) != 0 ? CMD_ERROR : CMD_OK; /* the movie, the soundtrack */
+    return shell_close_logs(sh, NULL) != CMD_OK ? CMD_ERROR : r;
+}
+
 void shell_free(shell *sh)
 {
-    world_free(&sh->w);
     shell_close_outputs(sh);
+    media_free(sh);
+    world_free(&sh->w);
     view_free(sh->view);
     sh->view = NULL;
+    hand_free(&sh->hand);
 }
 
 /* ------------------------------------------------------------ messages */
 
+/* A message while the prompt shows (the hand, between lines typed) starts on a
+ * line of its own. */
+static void break_line(shell *sh)
+{
+    if (sh->at_prompt && !sh->line_broken) {
+        fputc('\n', sh->out);
+        sh->line_broken = true;
+    }
+}
+
 static void vmsg(shell *sh, const stmt *st, const char *kind, const char *fmt, va_list ap)
 {
+    break_line(sh);
     fflush(sh->out);
     if (st && st->file) fprintf(sh->err, "%s:%d: %s: ", st->file, st->line, kind);
     else fprintf(sh->err, "%s: ", kind);
@@ -115,6 +150,7 @@ void sh_warn(shell *sh, const stmt *st, const char *fmt, ...)
 void sh_info(shell *sh, const char *fmt, ...)
 {
     if (sh->quiet) return;
+    break_line(sh);
     va_list ap;
     va_start(ap, fmt);
     vfprintf(sh->out, fmt, ap);
@@ -128,12 +164,34 @@ cmd_status shell_run_program(shell *sh, const program *p)
 {
     for (int i = 0; i < p->n; i++) {
         sh->found_apart = false; /* the statement may move anything */
+        const stmt *outer = sh->running_st;
+        sh->running_st = &p->s[i];
         cmd_status r = p->s[i].cmd->run(sh, &p->s[i]);
+        /* what the hand did: its buttons run after the statement */
+        if (r == CMD_OK) r = shell_after_hand(sh);
+        sh->running_st = outer;
         /* whatever a statement changed, the schedule's predictions start afresh */
         edit_done(&sh->w);
         if (r != CMD_OK) return r;
     }
     return CMD_OK;
+}
+
+cmd_status shell_after_hand(shell *sh)
+{
+    int i = hand_take_current(&sh->hand);
+    if (i >= 0 && i < sh->w.n) sh->current = i;
+    vec3 fly = hand_take_fly(&sh->hand);
+    sh->view_set.head = v3_add(sh->view_set.head, fly);
+    sh->view_set.look_at = v3_add(sh->view_set.look_at, fly);
+    cmd_status r = CMD_OK;
+    char err[HAND_PATH_MAX + 256];
+    if (hand_log_failed(&sh->hand, err, sizeof err))
+        r = shell_output_failed(sh, sh->running_st, "hand_log", err);
+    panel_part k;
+    while (r == CMD_OK && (k = hand_take_press(&sh->hand)) != PANEL_OFF)
+        r = shell_run_text(sh, panel_control_of(k)->name, NULL);
+    return r;
 }
 
 static lang_paths paths_of(const shell *sh) { return (lang_paths){NULL, sh->scene_dir}; }
@@ -220,8 +278,9 @@ cmd_status shell_output_failed(shell *sh, const stmt *st, const char *what, cons
 }
 
 /* Writes what the frame just advanced gives the outputs: the events' and the
- * trace's rows, and the views when record is on.  An output that fails is turned
- * off (shell_output_failed); returns CMD_ERROR when the run must stop. */
+ * trace's rows, the views when record is on, then the frame's sound and movie
+ * frames (media.h, which may reuse what record drew).  An output that fails is
+ * turned off (shell_output_failed); returns CMD_ERROR when the run must stop. */
 static cmd_status write_frame(shell *sh, const stmt *st)
 {
     char err[1024], ignored[8];
@@ -234,12 +293,14 @@ static cmd_status write_frame(shell *sh, const stmt *st)
         log_trace_close(&sh->logs, ignored, sizeof ignored);
         r = shell_output_failed(sh, st, "trace", err);
     }
+    if (r == CMD_OK && sh->view_set.record) shell_overlay(sh);
     if (r == CMD_OK && sh->view_set.record &&
         view_refresh(&sh->view, &sh->w, &sh->view_set, sh->w.frame, &sh->view_st, err,
                      sizeof err) != 0) {
         sh->view_set.record = false;
         r = shell_output_failed(sh, st, "record", err);
     }
+    if (r == CMD_OK) r = media_frame(sh, st);
     return r;
 }
 
@@ -249,6 +310,8 @@ cmd_status shell_advance(shell *sh, const stmt *st, long n)
     if (n > 0 && !sh->found_apart && shell_check_start(sh, st) != CMD_OK) return CMD_ERROR;
     double t0 = shell_clock();
     cmd_status r = CMD_OK;
+    sim_hook hook = {hand_hook_next, hand_hook_at, &sh->hand};
+    sh->hand_failed = false;
     for (long k = 0; k < n && r == CMD_OK; k++) {
         if (shell_interrupted) {
             shell_interrupted = 0;
@@ -256,12 +319,19 @@ cmd_status shell_advance(shell *sh, const stmt *st, long n)
             sh_info(sh, "interrupted at time = %s", fmt_num(a, sh->w.time));
             break;
         }
-        if (sim_frame(&sh->w, err, sizeof err) != 0) {
+        /* the hand acts at its rows' instants within the frame (hand.h) */
+        hand_frame_begin(&sh->hand, &sh->w);
+        int status = sim_frame_hooked(&sh->w, &hook, err, sizeof err);
+        hand_frame_end(&sh->hand, &sh->w);
+        if (status != 0) {
             sh_error(sh, st, "%s", err);
             r = CMD_ERROR;
             break;
         }
         r = write_frame(sh, st);
+        /* the panel's buttons pressed in the frame act at its end */
+        if (r == CMD_OK && (shell_after_hand(sh) != CMD_OK || (sh->hand_failed && sh->stop_on_error)))
+            r = CMD_ERROR;
     }
     sh->wall_time += shell_clock() - t0;
     return r;
@@ -278,6 +348,8 @@ const void *shell_setting_value(const shell *sh, const command *c)
     case OWN_SIM: return (const char *)&sh->w.set + c->off;
     case OWN_VIEW: return (const char *)&sh->view_set + c->off;
     case OWN_SHELL: return (const char *)&sh->set + c->off;
+    case OWN_SOUND: return (const char *)&sh->sound_set + c->off;
+    case OWN_HAND: return (const char *)&sh->hand.set + c->off;
     default: return NULL;
     }
 }

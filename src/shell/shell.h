@@ -1,9 +1,10 @@
 /* shell.h: runs statements against the world: dispatch, messages, time.
  *
- * The shell owns the world, the settings of the views and its own, the current
- * object, the logs and the off-screen view.  Input comes from files (parsed whole
- * before running), from -c, from a terminal through GNU readline (with real-time
- * running while the user types: prompt.c), or line by line from a pipe.  Handlers
+ * The shell owns the world, the settings of the views, of the sound and its own,
+ * the current object, the logs, the off-screen view, and the sound and movie
+ * being made (media.h).  Input comes from files (parsed whole before running),
+ * from -c, from a terminal through GNU readline (with real-time running while
+ * the user types: prompt.c), or line by line from a pipe.  Handlers
  * (the cmd_*.c files) report through sh_error / sh_warn / sh_info so that every
  * message carries its file and line.
  */
@@ -17,58 +18,57 @@
 
 #include "commands.h"
 #include "core/world.h"
+#include "hand/hand.h"
 #include "lang.h"
 #include "log.h"
+#include "sound/sound.h"
 #include "view/view.h"
 
 /* Longest path a setting of the shell's holds, with its final NUL. */
 #define SHELL_PATH_MAX 1024
 
-/* The settings the shell owns: where `random` places objects, and the hand's and
- * the sound's, which are kept here until their own layers give them effect. */
+/* The settings the shell owns: where `random` places objects. */
 typedef struct {
     vec3 random_box;        /* half-extents of the box random objects go in */
     double random_size[2];  /* the least and the most of each random object's largest
                              * half-extent (a sphere's radius) */
     unsigned long seed;     /* of random's sequence */
-    /* the hand-held tracker (thesis Appendix A.1.2) */
-    vec3 hand;
-    dir_amount hand_rotate; /* axis and angle, radians */
-    bool trigger;
-    bool select_mode;
-    char tracker[SHELL_PATH_MAX];
-    /* collision sounds (Table A.5) */
-    char collision_sound[SHELL_PATH_MAX];
-    double collision_vol;
 } shell_settings;
 
-/* The start-up values: random_box (2, 2, 2), random_size (0.08, 0.2), seed 1, the hand at the origin,
- * trigger up, select mode off, no tracker, the click sound at volume 1. */
+/* The start-up values: random_box (2, 2, 2), random_size (0.08, 0.2), seed 1. */
 shell_settings shell_settings_defaults(void);
 
 typedef struct shell {
     world w;
     view_settings view_set;
     shell_settings set;
+    sound_settings sound_set;
+    hand hand;             /* the hand-held tracker and the tool panel */
     struct {               /* what restart returns to: defaults and -o */
         sim_settings sim;
         view_settings view;
         shell_settings shell;
+        sound_settings sound;
     } startup;
     shell_logs logs;       /* trace and events */
     view *view;            /* off-screen context, created on first need */
     view_stats view_st;    /* what drawing has cost */
+    struct media *media;   /* sound and movie (media.h), made on first need */
     double wall_time;      /* seconds spent advancing time */
     bool running;          /* `start` given and not stopped */
     int current;           /* index of the current object, or -1 */
-    int selected;          /* object held by the hand, or -1 */
-    int prev_selected;     /* for reselect, or -1 */
+    const stmt *running_st; /* the statement running (for the hand's messages) */
+    bool hand_failed;      /* the hand reported an error since it began */
     bool interactive;      /* a terminal with readline */
     bool quiet;            /* -q */
     bool stop_on_error;    /* -b, or input that is not a terminal */
     FILE *out, *err;
     const char *scene_dir; /* installed scenes folder */
     unsigned long long rng; /* state of `random`, reset by seed */
+    bool at_prompt;        /* readline shows the prompt and a line being typed: a
+                            * message first breaks the line (line_broken), and
+                            * the prompt is drawn again after it (prompt.c) */
+    bool line_broken;
     bool found_apart;      /* shell_check_start found no overlap since the last
                             * statement began: time may run on unchecked */
 } shell;
@@ -107,9 +107,15 @@ cmd_status shell_advance(shell *sh, const stmt *st, long n);
  * (stop_on_error) stops there (CMD_ERROR, and vroc exits 1). */
 cmd_status shell_output_failed(shell *sh, const stmt *st, const char *what, const char *err);
 
-/* Closes the logs, checking their last writes; at the end of the program, before
- * shell_free.  Returns CMD_ERROR (after saying why) when one failed. */
+/* Finishes the movie and the soundtrack (media.h) and closes the logs, checking
+ * their last writes: at the end of the program, before shell_free.  Returns
+ * CMD_ERROR (after saying why) when one failed. */
 cmd_status shell_close_outputs(shell *sh);
+
+/* Closes the logs (trace, events, hand_log), checking their last writes, as the
+ * end of the program and restart (st) do; the movie and soundtrack go on.
+ * Returns CMD_ERROR (after saying why) when one failed. */
+cmd_status shell_close_logs(shell *sh, const stmt *st);
 
 /* Messages about statement st (NULL: no location). */
 void sh_error(shell *sh, const stmt *st, const char *fmt, ...)
@@ -122,9 +128,25 @@ void sh_info(shell *sh, const char *fmt, ...) __attribute__((format(printf, 2, 3
 /* Seconds on the monotonic clock (wall time). */
 double shell_clock(void);
 
+/* After the hand acted (a statement, a frame, a tick of the wall clock): the object
+ * it grabbed or re-selected becomes current, the head flies as it flew, a hand_log
+ * row that failed turns hand_log off (shell_output_failed), and the panel's
+ * buttons it pressed run as their commands.  Returns CMD_ERROR when the log's
+ * failure stops the run, else what the buttons' commands returned (CMD_OK when
+ * none). */
+cmd_status shell_after_hand(shell *sh);
+
+/* The hand and the panel as the views draw them (view_settings.overlay), from the
+ * hand now: called before each drawing. */
+void shell_overlay(shell *sh);
+
 /* The address of setting c's field (a FORM_SETTING) in its owner's settings. */
 void *shell_setting_field(shell *sh, const command *c);
 const void *shell_setting_value(const shell *sh, const command *c);
+
+/* How many numbers the random sequence has drawn since seed was set (what
+ * random_draws restores). */
+unsigned long long shell_random_draws(const shell *sh);
 
 /* Statements text (named name for messages) parsed and run from line `line` on. */
 cmd_status shell_run_text_at(shell *sh, const char *text, const char *name, int line);

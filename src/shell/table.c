@@ -25,7 +25,7 @@
 /* a property of the body, at field (of body) */
 #define PROP(name, arg, range, lo, hi, classes, field) \
     {name, FORM_PROPERTY, arg, range, lo, hi, NULL, classes, OWN_NONE, offsetof(body, field), cmd_property, NO_AFTER}
-/* settings of the simulation, the views and the shell, at field of their struct */
+/* settings of the simulation, the views, the shell, the sound and the hand, at field of their struct */
 #define SIM(name, arg, range, lo, hi, field) \
     {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SIM, offsetof(sim_settings, field), cmd_setting, NO_AFTER}
 #define VIEW(name, arg, range, lo, hi, field) \
@@ -36,19 +36,32 @@
     {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SHELL, offsetof(shell_settings, field), cmd_setting, NO_AFTER}
 #define SHELLF(name, arg, range, lo, hi, field, fn) \
     {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SHELL, offsetof(shell_settings, field), fn, NO_AFTER}
-/* a setting kept elsewhere (the logs): its handler knows where */
+#define SOUND(name, arg, range, lo, hi, field) \
+    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SOUND, offsetof(sound_settings, field), cmd_setting, NO_AFTER}
+#define SOUNDF(name, arg, range, lo, hi, field, fn) \
+    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_SOUND, offsetof(sound_settings, field), fn, NO_AFTER}
+#define HAND(name, arg, range, lo, hi, field) \
+    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_HAND, offsetof(hand_settings, field), cmd_setting, NO_AFTER}
+#define HANDF(name, arg, range, lo, hi, field, fn) \
+    {name, FORM_SETTING, arg, range, lo, hi, NULL, 0, OWN_HAND, offsetof(hand_settings, field), fn, NO_AFTER}
+/* a setting kept elsewhere (the logs, the soundtrack, the movie): its handler knows where */
 #define OTHER(name, arg, fn) {name, FORM_SETTING, arg, 0, 0, 0, NULL, 0, OWN_NONE, 0, fn, NO_AFTER}
+#define OTHER_R(name, arg, lo, hi, fn) \
+    {name, FORM_SETTING, arg, R_RANGE, lo, hi, NULL, 0, OWN_NONE, 0, fn, NO_AFTER}
 #define CHOICE(name, choices, fn) {name, FORM_SETTING, VAL_CHOICE, 0, 0, 0, choices, 0, OWN_VIEW, 0, fn, NO_AFTER}
 #define ACT(name, arg, fn) {name, FORM_ACTION, arg, 0, 0, 0, NULL, 0, OWN_NONE, 0, fn, NO_AFTER}
 #define COUNT(name, fn) {name, FORM_ACTION, ARG_COUNT, R_RANGE, 0, 1e9, NULL, 0, OWN_NONE, 0, fn, NO_AFTER}
+/* a property of the exact state (language.md, "Exact state"), at field of body */
+#define EXACT(name, arg, range, lo, hi, field) \
+    {name, FORM_PROPERTY, arg, range, lo, hi, NULL, C_ALL, OWN_NONE, offsetof(body, field), cmd_exact, NO_AFTER}
 /* a vector and a number (VAL_VECTOR_ANGLE): what2 names the number, lo2 to hi2
  * its limits */
 #define PROP_A(name, range, lo, hi, classes, field, what2, lo2, hi2) \
     {name, FORM_PROPERTY, VAL_VECTOR_ANGLE, range, lo, hi, NULL, classes, OWN_NONE, offsetof(body, field), cmd_property, what2, lo2, hi2}
 #define SIM_A(name, range, lo, hi, field, what2, lo2, hi2) \
     {name, FORM_SETTING, VAL_VECTOR_ANGLE, range, lo, hi, NULL, 0, OWN_SIM, offsetof(sim_settings, field), cmd_setting, what2, lo2, hi2}
-#define SHELL_A(name, range, lo, hi, field, what2, lo2, hi2) \
-    {name, FORM_SETTING, VAL_VECTOR_ANGLE, range, lo, hi, NULL, 0, OWN_SHELL, offsetof(shell_settings, field), cmd_setting, what2, lo2, hi2}
+#define HAND_A(name, range, lo, hi, field, what2, lo2, hi2, fn) \
+    {name, FORM_SETTING, VAL_VECTOR_ANGLE, range, lo, hi, NULL, 0, OWN_HAND, offsetof(hand_settings, field), fn, what2, lo2, hi2}
 
 /* In the order of help's groups; show and save write the settings in this order. */
 const command command_table[] = {
@@ -76,6 +89,16 @@ const command command_table[] = {
     PROP("a1", VAL_NUMBER, R_RANGE, LIM_LENGTH_MIN, LIM_LENGTH_MAX, C_SQ, sp.a1),
     PROP("a2", VAL_NUMBER, R_RANGE, LIM_LENGTH_MIN, LIM_LENGTH_MAX, C_SQ, sp.a2),
     PROP("a3", VAL_NUMBER, R_RANGE, LIM_LENGTH_MIN, LIM_LENGTH_MAX, C_SQ, sp.a3),
+    /* exact state, as save writes it */
+    EXACT("orientation", VAL_QUAT, R_RANGE, -1, 1, q),
+    EXACT("velocity", VAL_VECTOR, R_RANGE, -LIM_SPEED_MAX, LIM_SPEED_MAX, v),
+    EXACT("angular_momentum", VAL_VECTOR, R_RANGE, -LIM_MOMENTUM_MAX, LIM_MOMENTUM_MAX, L),
+    EXACT("slide_on", VAL_NAME, 0, 0, 0, slide_on),
+    EXACT("slide_face", VAL_INTEGER, R_RANGE, 0, 1e6, slide_face),
+    {"mode", FORM_PROPERTY, VAL_CHOICE, 0, 0, 0, "free|slide|general", C_ALL, OWN_NONE,
+     offsetof(body, mode), cmd_exact, NO_AFTER},
+    EXACT("resting", VAL_ONOFF, 0, 0, 0, state),
+    EXACT("touching", VAL_NAME, 0, 0, 0, moved),
     /* system (Table A.5) */
     ACT("read", ARG_FILE, cmd_read),
     ACT("display", ARG_NONE, cmd_display),
@@ -95,11 +118,14 @@ const command command_table[] = {
     SIM_A("force", R_NONZERO_VEC | R_RANGE, -POS, POS, force,
           "magnitude", -LIM_ACCEL_MAX, LIM_ACCEL_MAX),
     ACT("gravity", ARG_NONE, cmd_gravity),
-    SHELLF("collision_sound", VAL_FILE, 0, 0, 0, collision_sound, cmd_collision_sound),
-    SHELL("collision_vol", VAL_NUMBER, R_RANGE, 0, LIM_LOUD_MAX, collision_vol),
+    SOUNDF("collision_sound", VAL_FILE, 0, 0, 0, collision_sound, cmd_collision_sound),
+    SOUND("collision_vol", VAL_NUMBER, R_RANGE, 0, LIM_LOUD_MAX, collision_vol),
     /* console */
     COUNT("run", cmd_run),
     ACT("time", ARG_NONE, cmd_time),
+    OTHER_R("clock", VAL_PAIR, 0, LIM_CLOCK_MAX, cmd_clock),
+    OTHER_R("frame", VAL_INTEGER, 0, LIM_FRAMES_MAX, cmd_frame),
+    ACT("hash", ARG_NONE, cmd_hash),
     ACT("list", ARG_NONE, cmd_list),
     ACT("print", ARG_NAME, cmd_print),
     ACT("show", ARG_NONE, cmd_show),
@@ -114,6 +140,7 @@ const command command_table[] = {
            cmd_random_box),
     SHELL("random_size", VAL_RANGE2, R_RANGE, LIM_RANDOM_SIZE_MIN, LIM_LENGTH_MAX, random_size),
     SHELLF("seed", VAL_INTEGER, R_RANGE, 0, 4294967295.0, seed, cmd_seed),
+    OTHER_R("random_draws", VAL_INTEGER, 0, LIM_FRAMES_MAX, cmd_random_draws),
     /* views and hand */
     VIEW("head", VAL_VECTOR, R_RANGE, -POS, POS, head),
     VIEW("look_at", VAL_VECTOR, R_RANGE, -POS, POS, look_at),
@@ -126,13 +153,27 @@ const command command_table[] = {
     VIEW("background", VAL_COLOR, R_RANGE, 0, 255, background),
     CHOICE("real", "solid|wire|hidden", cmd_real),
     VIEW("record", VAL_ONOFF, 0, 0, 0, record),
-    SHELL("hand", VAL_VECTOR, R_RANGE, -POS, POS, hand),
-    SHELL_A("hand_rotate", R_NONZERO_VEC | R_RANGE, -POS, POS, hand_rotate,
-            "angle", -LIM_ANGLE_MAX, LIM_ANGLE_MAX),
-    SHELL("trigger", VAL_ONOFF, 0, 0, 0, trigger),
+    HANDF("hand", VAL_VECTOR, R_RANGE, -POS, POS, hand, cmd_hand),
+    HAND_A("hand_rotate", R_NONZERO_VEC | R_RANGE, -POS, POS, hand_rotate,
+           "angle", -LIM_ANGLE_MAX, LIM_ANGLE_MAX, cmd_hand),
+    HANDF("trigger", VAL_ONOFF, 0, 0, 0, trigger, cmd_trigger),
     ACT("select", ARG_OPT_ONOFF, cmd_select),
     ACT("reselect", ARG_NONE, cmd_reselect),
-    SHELLF("tracker", VAL_FILE_OR_OFF, 0, 0, 0, tracker, cmd_tracker),
+    HAND("reach", VAL_NUMBER, R_RANGE, 0, LIM_LENGTH_MAX, reach),
+    HAND("fly_speed", VAL_NUMBER, R_RANGE, 0, LIM_SPEED_MAX, fly_speed),
+    HANDF("tracker", VAL_FILE_OR_OFF, 0, 0, 0, tracker, cmd_tracker),
+    OTHER_R("tracker_time", VAL_NUMBER, 0, LIM_CLOCK_MAX, cmd_tracker_time),
+    HANDF("hand_log", VAL_FILE_OR_OFF, 0, 0, 0, hand_log, cmd_hand_log),
+    {"grip", FORM_SETTING, ARG_NAME, 0, 0, 0, "off|none|fly|panel|time_step|collision_dist", 0, OWN_NONE, 0,
+     cmd_grip, NO_AFTER},
+    HAND("panel", VAL_ONOFF, 0, 0, 0, panel),
+    HAND("panel_at", VAL_VECTOR, R_RANGE, -POS, POS, panel_at),
+    HAND_A("panel_rotate", R_NONZERO_VEC | R_RANGE, -POS, POS, panel_rotate,
+           "angle", -LIM_ANGLE_MAX, LIM_ANGLE_MAX, cmd_setting),
+    /* sound and movies */
+    SOUNDF("sound", VAL_ONOFF, 0, 0, 0, live, cmd_sound),
+    OTHER("soundtrack", VAL_FILE_OR_OFF, cmd_soundtrack),
+    OTHER("movie", VAL_FILE_OR_OFF, cmd_movie),
 };
 
 const int command_count = (int)(sizeof command_table / sizeof command_table[0]);

@@ -6,7 +6,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/pairs.h"
+#include "core/world.h"
 #include "handlers.h"
+#include "media.h"
 #include "shell.h"
 
 void writer_vec(FILE *out, vec3 v)
@@ -21,19 +24,56 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
     const view_settings *vs = &sh->view_set;
     char a[32];
     const char *n = c->name;
-    if (strcmp(n, "trace") == 0 || strcmp(n, "events") == 0) {
-        const char *path = n[0] == 't' ? sh->logs.trace_path : sh->logs.events_path;
+    const hand_settings *hs = &sh->hand.set;
+    bool hand_log = strcmp(n, "hand_log") == 0;
+    if (strcmp(n, "trace") == 0 || strcmp(n, "events") == 0 || strcmp(n, "soundtrack") == 0 ||
+        strcmp(n, "movie") == 0 || hand_log) { /* outputs: a save does not start them again */
+        const char *path = hand_log                   ? hs->hand_log
+                           : strcmp(n, "trace") == 0  ? sh->logs.trace_path
+                           : strcmp(n, "events") == 0 ? sh->logs.events_path
+                           : n[0] == 's'              ? media_soundtrack_path(sh)
+                                                      : media_movie_path(sh);
+        if (!path) path = "";
         fprintf(out, "%s%s = %s%s%s\n", for_save ? "# " : "", n, path[0] ? "\"" : "",
                 path[0] ? path : "off", path[0] ? "\"" : "");
         return;
     }
+    /* what the hand does, after the objects it may hold (hand_write) */
+    bool after = strcmp(n, "tracker") == 0 || strcmp(n, "tracker_time") == 0 ||
+                 strcmp(n, "grip") == 0 || strcmp(n, "trigger") == 0;
+    if (for_save && (after || (!sh->hand.used && (strcmp(n, "hand") == 0 || strcmp(n, "hand_rotate") == 0))))
+        return;
     if (strcmp(n, "tracker") == 0) {
-        if (s->tracker[0]) fprintf(out, "tracker = \"%s\"\n", s->tracker);
+        if (hs->tracker[0]) fprintf(out, "tracker = \"%s\"\n", hs->tracker);
         else fprintf(out, "tracker = off\n");
+        return;
+    }
+    if (strcmp(n, "sound") == 0) {
+        fprintf(out, "sound = %s\n", media_live_on(sh) ? "on" : "off");
+        return;
+    }
+    if (strcmp(n, "tracker_time") == 0) {
+        fprintf(out, "tracker_time = %s\n", fmt_num(a, hand_tracker_time(&sh->hand)));
+        return;
+    }
+    if (strcmp(n, "grip") == 0) {
+        fprintf(out, "grip = %s\n", hand_grip_word(&sh->hand, &sh->w));
         return;
     }
     if (strcmp(n, "seed") == 0) {
         fprintf(out, "seed = %lu\n", s->seed);
+        return;
+    }
+    if (strcmp(n, "random_draws") == 0) {
+        fprintf(out, "random_draws = %llu\n", shell_random_draws(sh));
+        return;
+    }
+    if (strcmp(n, "clock") == 0) {
+        fprintf(out, "clock = (%s, %ld)\n", fmt_num(a, sh->w.time_base), sh->w.base_frames);
+        return;
+    }
+    if (strcmp(n, "frame") == 0) {
+        fprintf(out, "frame = %ld\n", sh->w.frame);
         return;
     }
     if (strcmp(n, "image_size") == 0) {
@@ -85,8 +125,23 @@ void settings_write(FILE *out, const shell *sh, int for_save)
         const command *c = &command_table[i];
         if (c->form == FORM_SETTING) write_setting(out, sh, c, for_save);
         else if (c->run == cmd_select) /* the hand's select mode is a setting too */
-            fprintf(out, "select %s\n", sh->set.select_mode ? "on" : "off");
+            fprintf(out, "select %s\n", sh->hand.set.select_mode ? "on" : "off");
     }
+}
+
+void hand_write(FILE *out, const shell *sh)
+{
+    const hand *h = &sh->hand;
+    char a[32];
+    if (!h->used) return;
+    fprintf(out, "# the hand\n");
+    if (h->playing) {
+        fprintf(out, "tracker = \"%s\"\ntracker_time = %s\n", h->set.tracker,
+                fmt_num(a, hand_tracker_time(h)));
+    } else if (h->set.tracker[0]) {
+        fprintf(out, "# tracker = \"%s\" (a live feed: not opened again)\n", h->set.tracker);
+    }
+    fprintf(out, "grip = %s\n", hand_grip_word(h, &sh->w));
 }
 
 void body_write(FILE *out, const body *b)
@@ -128,6 +183,28 @@ void body_write(FILE *out, const body *b)
     writer_vec(out, b->v);
     fprintf(out, "\nangular_vel = ");
     writer_vec(out, b->w);
+    char c[32], d[32], e[32];
+    fprintf(out, "\norientation = (%s, %s, %s, %s)\nvelocity = ", fmt_num(a, b->q.w),
+            fmt_num(c, b->q.x), fmt_num(d, b->q.y), fmt_num(e, b->q.z));
+    writer_vec(out, b->v);
+    fprintf(out, "\nangular_momentum = ");
+    writer_vec(out, b->L);
     fputc('\n', out);
-    if (b->state == STATE_RESTING) fprintf(out, "# resting\n");
+}
+
+void contact_write(FILE *out, const world *w, int i, int only_later)
+{
+    static const char *modes[] = {"free", "slide", "general"};
+    const body *b = w->bodies[i];
+    if (b->mode == MODE_SLIDE && b->slide_on >= 0 && b->slide_on < w->n)
+        fprintf(out, "slide_on = %s\nslide_face = %d\n", w->bodies[b->slide_on]->name,
+                b->slide_face);
+    fprintf(out, "mode = %s\n", body_is_static(b) ? "free" : modes[b->mode]);
+    if (!body_is_static(b)) fprintf(out, "resting = %s\n", b->state == STATE_RESTING ? "on" : "off");
+    for (long k = 0; k < w->pairs.n; k++) {
+        const pair *p = &w->pairs.p[k];
+        if (!p->touching || (p->a != i && p->b != i)) continue;
+        int o = p->a == i ? p->b : p->a;
+        if (!only_later || o < i) fprintf(out, "touching = %s\n", w->bodies[o]->name);
+    }
 }

@@ -9,16 +9,30 @@
 #include "fmt.h"
 
 struct shell;
+struct world;
 
 /* Writes v as "(x, y, z)", each number by fmt_num. */
 void writer_vec(FILE *out, vec3 v);
 
 /* Writes every setting as statements of the language, in the command table's
- * order; for `save` the log files (trace, events) are written as comments, since
- * reading them back would truncate the logs. */
+ * order; for `save` the log files (trace, events, hand_log) are written as
+ * comments, since reading them back would truncate the logs, the hand's pose only
+ * when the hand has been used, and what the hand holds is left to hand_write. */
 void settings_write(FILE *out, const struct shell *sh, int for_save);
 
-/* Writes body b as statements that recreate it (its creation line first). */
+/* For `save`, after the objects and their contact state: the tracker, its place
+ * in its file, and what the trigger holds (grip), which read back without
+ * pressing or grabbing anything. */
+void hand_write(FILE *out, const struct shell *sh);
+
+/* Writes body b as statements that recreate it (its creation line first): as
+ * typed (rotate, linear_vel, angular_vel), then exactly (orientation, velocity,
+ * angular_momentum), so that it reads back to the bit. */
 void body_write(FILE *out, const body *b);
+
+/* Writes the contact state of body i of w (language.md, "Exact state"): its mode,
+ * with its slide's support and face, whether it rests, and the objects it is in
+ * lasting contact with (each pair once, on its later object, when only_later). */
+void contact_write(FILE *out, const struct world *w, int i, int only_later);
 
 #endif

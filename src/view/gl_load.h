@@ -2,7 +2,7 @@
  * view is first made, so that a run that draws nothing never maps Mesa (and its
  * LLVM: some 50 MB and most of the start-up time) at all.
  *
- * Include it after <GL/gl.h> and <GL/osmesa.h>: each function the views call is a
+ * It brings in <GL/gl.h> and <GL/osmesa.h>: each function the views call is a
  * pointer (gl_api) with the function's own type, and its name a macro that calls
  * through it, so that view.c reads as plain OpenGL.  gl_load must have succeeded
  * before any of them is called.
@@ -10,17 +10,19 @@
 #ifndef VROC_GL_LOAD_H
 #define VROC_GL_LOAD_H
 
+#include <GL/gl.h>
+#include <GL/osmesa.h>
 #include <stddef.h>
 
 /* Every function the views call: X(name). */
 #define GL_LOAD_FUNCS(X)                                                                     \
     X(OSMesaCreateContextExt) X(OSMesaDestroyContext) X(OSMesaGetCurrentContext)             \
     X(OSMesaMakeCurrent) X(OSMesaPixelStore) X(glBegin) X(glClear) X(glClearColor)          \
-    X(glColor3ubv) X(glColorMaterial) X(glCullFace) X(glDepthFunc) X(glDisable)              \
+    X(glColor3ub) X(glColor3ubv) X(glColorMaterial) X(glCullFace) X(glDepthFunc) X(glDisable)              \
     X(glDisableClientState) X(glDrawRangeElements) X(glEnable) X(glEnableClientState)        \
     X(glEnd) X(glFinish) X(glFrontFace) X(glFrustum) X(glGetError) X(glLightModelfv)        \
-    X(glLightfv) X(glLoadIdentity) X(glLoadMatrixd) X(glMaterialf) X(glMaterialfv)          \
-    X(glMatrixMode) X(glMultMatrixd) X(glNormalPointer) X(glPixelStorei) X(glPolygonMode)   \
+    X(glLightfv) X(glLineWidth) X(glLoadIdentity) X(glLoadMatrixd) X(glMaterialf) X(glMaterialfv)          \
+    X(glMatrixMode) X(glMultMatrixd) X(glNormal3d) X(glNormalPointer) X(glPixelStorei) X(glPolygonMode)   \
     X(glPopMatrix) X(glPushMatrix) X(glScissor) X(glShadeModel) X(glVertex3d)              \
     X(glVertexPointer) X(glViewport)
 
@@ -45,6 +47,7 @@ int gl_load(char *err, size_t errlen);
 #define glBegin (*gl_load_api.p_glBegin)
 #define glClear (*gl_load_api.p_glClear)
 #define glClearColor (*gl_load_api.p_glClearColor)
+#define glColor3ub (*gl_load_api.p_glColor3ub)
 #define glColor3ubv (*gl_load_api.p_glColor3ubv)
 #define glColorMaterial (*gl_load_api.p_glColorMaterial)
 #define glCullFace (*gl_load_api.p_glCullFace)
@@ -61,12 +64,14 @@ int gl_load(char *err, size_t errlen);
 #define glGetError (*gl_load_api.p_glGetError)
 #define glLightModelfv (*gl_load_api.p_glLightModelfv)
 #define glLightfv (*gl_load_api.p_glLightfv)
+#define glLineWidth (*gl_load_api.p_glLineWidth)
 #define glLoadIdentity (*gl_load_api.p_glLoadIdentity)
 #define glLoadMatrixd (*gl_load_api.p_glLoadMatrixd)
 #define glMaterialf (*gl_load_api.p_glMaterialf)
 #define glMaterialfv (*gl_load_api.p_glMaterialfv)
 #define glMatrixMode (*gl_load_api.p_glMatrixMode)
 #define glMultMatrixd (*gl_load_api.p_glMultMatrixd)
+#define glNormal3d (*gl_load_api.p_glNormal3d)
 #define glNormalPointer (*gl_load_api.p_glNormalPointer)
 #define glPixelStorei (*gl_load_api.p_glPixelStorei)
 #define glPolygonMode (*gl_load_api.p_glPolygonMode)

@@ -14,10 +14,12 @@
  * head, z-buffer and back-face culling (the meshes are convex and counter-clockwise
  * seen from outside).  Static (real-world) objects follow `real`: solid like the
  * others, wire (unlit edges of the collision polyhedron, or of the mesh for a
- * sphere) or hidden.  Both eyes are drawn side by side into one 2w x h RGBA buffer
- * (one clear and one glFinish a frame, which lets llvmpipe's threads rasterise the
- * whole frame at once); OSMesa copies it there top row first (OSMESA_Y_UP off) and
- * each half is packed to RGB, the form view_pixels and the PNG writer take.
+ * sphere) or hidden.  The hand's pointer and the tool panel are drawn over the
+ * world in each eye (overlay.c).  Both eyes are drawn side by side into one 2w x h
+ * RGBA buffer (one clear and one glFinish a frame, which lets llvmpipe's threads
+ * rasterise the whole frame at once); OSMesa copies it there top row first
+ * (OSMESA_Y_UP off) and each half is packed to RGB, the form view_pixels and the
+ * PNG writer take.
  *
  * OSMesa is loaded when the first view is made (gl_load.h): a run that draws
  * nothing never maps it.
@@ -41,6 +43,7 @@
 #include <time.h>
 
 #include "gl_load.h"
+#include "overlay.h"
 #include "png_out.h"
 
 #define VIEW_NEAR 0.01     /* m: near clipping plane */
@@ -292,19 +295,10 @@ void view_free(view *v)
 
 /* ---- drawing ---- */
 
-/* The OpenGL (column-major) matrix of the rigid map body -> world (q renormalised,
- * so that a drifting quaternion cannot scale the normals and the lighting). */
+/* The OpenGL matrix of the rigid map body -> world. */
 static void view_model_matrix(const body *b, GLdouble m[16])
 {
-    mat3 r = q_len(b->q) > 0 ? m3_from_quat(q_normalize(b->q)) : m3_identity();
-    for (int col = 0; col < 3; col++) {
-        for (int row = 0; row < 3; row++) m[col * 4 + row] = r.m[row][col];
-        m[col * 4 + 3] = 0;
-    }
-    m[12] = b->x.x;
-    m[13] = b->x.y;
-    m[14] = b->x.z;
-    m[15] = 1;
+    overlay_pose_matrix(b->x, b->q, m);
 }
 
 /* The OpenGL matrix of world -> eye: rows r, u, -f, origin at the eye. */
@@ -451,7 +445,10 @@ static void view_draw_eye(view *v, const world *w, const view_settings *s, const
         for (int i = 0; i < w->n; i++)
             if (view_style(w->bodies[i], s->real) == 2) view_draw_wire(w->bodies[i]);
         glEnableClientState(GL_NORMAL_ARRAY);
+        glEnable(GL_LIGHTING);
+        glEnable(GL_CULL_FACE);
     }
+    overlay_draw(&s->overlay); /* the hand and the panel, whatever `real` says */
 }
 
 /* Renders eyes 0 .. neyes-1 (1: the left eye only). */

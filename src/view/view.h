@@ -30,6 +30,40 @@
 typedef enum { STEREO_PAIR, STEREO_SBS, STEREO_ANAGLYPH, STEREO_MONO } stereo_mode;
 typedef enum { REAL_SOLID, REAL_WIRE, REAL_HIDDEN } real_mode;
 
+/* The pictures a panel's button shows. */
+typedef enum { VIEW_ICON_NONE, VIEW_ICON_STOP, VIEW_ICON_START, VIEW_ICON_STEP, VIEW_ICON_SELECT } view_icon;
+
+/* One control of the tool panel as drawn: a button (a square with its picture and
+ * label) or a slider (a line with a knob and its label above), in the panel's
+ * plane (metres from its centre, x to the right, y up). */
+typedef struct {
+    bool slider;
+    double x, y, half_w, half_h;
+    char label[32];
+    view_icon icon;
+    double knob;      /* a slider's knob, x */
+    bool lit;         /* a button that is on (select mode, time running) */
+} view_control;
+
+#define VIEW_CONTROLS 8
+
+/* What the views draw over the world in both eyes, which is no part of it (so
+ * `real` does not hide it): the hand's pointer, its tip at hand_p and pointing
+ * along hand_q's +x, and the virtual tool panel, a sheet of 2 half_w x 2 half_h
+ * in its own x-y plane facing its +z, centred at panel_at and turned by panel_q.
+ * Both are hidden by default. */
+typedef struct {
+    bool hand;
+    vec3 hand_p;
+    quat hand_q;
+    bool panel;
+    vec3 panel_at;
+    quat panel_q;
+    double half_w, half_h;
+    view_control controls[VIEW_CONTROLS];
+    int ncontrols;
+} view_overlay;
+
 /* What the views show and where they go (language.md, "Head, hand and views"). */
 typedef struct {
     vec3 head, look_at, up;   /* the head pose the two eyes are placed from */
@@ -40,10 +74,12 @@ typedef struct {
     int background[3];        /* 0..255 */
     real_mode real;           /* how static objects are drawn */
     bool record;              /* write the views of every frame while time runs */
+    view_overlay overlay;     /* the hand and the panel (the shell keeps it current) */
 } view_settings;
 
 /* The start-up values: head at the origin looking along +y with z up, ipd 0.064,
- * fov 60, 640x512, output "frames", pair, black, solid, record off. */
+ * fov 60, 640x512, output "frames", pair, black, solid, record off, no hand or
+ * panel drawn. */
 view_settings view_settings_defaults(void);
 
 /* What drawing has cost so far. */

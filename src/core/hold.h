@@ -1,0 +1,65 @@
+/* hold.h: a body held by the hand (thesis 1.3 and Appendix A.1.2; language.md,
+ * "The hand and the tool panel").
+ *
+ * A held body is moved by the hand, not by forces.  From the instant its motion is
+ * set (hold_set) it flies FLIGHT_HELD (flight.h): fixed to the hand's point, the
+ * pivot, which goes at a constant velocity, it turns about it at a constant
+ * angular velocity, until its motion is set again.  So a hand that moves and
+ * turns at constant rates between two tracker rows carries it exactly.  The hand
+ * sets its motion at every tracker row and every frame.
+ *
+ * What the simulation does with it (sim.c):
+ *  - no force moves it, and it neither rests nor slides; it is in lasting contact
+ *    with nothing (every contact with it is a collision), so nothing rests or
+ *    slides on it;
+ *  - in a collision it has infinite mass and keeps its motion: the objects it
+ *    strikes are answered, with their lasting contacts, as if struck by a moving
+ *    wall, with the held body's velocity at each contact point; a contact too
+ *    slow to bounce parts at SIM_BOUNCE_SPEED;
+ *  - against a static object, another held one, or objects that cannot give way
+ *    (pressed against a static one: the contact's impulses have no solution) it
+ *    stops where it touches, and stays there until its motion is set again;
+ *  - its pairs are searched from the instant its motion is set, by conservative
+ *    advancement about its pivot (schedule.h, sched_move: its reach about the
+ *    pivot, its spin): no bound assumes how the hand will move it next.
+ * Speeds are held to the limits: the centre of mass goes no faster than
+ * |v| + |w| |c - pivot| <= max_linear, and |w| <= max_angular (hold_set scales
+ * a faster motion down; a hand that goes faster leaves the body behind).
+ *
+ * Each call says the world changed (edit_done): between frames the next frame
+ * starts over from it; within a frame (sim_hook's at) the simulation starts over
+ * at once, from the hook's instant.
+ */
+#ifndef VROC_HOLD_H
+#define VROC_HOLD_H
+
+#include "body.h"
+#include "vmath.h"
+
+typedef struct world world;
+
+/* How a held body moves until its motion is set again. */
+typedef struct {
+    vec3 pivot; /* the point it turns about (the hand), world, now */
+    vec3 v;     /* that point's velocity */
+    vec3 w;     /* angular velocity, world axes */
+} hold_motion;
+
+/* Body i, dynamic or resting, is held from now (world.time) and moves as m says
+ * (scaled down to the speed limits); called on a held body, sets its motion anew.
+ * When it was not held: it wakes and slides no more, its lasting contacts end,
+ * and the objects pressed together with it wake.  Returns 0, or -1 for a static
+ * body (nothing changes). */
+int hold_set(world *w, int i, hold_motion m);
+
+/* Body i is held no more: from now it flies freely with velocity v (of its centre
+ * of mass) and angular velocity wv (world axes), under the force as any dynamic
+ * body.  Nothing happens to a body that is not held. */
+void hold_release(world *w, int i, vec3 v, vec3 wv);
+
+/* Puts body i at once at origin x with orientation q (unit): for a held body whose
+ * hand jumped while time stood still (the caller has checked the place is free).
+ * Its velocities stay; a held body's pivot keeps its place relative to it. */
+void hold_place(world *w, int i, vec3 x, quat q);
+
+#endif

@@ -1,0 +1,210 @@
+/* hand.h: the hand-held tracker and what it does: grab, carry, throw, re-select,
+ * fly, and the virtual tool panel (thesis 1.3, 4.3, 4.5, Appendix A.1;
+ * language.md, "The hand and the tool panel").
+ *
+ * The hand has a pose (position, and an orientation whose +x is where it points),
+ * a trigger and a re-select button.  They come from statements, from a tracker file
+ * replayed on the tracker clock, or from a live feed (feed.h).  The tracker clock
+ * runs with simulated time while frames advance (the frame's hook: a row acts at
+ * its exact instant, sim.h), and at the prompt while time stands still on the wall
+ * clock (hand_wall), so that a recorded hand can press Start.
+ *
+ * The trigger going down: on a control of the panel (when shown), presses it; in
+ * select mode, on the panel's sheet, grabs the panel; in select mode elsewhere, grabs
+ * the dynamic object nearest the hand within reach (hold.h: it then moves with the
+ * hand, keeping its pose relative to it); outside select mode, flies the head along
+ * where the hand points.  Going up releases what is held: an object flies off with
+ * the hand's velocity at its centre of mass and the hand's angular velocity.
+ *
+ * The hand writes no text: it reports through the say callback, and leaves the
+ * panel's buttons (which do what their commands do) to its caller (hand_take_press).
+ */
+#ifndef VROC_HAND_H
+#define VROC_HAND_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdio.h>
+
+#include "core/vmath.h"
+#include "core/world.h"
+#include "feed.h"
+#include "panel.h"
+#include "tracker.h"
+
+#define HAND_PATH_MAX 1024
+
+/* The hand's settings, as show and save write them (the command table's OWN_HAND). */
+typedef struct {
+    vec3 hand;              /* position (follows the tracker) */
+    dir_amount hand_rotate; /* orientation: axis and angle, radians */
+    bool trigger;
+    bool select_mode;
+    double reach;           /* m, from an object's surface */
+    double fly_speed;       /* m/s */
+    bool panel;             /* shown and usable */
+    vec3 panel_at;
+    dir_amount panel_rotate;
+    char tracker[HAND_PATH_MAX];
+    char hand_log[HAND_PATH_MAX];
+} hand_settings;
+
+/* The start-up values: the hand at the origin pointing along +x, trigger up, select
+ * mode off, reach 0.05 m, fly_speed 1 m/s, the panel off at (0, 0.5, -0.25) turned
+ * by pi/2 about x (facing the default head), no tracker, no log. */
+hand_settings hand_settings_defaults(void);
+
+/* What the trigger is doing. */
+typedef enum {
+    GRIP_OFF,    /* up */
+    GRIP_NONE,   /* down, doing nothing (a button pressed, nothing in reach) */
+    GRIP_FLY,    /* down outside select mode: flying */
+    GRIP_OBJECT, /* holding an object */
+    GRIP_PANEL,  /* holding the panel */
+    GRIP_SLIDER  /* dragging a slider */
+} grip_kind;
+
+/* Kinds of message the hand reports. */
+typedef enum { HAND_ERROR, HAND_WARNING, HAND_INFO } hand_message;
+
+typedef void (*hand_say)(void *ctx, hand_message kind, const char *msg);
+
+typedef struct hand {
+    hand_settings set;
+    bool used;              /* some hand statement or tracker has run: drawn */
+    vec3 p;                 /* the pose now */
+    quat q;
+    vec3 mv, mw;            /* how it moves from now on, until its next row */
+    vec3 sv, sw;            /* its velocity from statements (change over time) */
+    double stmt_time;       /* simulated time of the last statement that moved it */
+    double clock;           /* the tracker clock, s */
+
+    tracker_path path;      /* a tracker file playing, */
+    bool playing;
+    int next;               /*   the next row to act, */
+    double start;           /*   the clock when it was named */
+    tracker_feed feed;      /* or a live feed */
+    tracker_row last;       /*   its last row (for the velocity) */
+    bool have_last;
+
+    bool jump;              /* outside frames: time stands still (follow) */
+    bool in_frame;          /* a frame runs: t0 and c0 are its start in simulated */
+    double t0, c0, tf;      /*   time and on the clock; tf its end */
+
+    bool button;
+    grip_kind grip;
+    int held;               /* GRIP_OBJECT: the object */
+    panel_part slider;      /* GRIP_SLIDER: which */
+    vec3 grip_x;            /* what is held (object origin, or the panel's centre) */
+    quat grip_q;            /*   in the hand's frame */
+    int last_held;          /* for reselect, or -1 */
+    int make_current;       /* an object to make current (hand_take_current), or -1 */
+    bool presses[PANEL_CONTROLS]; /* buttons pressed, for the caller to run */
+    double slid[2];         /* the values the sliders were dragged to, which their
+                             * settings get at the end of the frame (NAN: none) */
+
+    vec3 fly;               /* head movement not yet given (hand_take_fly) */
+    double pose_clock;      /* the clock at which p and q are (fly counted up to it) */
+
+    FILE *log;              /* hand_log */
+    double log_start;
+    char log_error[HAND_PATH_MAX + 256]; /* a row that did not reach it ("" none) */
+    tracker_row logged;     /* the last row written */
+    bool have_logged;
+
+    hand_say say;
+    void *say_ctx;
+} hand;
+
+void hand_init(hand *h, hand_say say, void *ctx);
+/* Closes the feed and the log, frees the path. */
+void hand_free(hand *h);
+
+/* ---- statements (outside frames; w->time is now) ---- */
+
+/* Moves the hand to p (hand = p) or turns it to q (hand_rotate): what it holds
+ * follows at once where nothing is in the way.  Its velocity is the change over
+ * the simulated time since the last such statement (zero when none passed). */
+void hand_move(hand *h, world *w, vec3 p, quat q);
+
+/* The trigger goes down or up (trigger = on/off). */
+void hand_trigger(hand *h, world *w, bool down);
+
+/* reselect: the object held last becomes current, and is grabbed again in select
+ * mode with the trigger down and nothing held, when the hand can reach it.
+ * Returns 0, or -1 with a message in err when nothing was held before. */
+int hand_reselect(hand *h, world *w, char *err, size_t errlen);
+
+/* tracker = path: a tracker file (checked whole) or a FIFO (a live feed).  Returns
+ * 0, or -1 with a message in err (the old tracker stays). */
+int hand_tracker(hand *h, const char *path, char *err, size_t errlen);
+/* tracker = off: the hand stays where it is. */
+void hand_tracker_off(hand *h);
+
+/* tracker_time = t: the file's rows up to t are taken as played, without acting,
+ * and the hand is where the file has it at t.  Returns 0, or -1 with a message. */
+int hand_seek(hand *h, world *w, double t, char *err, size_t errlen);
+/* The tracker clock's time in the file playing (0 without one). */
+double hand_tracker_time(const hand *h);
+
+/* hand_log = path / off, written and checked as every output (shell/outfile.h).
+ * Open returns 0, or -1 with a message in err: the new file could not be written
+ * (the old log stays), or the old log's last rows (the new one is open).  Close
+ * returns 0, or -1 with a message when its last rows did not reach the file (it is
+ * closed either way; nothing to close is 0). */
+int hand_log_open(hand *h, const char *path, char *err, size_t errlen);
+int hand_log_close(hand *h, char *err, size_t errlen);
+/* True, with "cannot write 'PATH': REASON" in err, when a row written since the
+ * last call did not reach the log: the log is then closed, and hand_log off (the
+ * caller says so: shell_output_failed). */
+bool hand_log_failed(hand *h, char *err, size_t errlen);
+
+/* grip = what: sets the trigger down and what it holds without pressing, grabbing
+ * or releasing anything (save writes it): off (the trigger up), none, fly, panel,
+ * time_step, collision_dist, or an object's name.  Returns 0, or -1 with a message. */
+int hand_set_grip(hand *h, world *w, const char *what, char *err, size_t errlen);
+/* The word grip = would take for the hand now (an object's name points into w). */
+const char *hand_grip_word(const hand *h, const world *w);
+
+/* Object i was deleted: indices above it move down. */
+void hand_object_deleted(hand *h, int i);
+
+/* ---- time ---- */
+
+/* A frame of w->set.time_step starts at w->time: rows due act, a live feed is read,
+ * and what is held gets its motion.  The frame's hook (hand_hook) acts at its rows. */
+void hand_frame_begin(hand *h, world *w);
+/* The hook for sim_frame_hooked (ctx is the hand). */
+double hand_hook_next(void *ctx, const world *w);
+void hand_hook_at(void *ctx, world *w);
+/* The frame ended at w->time: the clock moves on by the frame, rows at its end act,
+ * a slider sets its setting, and the log gets a row. */
+void hand_frame_end(hand *h, world *w);
+
+/* At the prompt while time stands still: the clock moves on by dt seconds of the
+ * wall clock, and the file's rows due act now. */
+void hand_wall(hand *h, world *w, double dt);
+
+/* A live feed's descriptor for select(), or -1. */
+int hand_feed_fd(const hand *h);
+/* Reads the live feed between frames: rows take effect as they come, and what the
+ * hand holds jumps with it where nothing is in the way. */
+void hand_poll(hand *h, world *w);
+
+/* True when something moves on the tracker clock while time stands still (a
+ * file still playing, or flying): the prompt should wake to call hand_wall. */
+bool hand_busy(const hand *h);
+
+/* ---- what the caller does for the hand ---- */
+
+/* The first button pressed since the last call (removed), or PANEL_OFF. */
+panel_part hand_take_press(hand *h);
+/* An object the hand made current (grabbed or re-selected), or -1 (removed). */
+int hand_take_current(hand *h);
+/* How far the head (and look_at) has flown since the last call (removed). */
+vec3 hand_take_fly(hand *h);
+
+/* The panel's orientation. */
+quat hand_panel_q(const hand *h);
+
+#endif

@@ -1,0 +1,20 @@
+/* grow.h: room for one more item in an array that doubles as it grows. */
+#ifndef VROC_GROW_H
+#define VROC_GROW_H
+
+#include <stdlib.h>
+
+/* items (n of them, room for *cap, each elem bytes) with room for one more: items
+ * itself when there is room, else the array moved to twice the room (first when
+ * there was none), *cap updated.  NULL when out of memory: items is left as it
+ * was. */
+static inline void *grow_for_one(void *items, int n, int *cap, size_t elem, int first)
+{
+    if (n < *cap) return items;
+    int c = *cap ? 2 * *cap : first;
+    void *moved = realloc(items, (size_t)c * elem);
+    if (moved) *cap = c;
+    return moved;
+}
+
+#endif

@@ -1,0 +1,104 @@
+#!/bin/sh
+# movie.sh: movies checked with ffprobe from outside: size (side by side, padded
+# to even), frame count and rate against simulated time (time_step changes
+# included), the soundtrack muxed in or not, the file finished by movie = off or
+# the end; errors for a missing ffmpeg, an unwritable path and a missing extension;
+# and the simulation the same with and without a movie.
+. "$(dirname "$0")/lib.sh"
+S=$(cd "$(dirname "$0")/../scenes" && pwd)
+for c in ffprobe ffmpeg; do
+    command -v $c >/dev/null 2>&1 || { notok "$c is installed (make deps installs it)"; exit 0; }
+done
+
+# probe FILE: "WIDTHxHEIGHT frames=N rate=R audio=CODEC|none"
+probe() {
+    v=$(ffprobe -v error -count_frames -select_streams v:0 \
+        -show_entries stream=width,height,nb_read_frames,r_frame_rate -of csv=p=0 "$1" 2>&1)
+    a=$(ffprobe -v error -select_streams a -show_entries stream=codec_name -of csv=p=0 "$1" 2>&1)
+    echo "$v ${a:-none}" | awk -F'[, ]' '{ printf "%sx%s frames=%s rate=%s audio=%s\n", $1, $2, $4, $3, $5 }'
+}
+is() { # TEXT GOT WANT
+    [ "$2" = "$3" ] && ok "$1" || notok "$1" "got:  $2" "want: $3"
+}
+
+"$VROC" -b -q "$S/simple.vroc" -c "image_size = (161, 121); soundtrack = $TMP/a.wav; movie = $TMP/pair.mp4; run 20" 2>"$TMP/err"
+is "pair: both eyes side by side, odd sizes padded (322x122), 20 frames at 10/s, AAC sound" \
+    "$(probe "$TMP/pair.mp4")" "322x122 frames=20 rate=10/1 audio=aac"
+d=$(ffprobe -v error -show_entries format=duration -of csv=p=0 "$TMP/pair.mp4")
+awk -v d="$d" 'BEGIN { exit !(d > 1.95 && d < 2.1) }' && ok "the movie lasts the 2 s of simulated time" ||
+    notok "the movie lasts the 2 s of simulated time" "duration $d" "$(cat "$TMP/err")"
+ad=$(ffprobe -v error -select_streams a -show_entries stream=duration -of csv=p=0 "$TMP/pair.mp4")
+awk -v d="$ad" 'BEGIN { exit !(d > 1.9 && d < 2.1) }' && ok "and so does its sound" || notok "and so does its sound" "audio duration $ad"
+ls -a "$TMP" | grep -q vroc-part && notok "no part files are left beside the movie" "$(ls -a "$TMP")" ||
+    ok "no part files are left beside the movie"
+
+# film TEXT WANT NAME COMMANDS: the Simple scene run with COMMANDS, which write the
+# movie $TMP/NAME, probes as WANT
+film() {
+    "$VROC" -b -q "$S/simple.vroc" -c "$4" 2>/dev/null
+    is "$1" "$(probe "$TMP/$3")" "$2"
+}
+film "mono: the left eye, no sound without a soundtrack" "160x120 frames=5 rate=10/1 audio=none" \
+    mono.mp4 "image_size = (160, 120); stereo = mono; movie = $TMP/mono.mp4; run 5"
+film "anaglyph in Matroska" "160x120 frames=5 rate=10/1 audio=none" \
+    ana.mkv "image_size = (160, 120); stereo = anaglyph; movie = $TMP/ana.mkv; run 5"
+film "sbs in WebM, what the extension names" "320x120 frames=3 rate=10/1 audio=none" \
+    sbs.webm "image_size = (160, 120); stereo = sbs; movie = $TMP/sbs.webm; run 3"
+
+# video time is simulated time: 1 s at 0.1, 0.5 s at 0.05 (every other frame), 1 s at 0.2
+# (each frame twice): 25 frames at 10/s
+film "time_step changes: frames skipped and repeated to keep simulated time (25 at 10/s)" \
+    "128x48 frames=25 rate=10/1 audio=none" steps.mp4 \
+    "image_size = (64, 48); movie = $TMP/steps.mp4; run 10; time_step = 0.05; run 10; time_step = 0.2; run 5"
+film "the frame rate is 1 / time_step (25/s)" "128x48 frames=7 rate=25/1 audio=none" \
+    r25.mp4 "time_step = 0.04; image_size = (64, 48); movie = $TMP/r25.mp4; run 7"
+
+film "movie = off finishes the file there" "128x48 frames=4 rate=10/1 audio=none" \
+    early.mp4 "image_size = (64, 48); movie = $TMP/early.mp4; run 4; movie = off; run 4"
+# a soundtrack started after the movie: silence first, then its sound, as long as the movie
+film "a soundtrack that starts later is muxed in all the same" "128x48 frames=15 rate=10/1 audio=aac" \
+    late.mp4 "image_size = (64, 48); movie = $TMP/late.mp4; run 5; soundtrack = $TMP/late.wav; run 10"
+
+# the frames show the scene: a frame taken out of the movie is not one flat colour
+ffmpeg -v error -y -i "$TMP/pair.mp4" -vf "select=eq(n\,10)" -frames:v 1 -f rawvideo -pix_fmt gray "$TMP/f10.gray" 2>&1
+spread=$(od -An -v -tu1 "$TMP/f10.gray" | awk '{ for (i = 1; i <= NF; i++) { n++; if ($i > 60) lit++ } } END { print n, lit + 0 }')
+echo "$spread" | awk '{ exit !($1 == 322 * 122 && $2 > 200) }' && ok "a frame of the movie shows the objects" ||
+    notok "a frame of the movie shows the objects" "pixels, lit: $spread"
+
+# frame n of the movie is the view after simulated frame n + 1, as record writes it
+# (H.264 changes a pixel by less than 1 on average; the frame before differs more)
+mkdir -p "$TMP/rec"
+"$VROC" -b -q "$S/simple.vroc" -c "image_size = (160, 128); output = $TMP/rec; record = on; movie = $TMP/rec/m.mp4; run 8" 2>/dev/null
+ffmpeg -v error -y -i "$TMP/rec/m.mp4" -vf "select=eq(n\,4),crop=160:128:0:0" -frames:v 1 -f rawvideo -pix_fmt rgb24 "$TMP/rec/f4.rgb"
+mad() { # the mean absolute difference of the movie's frame 4 (left eye) and a PNG
+    ffmpeg -v error -y -i "$1" -f rawvideo -pix_fmt rgb24 "$TMP/rec/png.rgb"
+    od -An -v -tu1 -w1 "$TMP/rec/f4.rgb" > "$TMP/rec/a"
+    od -An -v -tu1 -w1 "$TMP/rec/png.rgb" > "$TMP/rec/b"
+    paste "$TMP/rec/a" "$TMP/rec/b" | awk '{ d = $1 - $2; s += d < 0 ? -d : d; n++ } END { print (n == 61440 ? s / n : 999) }'
+}
+d5=$(mad "$TMP/rec/frame-000005-left.png") d4=$(mad "$TMP/rec/frame-000004-left.png")
+awk -v a="$d5" -v b="$d4" 'BEGIN { exit !(a < 1 && a < b) }' &&
+    ok "frame 4 of the movie is the left view recorded after frame 5 (differs by $d5, from frame 4 by $d4)" ||
+    notok "frame 4 of the movie is the left view recorded after frame 5" "mean differences: $d5 (frame 5), $d4 (frame 4)"
+
+# the simulation never depends on the movie or the soundtrack
+# (the hash line alone: the sanitizer build may add LeakSanitizer's list of the
+# suppressions it used, Mesa's memory, when frames were drawn)
+h1=$("$VROC" -b -q "$S/simple.vroc" -c "run 20; hash" 2>&1 | grep '^hash = ')
+h2=$("$VROC" -b -q "$S/simple.vroc" -c "image_size = (64, 48); movie = $TMP/h.mp4; soundtrack = $TMP/h.wav; run 20; hash" 2>&1 | grep '^hash = ')
+is "the same hash with and without a movie and a soundtrack" "$h2" "$h1"
+
+# errors
+expect "no ffmpeg on PATH: a clear error, batch exit 1" 1 "movie: the ffmpeg program is not installed" \
+    env PATH=/nonexistent "$VROC" -b -c "movie = $TMP/x.mp4"
+expect "an unwritable movie path: batch exit 1" 1 "movie: cannot write '/nonexistent/dir/m.mp4'" \
+    "$VROC" -b -c "movie = /nonexistent/dir/m.mp4"
+expect "a movie named with no extension" 1 "has no extension to name its format" \
+    "$VROC" -b -c "movie = $TMP/movie"
+expect "a format ffmpeg does not know stops a batch run at the first frame" 1 "Unable to find a suitable output format" \
+    "$VROC" -b -c "sphere a; translate = (0, 5, 0); movie = $TMP/x.nosuchformat; run 2"
+ls -a "$TMP" | grep -q nosuchformat && notok "and leaves no file behind" "$(ls -a "$TMP")" || ok "and leaves no file behind"
+"$VROC" -b -q -c "movie = $TMP/saved.mp4; sphere a; save $TMP/saved.vroc" 2>/dev/null
+grep -q "^# movie = \"$TMP/saved.mp4\"$" "$TMP/saved.vroc" && ok "save writes the movie as a comment" ||
+    notok "save writes the movie as a comment" "$(grep movie "$TMP/saved.vroc")"
+exit 0
