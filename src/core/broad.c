@@ -25,6 +25,10 @@
  * move would cost more than the few pairs they could end. */
 #define BROAD_SMALL 12
 
+/* The moving tree is built anew once BROAD_REBUILD times as many boxes as there
+ * are objects were made again. */
+#define BROAD_REBUILD 1
+
 /* ---- boxes ---- */
 
 static aabb box_union(aabb a, aabb b) { return (aabb){v3_min(a.lo, b.lo), v3_max(a.hi, b.hi)}; }
@@ -253,6 +257,16 @@ static int tree_insert(broad_tree *t, aabb box, int obj)
     return leaf;
 }
 
+/* The leaf takes box, and its ancestors grow to hold it (Box2D v3's enlarged
+ * proxies): no descent and no rotation, at the price of boxes that only grow until
+ * the tree is built again. */
+static void tree_enlarge(broad_tree *t, int leaf, aabb box)
+{
+    t->node[leaf].box = box;
+    for (int k = t->node[leaf].parent; k >= 0 && !box_holds(t->node[k].box, box); k = t->node[k].parent)
+        t->node[k].box = box_union(t->node[k].box, box);
+}
+
 static void tree_remove(broad_tree *t, int leaf)
 {
     int parent = t->node[leaf].parent;
@@ -398,13 +412,17 @@ static int refit(world *w, int i, aabb box)
     broad_phase *bp = &w->broad;
     bool fixed = body_is_static(w->bodies[i]);
     broad_tree *t = fixed ? &bp->fixed : &bp->moving;
-    if (bp->leaf[i] >= 0) tree_remove(t, bp->leaf[i]);
     bp->box[i] = box;
-    if ((bp->leaf[i] = tree_insert(t, box, i)) < 0) return -1;
+    if (bp->leaf[i] >= 0 && !fixed) {
+        tree_enlarge(t, bp->leaf[i], box);
+    } else {
+        if (bp->leaf[i] >= 0) tree_remove(t, bp->leaf[i]);
+        if ((bp->leaf[i] = tree_insert(t, box, i)) < 0) return -1;
+    }
     bp->refits++;
-    /* insertions make a poorer tree than a build: once as many as there are
-     * objects were made, the tree is built again */
-    if (++bp->since_build > 4 * w->n && build_trees(w) != 0) return -1;
+    /* the boxes of the tree only grow: once as many boxes as there are objects
+     * were made again, the tree is built anew */
+    if (++bp->since_build > BROAD_REBUILD * w->n && build_trees(w) != 0) return -1;
     if (meet(w, i, &bp->moving) != 0 || (!fixed && meet(w, i, &bp->fixed) != 0)) return -1;
     /* (backwards: ending a pair takes it out of the list) */
     const pair_adj *adj = &w->pairs.adj[i];
