@@ -2,7 +2,9 @@
  * possible contact, over many random configurations; its boxes hold their objects
  * along their flights; the heap on (near pairs only) and off (every pair, every
  * internal step) give the same trajectories to the bit; pairs are made and ended
- * as objects come near and move apart, and their number grows with what is near. */
+ * as objects come near and move apart, and their number grows with what is near;
+ * a body the hand holds (hold.h) is held by its box too, and its pairs are found
+ * afresh whenever the hand sets its motion, within a frame as between frames. */
 #include "check.h"
 
 #include <stdlib.h>
@@ -10,6 +12,7 @@
 
 #include "core/broad.h"
 #include "core/flight.h"
+#include "core/hold.h"
 #include "core/pairs.h"
 #include "core/sim.h"
 #include "core/step.h"
@@ -142,8 +145,96 @@ static void pairs_are_never_late(void **state)
     assert_true(share < 0.5);
 }
 
+/* The hand of the held-body tests: every HAND_ROW seconds (a tracker's rows), the
+ * held body gets a new motion from the seeded sequence: its pivot goes at up to
+ * 3 m/s in a new direction, mostly towards the room's middle, and it turns at up to
+ * 4 rad/s.  The same seed gives the same hand in both worlds. */
+#define HAND_ROW 0.037
+
+typedef struct {
+    int held;                /* the body it holds */
+    unsigned long long seed;
+    double next;             /* its next row */
+    long rows;
+} test_hand;
+
+static void hand_motion(test_hand *h, world *w)
+{
+    const body *b = w->bodies[h->held];
+    vec3 to = v3_sub(v3(urand(&h->seed, -0.5, 0.5), urand(&h->seed, -0.5, 0.5), 0), body_com(b));
+    vec3 v = v3_scale(v3_norm(v3_add(to, v3(urand(&h->seed, -1, 1), urand(&h->seed, -1, 1),
+                                             urand(&h->seed, -1, 1)))),
+                      urand(&h->seed, 0.5, 3));
+    vec3 wv = v3(urand(&h->seed, -2.3, 2.3), urand(&h->seed, -2.3, 2.3), urand(&h->seed, -2.3, 2.3));
+    assert_int_equal(hold_set(w, h->held, (hold_motion){b->hold_pivot, v, wv}), 0);
+    h->rows++;
+}
+
+static double hand_next(void *ctx, const world *w)
+{
+    (void)w;
+    return ((test_hand *)ctx)->next;
+}
+
+static void hand_at(void *ctx, world *w)
+{
+    test_hand *h = ctx;
+    hand_motion(h, w);
+    h->next += HAND_ROW;
+}
+
+/* Random rooms with one body held and carried through the others by a hand that
+ * changes its motion within the frames (sim_frame_hooked), heap on and off: the
+ * same states to the bit, no contact of a pair the broad phase did not hold near,
+ * its invariants after every frame (the held body inside its box: broad_check),
+ * and the held body's pairs made as it comes near others. */
+static void held_bodies_pairs_never_late(void **state)
+{
+    (void)state;
+    const int trials = 12, frames = 8;
+    long rows = 0, met = 0, collisions = 0;
+    for (int k = 0; k < trials; k++) {
+        world ws[2];
+        test_hand hands[2];
+        for (int m = 0; m < 2; m++) {
+            random_room(&ws[m], k, 24 + k % 7, m == 0);
+            /* the first dynamic object (after the six walls), held about a point
+             * a little off its centre */
+            hands[m] = (test_hand){.held = 6, .seed = 500 + (unsigned long long)k, .next = 0.02};
+            body *b = ws[m].bodies[6];
+            b->hold_pivot = v3_add(body_com(b), v3(0.05, -0.03, 0.02));
+            hand_motion(&hands[m], &ws[m]);
+        }
+        char err[256];
+        for (int f = 0; f < frames; f++) {
+            for (int m = 0; m < 2; m++) {
+                sim_hook hook = {hand_next, hand_at, &hands[m]};
+                if (sim_frame_hooked(&ws[m], &hook, err, sizeof err) != 0) fail_msg("trial %d: %s", k, err);
+                broad_holds(&ws[m], k, f);
+                if (!ws[m].bodies[6]->held) fail_msg("trial %d: the body was let go", k);
+            }
+            same_states(&ws[0], &ws[1], k, f);
+            /* its pairs with other moving objects (not the walls) */
+            FOR_PAIRS_OF(&ws[0], 6, link, p) if (link->other >= 6 && p->near) met++;
+        }
+        assert_int_equal(ws[0].st.late_pairs, 0);
+        assert_int_equal(ws[1].st.late_pairs, 0);
+        rows += hands[0].rows;
+        collisions += ws[0].st.collisions;
+        world_free(&ws[0]);
+        world_free(&ws[1]);
+    }
+    print_message("held: %d rooms x %d frames, %ld motions set by the hand, %ld near pairs of the "
+                  "held body seen, %ld collisions\n",
+                  trials, frames, rows, met, collisions);
+    assert_true(rows > trials * frames * 2); /* within frames, not only between */
+    assert_true(met > trials);
+    assert_true(collisions > trials * 5);
+}
+
 /* A moving object's box holds it along its flight to the end of the step: its
- * sphere about the centre of mass, sampled densely, with gravity and spin, after
+ * sphere about the centre of mass, sampled densely, with gravity and spin, and in
+ * every other room one body held and turning about a pivot off its centre, after
  * the box was checked or made again (broad_hold). */
 static void boxes_hold_their_flights(void **state)
 {
@@ -152,8 +243,15 @@ static void boxes_hold_their_flights(void **state)
     for (int k = 0; k < 24; k++) {
         world w;
         random_room(&w, k, 24, true);
-        assert_int_equal(sim_prepare(&w), 0);
         unsigned long long s = 77 + (unsigned long long)k;
+        if (k % 2) { /* one held, turning about a pivot off its centre (FLIGHT_HELD) */
+            body *b = w.bodies[6];
+            vec3 pivot = v3_add(body_com(b), v3(urand(&s, -0.3, 0.3), urand(&s, -0.3, 0.3), 0.1));
+            assert_int_equal(hold_set(&w, 6, (hold_motion){pivot, v3(urand(&s, -2, 2), 1, 0),
+                                                          v3(urand(&s, -3, 3), 2, 1)}),
+                             0);
+        }
+        assert_int_equal(sim_prepare(&w), 0);
         for (int round = 0; round < 5; round++) {
             double t = w.time, t_end = t + urand(&s, 0.001, 0.2);
             long before = w.broad.refits;
@@ -239,6 +337,7 @@ int main(void)
         cmocka_unit_test(pairs_come_and_go),
         cmocka_unit_test(boxes_hold_their_flights),
         cmocka_unit_test(pairs_are_never_late),
+        cmocka_unit_test(held_bodies_pairs_never_late),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
