@@ -13,10 +13,11 @@
 #     same state of the machine (3 runs or more for the rendered runs);
 #   - the random environment (Table 5.6) for 20 to 100 objects, and 200, 500 and
 #     1000 for scaling (fewer runs and frames there, as printed);
-#   - the gas of issue 27: 100, 1,000, 3,000 and 10,000 objects, one per cubic metre
-#     in a closed room (bench_sim --gas), each measured in a process of its own (its
-#     peak memory is its own), and the same objects run by Bullet at 1/60 s
-#     (build/bench/bullet_gas, when libbullet-dev was there to build it);
+#   - the gas of issue 27: 100, 1,000, 2,000, 3,000, 4,000 and 10,000 objects, one
+#     per cubic metre in a closed room (bench_sim --gas; the issue's rows before it,
+#     and its 3,000), each measured in a process of its own (its peak memory is its
+#     own), and the same objects run by Bullet at 1/60 s (build/bench/bullet_gas,
+#     when libbullet-dev was there to build it);
 # then prints build/bench/bench_view and build/bench/bench_closest.
 #
 # Environment: BENCH_QUICK=1 measures less (1 run, fewer frames) for a smoke test.
@@ -343,7 +344,7 @@ fi
 
 # ---------------------------------------------------------------- the gas (issue 27)
 
-GAS_SIZES="100 1000 3000 10000"
+GAS_SIZES="100 1000 2000 3000 4000 10000"
 if [ "$QUICK" = 1 ]; then GAS_FRAMES=5; else GAS_FRAMES=20; fi
 BULLET=build/bench/bullet_gas
 for n in $GAS_SIZES; do
