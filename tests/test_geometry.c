@@ -197,8 +197,23 @@ static void test_octahedron(void **state)
     poly_free(p);
 }
 
-/* Random clouds: a valid polyhedron containing every point; the exact hull's
- * vertices are input points, and merging only grows the hull. */
+/* Fails unless polyhedra p and q are the same to the bit: counts, vertices,
+ * edges, faces and every adjacency list. */
+static void same_poly(const poly *p, const poly *q)
+{
+    assert_int_equal(p->nv, q->nv);
+    assert_int_equal(p->ne, q->ne);
+    assert_int_equal(p->nf, q->nf);
+    int nfv = p->f[p->nf - 1].first + p->f[p->nf - 1].count;
+    assert_memory_equal(p->v, q->v, (size_t)p->nv * sizeof *p->v);
+    assert_memory_equal(p->e, q->e, (size_t)p->ne * sizeof *p->e);
+    assert_memory_equal(p->f, q->f, (size_t)p->nf * sizeof *p->f);
+    assert_memory_equal(p->face_vert, q->face_vert, (size_t)nfv * sizeof *p->face_vert);
+    assert_memory_equal(p->face_edge, q->face_edge, (size_t)nfv * sizeof *p->face_edge);
+    assert_memory_equal(p->vert_first, q->vert_first, (size_t)(p->nv + 1) * sizeof *p->vert_first);
+    assert_memory_equal(p->vert_edge, q->vert_edge, (size_t)(2 * p->ne) * sizeof *p->vert_edge);
+}
+
 /* A box built directly (poly_box, no qhull run) is the box poly_hull makes of its
  * eight corners, to the bit: vertices, edges, faces and every list, over boxes of
  * every proportion; so that no closest-feature walk, and no trace, changes. */
@@ -217,22 +232,14 @@ static void test_box_as_qhull_makes_it(void **state)
         poly *q = poly_hull(c, 8, err, sizeof err), *p = poly_box(h, err, sizeof err);
         assert_non_null(q);
         assert_non_null(p);
-        assert_int_equal(p->nv, q->nv);
-        assert_int_equal(p->ne, q->ne);
-        assert_int_equal(p->nf, q->nf);
-        int nfv = p->f[p->nf - 1].first + p->f[p->nf - 1].count;
-        assert_memory_equal(p->v, q->v, (size_t)p->nv * sizeof *p->v);
-        assert_memory_equal(p->e, q->e, (size_t)p->ne * sizeof *p->e);
-        assert_memory_equal(p->f, q->f, (size_t)p->nf * sizeof *p->f);
-        assert_memory_equal(p->face_vert, q->face_vert, (size_t)nfv * sizeof *p->face_vert);
-        assert_memory_equal(p->face_edge, q->face_edge, (size_t)nfv * sizeof *p->face_edge);
-        assert_memory_equal(p->vert_first, q->vert_first, (size_t)(p->nv + 1) * sizeof *p->vert_first);
-        assert_memory_equal(p->vert_edge, q->vert_edge, (size_t)(2 * p->ne) * sizeof *p->vert_edge);
+        same_poly(p, q);
         poly_free(p);
         poly_free(q);
     }
 }
 
+/* Random clouds: a valid polyhedron containing every point; the exact hull's
+ * vertices are input points, and merging only grows the hull. */
 static void test_random_clouds(void **state)
 {
     (void)state;
@@ -309,17 +316,7 @@ static void test_copy_support(void **state)
     poly *p = hull_or_fail(pts, n), *q = poly_copy(p);
     assert_non_null(q);
     assert_true(q->v != p->v);
-    assert_int_equal(q->nv, p->nv);
-    assert_int_equal(q->ne, p->ne);
-    assert_int_equal(q->nf, p->nf);
-    int nfv = p->f[p->nf - 1].first + p->f[p->nf - 1].count;
-    assert_memory_equal(q->v, p->v, (size_t)p->nv * sizeof *p->v);
-    assert_memory_equal(q->e, p->e, (size_t)p->ne * sizeof *p->e);
-    assert_memory_equal(q->f, p->f, (size_t)p->nf * sizeof *p->f);
-    assert_memory_equal(q->face_vert, p->face_vert, (size_t)nfv * sizeof *p->face_vert);
-    assert_memory_equal(q->face_edge, p->face_edge, (size_t)nfv * sizeof *p->face_edge);
-    assert_memory_equal(q->vert_first, p->vert_first, (size_t)(p->nv + 1) * sizeof *p->vert_first);
-    assert_memory_equal(q->vert_edge, p->vert_edge, (size_t)(2 * p->ne) * sizeof *p->vert_edge);
+    same_poly(p, q);
     poly_free(p);
     uint64_t seed = 99;
     for (int t = 0; t < 200; t++) {
