@@ -441,7 +441,8 @@ static void internal_step(world *w, double t_end)
         const body *b = w->bodies[i];
         double ev = b->mode == MODE_SLIDE ? rest_slide_exit(w, i, t) : HUGE_VAL;
         set_event(w, i, ev);
-        hold_box(w, i, t, true);
+        if (w->step.t_end > w->broad.until[i]) hold_box(w, i, t, true); /* (its first test, here
+                                                                        * without a call) */
     }
     schedule_fresh(w, t);
     /* clusters start their steps (their kicks change their flights) */
