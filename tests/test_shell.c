@@ -387,6 +387,27 @@ static void time_and_stats(void **state)
     assert_int_equal(world_find(&g_sh.w, "never"), -1);
 }
 
+/* stats gives the thesis's pair count (every dynamic pair, Table 5.1) and the
+ * pairs that exist: with the heap on only the near ones (the broad phase), with
+ * it off every one. */
+static void stats_counts_the_pairs_that_exist(void **state)
+{
+    (void)state;
+    char text[2400];
+    int k = snprintf(text, sizeof text, "restart\n");
+    /* twenty spheres 3 m apart in a row, and b1 3 cm from b0 */
+    for (int i = 0; i < 20; i++)
+        k += snprintf(text + k, sizeof text - (size_t)k,
+                      "sphere b%d; radius = 0.1; translate = (%g, 0, 0)\n", i, i == 1 ? 0.23 : 3.0 * i);
+    snprintf(text + k, sizeof text - (size_t)k, "run 1; stats\n");
+    assert_int_equal(run(text), CMD_OK);
+    assert_non_null(strstr(g_out, "objects = 20\npairs = 190\n"));
+    assert_non_null(strstr(g_out, "existing_pairs = 1\n"));
+    assert_int_equal(run("collision_heap = off; run 1; stats\n"), CMD_OK);
+    assert_non_null(strstr(g_out, "pairs = 190\n"));
+    assert_non_null(strstr(g_out, "existing_pairs = 190\n"));
+}
+
 /* A frame that cannot be written turns record off; a batch run (stop_on_error)
  * stops there with an error, the prompt goes on. */
 static void failed_record_stops_a_batch_run(void **state)
@@ -541,6 +562,7 @@ int main(void)
         cmocka_unit_test(time_cannot_run_through_objects),
         cmocka_unit_test(real_time_checks_overlap_once),
         cmocka_unit_test(time_and_stats),
+        cmocka_unit_test(stats_counts_the_pairs_that_exist),
         cmocka_unit_test(failed_record_stops_a_batch_run),
         cmocka_unit_test(trace_writes_a_row_per_object_per_frame),
         cmocka_unit_test(failed_logs_are_turned_off),
