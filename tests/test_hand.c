@@ -16,6 +16,7 @@
  * -ipd.  So its parallax, left column less right, is (H/2) ipd (1/d - 1/D) / t.
  */
 #include "check.h"
+#include "scratch.h"
 
 #include <fcntl.h>
 #include <stdlib.h>
@@ -30,21 +31,16 @@
 #include "shell/writer.h"
 #include "view/view.h"
 
-static char g_dir[64];
-
 static int setup_dir(void **state)
 {
     (void)state;
-    snprintf(g_dir, sizeof g_dir, "/tmp/vroc-hand-XXXXXX");
-    return mkdtemp(g_dir) ? 0 : -1;
+    return scratch_make("hand");
 }
 
 static int teardown_dir(void **state)
 {
     (void)state;
-    char cmd[128];
-    snprintf(cmd, sizeof cmd, "rm -rf %s", g_dir);
-    return system(cmd) == 0 ? 0 : -1;
+    return scratch_remove();
 }
 
 static const char *in_dir(const char *name)

@@ -2,6 +2,7 @@
  * gives its message and changes nothing), objects and properties, save and read
  * round trips. */
 #include "check.h"
+#include "scratch.h"
 
 #include <signal.h>
 #include <stdlib.h>
@@ -15,7 +16,6 @@
 static shell g_sh;
 static char *g_out, *g_errbuf;
 static size_t g_outlen, g_errlen;
-static char g_dir[64];
 
 static int setup(void **state)
 {
@@ -25,8 +25,7 @@ static int setup(void **state)
     shell_init(&g_sh, out, err);
     g_sh.quiet = true;
     g_sh.stop_on_error = true;
-    snprintf(g_dir, sizeof g_dir, "/tmp/vroc-shell-XXXXXX");
-    return mkdtemp(g_dir) ? 0 : -1;
+    return scratch_make("shell");
 }
 
 static int teardown(void **state)
@@ -38,9 +37,7 @@ static int teardown(void **state)
     fclose(err);
     free(g_out);
     free(g_errbuf);
-    char cmd[128];
-    snprintf(cmd, sizeof cmd, "rm -rf %s", g_dir);
-    return system(cmd) == 0 ? 0 : -1;
+    return scratch_remove();
 }
 
 /* Everything the user could observe of the world, as text. */

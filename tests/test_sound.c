@@ -3,6 +3,7 @@
  * sound files (resampling, bad files) and the engine end to end into a WAV file,
  * read back with libsndfile, and a soundtrack that cannot be written saying why. */
 #include "check.h"
+#include "scratch.h"
 
 #include <signal.h>
 #include <stdlib.h>
@@ -19,21 +20,16 @@
 #include "sound/synth.h"
 #include "tone.h"
 
-static char g_dir[64];
-
 static int setup(void **state)
 {
     (void)state;
-    snprintf(g_dir, sizeof g_dir, "/tmp/vroc-sound-XXXXXX");
-    return mkdtemp(g_dir) ? 0 : -1;
+    return scratch_make("sound");
 }
 
 static int teardown(void **state)
 {
     (void)state;
-    char cmd[128];
-    snprintf(cmd, sizeof cmd, "rm -rf %s", g_dir);
-    return system(cmd) == 0 ? 0 : -1;
+    return scratch_remove();
 }
 
 static void path_in_dir(char *out, size_t len, const char *name)

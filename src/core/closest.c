@@ -942,11 +942,27 @@ static void sat_estimate(const walk *w, closest_result *r)
     double best = INFINITY;
     int bs = 0, bg = 0, bv = 0, bja = -1, bjb = 0;
     vec3 bax = v3(0, 0, 0);
+    /* the overlap at the faces the walk ended on: no face that must overlap more
+     * can be the least (pruned below without changing which face wins a tie) */
+    double seed = INFINITY;
+    for (int s = 0; s < 2; s++) {
+        if (w->f[s].kind != CLOSEST_FACE) continue;
+        const poly *ps = w->p[s], *po = w->p[1 - s];
+        const poly_face *fc = &ps->f[w->f[s].index];
+        int j = poly_climb(po, dir_to(w, 1 - s, v3_neg(fc->n)), 0);
+        seed = d_min(seed, fc->d - v3_dot(fc->n, to(w, s, po->v[j])));
+    }
     for (int s = 0; s < 2; s++) {
         int o = 1 - s, j = 0;
         const poly *ps = w->p[s], *po = w->p[o];
+        /* the other's centre is inside it, so no vertex of it lies further along
+         * a face's outward normal than its centre: a face whose plane the
+         * centre is past by best or more cannot overlap less (no climb) */
+        vec3 centre = to(w, s, v3(0, 0, 0));
         for (int i = 0; i < ps->nf; i++) {
             int g = w->h[s]->face_order[i];
+            double least = ps->f[g].d - v3_dot(ps->f[g].n, centre);
+            if (least >= best || least > seed) continue;
             j = poly_climb(po, dir_to(w, o, v3_neg(ps->f[g].n)), j);
             double ov = ps->f[g].d - v3_dot(ps->f[g].n, to(w, s, po->v[j]));
             if (ov < best) {

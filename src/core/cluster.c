@@ -197,7 +197,7 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end)
          * curved side rolling over an edge brings its next facet): each contact's
          * own closest points there, when they are closer than its points allow,
          * are followed too */
-        int added = deepest_rows(w, &pts, bs, floor_gap, gap, m, t, h);
+        int added = done || it == CLUSTER_NEWTON - 1 ? deepest_rows(w, &pts, bs, floor_gap, gap, m, t, h) : 0;
         for (int k = 0; k < n; k++) bs[list[k]] = w->bodies[list[k]];
         if (added > 0) {
             for (int k = m; k < m + added; k++) lam[k] = 0;

@@ -60,11 +60,13 @@ static int lines_of(const body *o, const sched_move *mo, vec3 n, double side, ve
     if (!h || h->nv > TOI_ENVELOPE_VERTICES) return 0;
     vec3 w = mo->moves ? o->w : v3(0, 0, 0);
     if (mo->held) c = mo->c; /* its points turn about the pivot, which moves at v */
-    for (int i = 0; i < h->nv; i++) {
-        vec3 x = v3_add(o->x, q_rotate(o->q, h->v[i]));
-        vec3 u = v3_add(v, v3_cross(w, v3_sub(x, c)));
-        out[i] = (line){v3_dot(v3_sub(x, p), sn), v3_dot(u, sn)};
-    }
+    /* a vertex at x = o->x + R y: its height (x - p).sn and its speed along sn,
+     * (v + w x (x - c)).sn = v.sn + (x - c).(sn x w), are each a constant plus y
+     * dotted with a direction of the body's own frame */
+    vec3 sw = v3_cross(sn, w);
+    double h0 = v3_dot(v3_sub(o->x, p), sn), h1 = v3_dot(v, sn) + v3_dot(v3_sub(o->x, c), sw);
+    vec3 dh0 = q_unrotate(o->q, sn), dh1 = q_unrotate(o->q, sw);
+    for (int i = 0; i < h->nv; i++) out[i] = (line){h0 + v3_dot(h->v[i], dh0), h1 + v3_dot(h->v[i], dh1)};
     return h->nv;
 }
 

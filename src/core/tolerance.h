@@ -53,7 +53,7 @@
 /* A cluster of objects pressed together (cluster.h) moves in steps of at most
  * this long (s), and short enough that none of its points moves more than
  * SIM_CLUSTER_MOVE (m) in one. */
-#define SIM_CLUSTER_STEP 1e-3
+#define SIM_CLUSTER_STEP 2e-3
 #define SIM_CLUSTER_MOVE 1e-3
 /* Rows of contact one cluster may hold (the corners of its contact regions). */
 #define SIM_CLUSTER_ROWS 64
