@@ -72,6 +72,8 @@ struct closest_hull {
     int *face_order;  /* the faces in depth-first order over shared edges, so that
                          consecutive faces are mostly neighbours (support climbs) */
     double size;      /* largest |vertex| */
+    double r_in;      /* a ball of this radius about the origin lies inside (-HUGE_VAL
+                         when the origin is not inside) */
     /* an axis-aligned box (a cube's hull): sphere-box is then closed-form */
     bool box;
     vec3 lo, hi;
@@ -165,6 +167,10 @@ closest_hull *closest_hull_new(const poly *p)
         closest_hull_free(h);
         return NULL;
     }
+    /* the nearest face plane, a little nearer for the rounding of the planes */
+    h->r_in = HUGE_VAL;
+    for (int f = 0; f < p->nf; f++) h->r_in = d_min(h->r_in, p->f[f].d);
+    h->r_in = h->r_in > 0 && p->nf > 0 ? h->r_in * (1 - 1e-9) : -HUGE_VAL;
     for (int e = 0; e < p->ne; e++) {
         vec3 t = p->v[p->e[e].v[0]], hd = p->v[p->e[e].v[1]];
         vec3 u = v3_norm(v3_sub(hd, t));
@@ -955,13 +961,15 @@ static void sat_estimate(const walk *w, closest_result *r)
     for (int s = 0; s < 2; s++) {
         int o = 1 - s, j = 0;
         const poly *ps = w->p[s], *po = w->p[o];
-        /* the other's centre is inside it, so no vertex of it lies further along
-         * a face's outward normal than its centre: a face whose plane the
-         * centre is past by best or more cannot overlap less (no climb) */
+        /* a ball of radius r_in about the other's centre is inside it, so some
+         * vertex of it lies r_in or more behind its centre along a face's
+         * outward normal: a face that the centre is past by r_in - best or less
+         * cannot overlap less (no climb) */
         vec3 centre = to(w, s, v3(0, 0, 0));
+        double r_in = w->h[o]->r_in;
         for (int i = 0; i < ps->nf; i++) {
             int g = w->h[s]->face_order[i];
-            double least = ps->f[g].d - v3_dot(ps->f[g].n, centre);
+            double least = ps->f[g].d - v3_dot(ps->f[g].n, centre) + r_in;
             if (least >= best || least > seed) continue;
             j = poly_climb(po, dir_to(w, o, v3_neg(ps->f[g].n)), j);
             double ov = ps->f[g].d - v3_dot(ps->f[g].n, to(w, s, po->v[j]));
@@ -977,12 +985,18 @@ static void sat_estimate(const walk *w, closest_result *r)
     int na = feature_edges(w, 0, w->f[0], ea, LOCAL_EDGES);
     int nb = feature_edges(w, 1, w->f[1], eb, LOCAL_EDGES);
     int ja = 0, jb = 0;
+    /* along an axis, B reaches at least r_in past its centre and A at least r_in
+     * before its own: an axis on which even that overlaps best or more is no
+     * better (no climbs) */
+    vec3 cb = to(w, 0, v3(0, 0, 0));
+    double r_ins = w->h[0]->r_in + w->h[1]->r_in;
     for (int i = 0; i < na; i++)
         for (int j = 0; j < nb; j++) {
             vec3 c = v3_cross(ea[i], eb[j]);
             if (v3_len(c) < 1e-9) continue;
             for (int sg = 0; sg < 2; sg++) {
                 vec3 ax = sg ? v3_neg(v3_norm(c)) : v3_norm(c);
+                if (v3_dot(ax, cb) + r_ins >= best) continue;
                 ja = poly_climb(w->p[0], v3_neg(ax), ja);
                 jb = poly_climb(w->p[1], dir_to(w, 1, ax), jb);
                 double ov = v3_dot(ax, to(w, 0, w->p[1]->v[jb])) - v3_dot(ax, w->p[0]->v[ja]);
