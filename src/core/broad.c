@@ -282,18 +282,43 @@ static void tree_remove(broad_tree *t, int leaf)
     if (grand >= 0) fix_up(t, grand);
 }
 
-/* The box of the objects obj[0 .. n - 1] in the order of their centres along
- * axis (for qsort, through sort_boxes). */
-static const aabb *sort_boxes;
-static int sort_axis;
-
-static int by_centre(const void *x, const void *y)
+/* Whether object a comes before b along axis: by their boxes' centres, then by
+ * index (a total order: the same tree everywhere). */
+static bool before(const aabb *box, int axis, int a, int b)
 {
-    const aabb *a = &sort_boxes[*(const int *)x], *b = &sort_boxes[*(const int *)y];
-    double ca = v3_comp(a->lo, sort_axis) + v3_comp(a->hi, sort_axis);
-    double cb = v3_comp(b->lo, sort_axis) + v3_comp(b->hi, sort_axis);
-    if (ca != cb) return ca < cb ? -1 : 1;
-    return *(const int *)x - *(const int *)y; /* (a total order: the same tree everywhere) */
+    double ca = v3_comp(box[a].lo, axis) + v3_comp(box[a].hi, axis);
+    double cb = v3_comp(box[b].lo, axis) + v3_comp(box[b].hi, axis);
+    return ca < cb || (ca == cb && a < b);
+}
+
+static void swap_int(int *x, int *y)
+{
+    int t = *x;
+    *x = *y;
+    *y = t;
+}
+
+/* Reorders obj[0 .. n - 1] so that the k that come first in the order of before()
+ * are obj[0 .. k - 1] (quickselect, median-of-three pivots): a split at the
+ * median in linear time, where a sort took n log n. */
+static void split_at(int *obj, int n, int k, const aabb *box, int axis)
+{
+    int lo = 0, hi = n - 1;
+    while (lo < hi) {
+        int mid = lo + (hi - lo) / 2;
+        if (before(box, axis, obj[mid], obj[lo])) swap_int(&obj[mid], &obj[lo]);
+        if (before(box, axis, obj[hi], obj[lo])) swap_int(&obj[hi], &obj[lo]);
+        if (before(box, axis, obj[hi], obj[mid])) swap_int(&obj[hi], &obj[mid]);
+        int pivot = obj[mid], i = lo, j = hi;
+        while (i <= j) {
+            while (before(box, axis, obj[i], pivot)) i++;
+            while (before(box, axis, pivot, obj[j])) j--;
+            if (i <= j) swap_int(&obj[i++], &obj[j--]);
+        }
+        if (k <= j) hi = j;
+        else if (k >= i) lo = i;
+        else return;
+    }
 }
 
 /* A subtree over the objects obj[0 .. n - 1] (n >= 1) with boxes box, split at the
@@ -316,12 +341,11 @@ static int tree_build(broad_tree *t, int *obj, int n, const aabb *box, int *leaf
         hi = v3_max(hi, c);
     }
     vec3 d = v3_sub(hi, lo);
-    sort_axis = d.x >= d.y && d.x >= d.z ? 0 : d.y >= d.z ? 1 : 2;
-    sort_boxes = box;
-    qsort(obj, (size_t)n, sizeof *obj, by_centre);
+    int axis = d.x >= d.y && d.x >= d.z ? 0 : d.y >= d.z ? 1 : 2;
+    int half = n / 2;
+    split_at(obj, n, half, box, axis);
     int k = node_new(t);
     if (k < 0) return -1;
-    int half = n / 2;
     int a = tree_build(t, obj, half, box, leaf);
     int b = a < 0 ? -1 : tree_build(t, obj + half, n - half, box, leaf);
     if (b < 0) return -1;
