@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "grow.h"
 #include "pairs.h"
 #include "step.h"
 #include "tolerance.h"
@@ -369,13 +370,9 @@ static int tree_query(broad_phase *bp, const broad_tree *t, aabb box)
         const broad_node *n = &t->node[bp->stack[--top]];
         if (!box_meets(n->box, box)) continue;
         if (is_leaf(n)) {
-            if (bp->nfound == bp->capfound) {
-                int cap = bp->capfound ? 2 * bp->capfound : 64;
-                int *f = realloc(bp->found, (size_t)cap * sizeof *f);
-                if (!f) return -1;
-                bp->found = f;
-                bp->capfound = cap;
-            }
+            int *f = grow_for_one(bp->found, bp->nfound, &bp->capfound, sizeof *f, 64);
+            if (!f) return -1;
+            bp->found = f;
             bp->found[bp->nfound++] = n->body;
             continue;
         }

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "broad.h"
+#include "grow.h"
 #include "schedule.h"
 #include "world.h"
 
@@ -45,13 +46,9 @@ static int adj_place(const pair_adj *adj, int other)
 
 static int adj_insert(pair_adj *adj, int other, long slot)
 {
-    if (adj->n == adj->cap) {
-        int cap = adj->cap ? 2 * adj->cap : 4;
-        pair_link *l = realloc(adj->l, (size_t)cap * sizeof *l);
-        if (!l) return -1;
-        adj->l = l;
-        adj->cap = cap;
-    }
+    pair_link *l = grow_for_one(adj->l, adj->n, &adj->cap, sizeof *l, 4);
+    if (!l) return -1;
+    adj->l = l;
     int at = adj_place(adj, other);
     memmove(&adj->l[at + 1], &adj->l[at], (size_t)(adj->n - at) * sizeof *adj->l);
     adj->l[at] = (pair_link){other, slot};

@@ -8,7 +8,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "shell/grow.h"
+#include "core/grow.h"
 
 /* How far from 1 a row's quaternion may be before it is an error. */
 #define TRACKER_UNIT_TOL 1e-6

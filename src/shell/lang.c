@@ -21,7 +21,7 @@
 #include "core/limits.h"
 #include "lex.h"
 #include "fmt.h"
-#include "grow.h"
+#include "core/grow.h"
 
 /* Files larger than this are refused (a scene is a few kilobytes). */
 #define LANG_MAX_FILE (64L * 1024 * 1024)

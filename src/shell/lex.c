@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "grow.h"
+#include "core/grow.h"
 
 /* A token's text for a message: quoted, at most 40 characters. */
 const char *tok_text(const token *t, char buf[96])

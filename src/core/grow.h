@@ -1,4 +1,5 @@
-/* grow.h: room for one more item in an array that doubles as it grows. */
+/* grow.h: room for one more item in an array that doubles as it grows (the core's
+ * pairs and broad phase, and the shell's tokens, statements and tracker rows). */
 #ifndef VROC_GROW_H
 #define VROC_GROW_H
 
