@@ -429,15 +429,20 @@ static next_event find_next(world *w, double t_step, double t_end)
 /* ------------------------------------------------------------ steps and frames */
 
 /* One internal step, from now to t_end (thesis 3.4.2, steps 3 to 5). */
-static void internal_step(world *w, double t_end)
+static void internal_step(world *w, double t_end, bool fresh)
 {
     double t = w->time;
     w->step.t_end = t_end;
-    /* every moving object's flight starts afresh where it is, and its box holds it
-     * to the step's end */
+    /* every moving object's flight starts afresh where it is (a free flight goes
+     * on within a frame: the frame's start, where a save may be, is where it
+     * starts), and its box holds it to the step's end */
+    if (!fresh) /* what was searched for went no further than the last step */
+        for (long k = 0; k < w->pairs.n; k++) w->pairs.p[k].toi_fa = w->pairs.p[k].toi_fb = -1;
     for (int i = 0; i < w->n; i++) {
         if (!step_moves(w, i)) continue;
-        step_start(w, i, t);
+        const body *o = w->bodies[i];
+        if (fresh || o->mode != MODE_FREE || o->held || w->step.fl[i].kind != FLIGHT_FREE)
+            step_start(w, i, t);
         const body *b = w->bodies[i];
         double ev = b->mode == MODE_SLIDE ? rest_slide_exit(w, i, t) : HUGE_VAL;
         set_event(w, i, ev);
@@ -578,7 +583,7 @@ static __attribute__((cold, noinline)) double hook_cut(world *w, const sim_hook 
                                                       double t_end, int *calls)
 {
     while (tn < t_end) {
-        if (tn > w->time) internal_step(w, tn);
+        if (tn > w->time) internal_step(w, tn, true);
         tn = hook_act(w, hook, t_end, calls);
     }
     return tn;
@@ -613,8 +618,9 @@ int sim_frame_hooked(world *w, const sim_hook *hook, char *err, size_t errlen)
     double tn = hook ? hook->next(hook->ctx, w) : HUGE_VAL;
     for (long k = 0; k < n; k++) {
         double t_end = w->time + h;
-        if (tn < t_end) tn = hook_cut(w, hook, tn, t_end, &calls);
-        internal_step(w, t_end);
+        bool cut = tn < t_end;
+        if (cut) tn = hook_cut(w, hook, tn, t_end, &calls);
+        internal_step(w, t_end, k == 0 || cut);
         w->st.subframes++;
     }
     if (rest_frame_end(w) > 0) {
