@@ -208,13 +208,7 @@ static void nothing_passes_through_a_plate(void **state)
         rebuild(plate);
         body_set_mass(plate, -1);
         int kind = shot % 3;
-        body *b = add(&w, "shot", (shape_kind)kind);
-        b->sp.radius = urand(&seed, 0.05, 0.3);
-        b->sp.size = v3(urand(&seed, 0.05, 0.3), urand(&seed, 0.05, 0.3), urand(&seed, 0.05, 0.3));
-        b->sp.a1 = urand(&seed, 0.05, 0.3);
-        b->sp.exp1 = urand(&seed, 0.3, 2);
-        b->sp.exp2 = urand(&seed, 0.3, 2);
-        rebuild(b);
+        body *b = add_random_shot(&w, (shape_kind)kind, &seed);
         b->elasticity = urand(&seed, 0, 1);
         b->x = v3(urand(&seed, -1, 1), urand(&seed, -1, 1), half + b->shape.r_out + urand(&seed, 0.01, 2));
         body_set_rotation(b, v3(urand(&seed, -1, 1), urand(&seed, -1, 1), urand(&seed, -1, 1)), urand(&seed, 0, 3));

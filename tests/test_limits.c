@@ -18,46 +18,20 @@
 #include "core/limits.h"
 #include "shell/fmt.h"
 #include "shell/shell.h"
-
-static shell g_sh;
-static char *g_out, *g_errbuf;
-static size_t g_outlen, g_errlen;
+#include "shell_fixture.h"
 
 static int setup(void **state)
 {
     (void)state;
-    FILE *out = open_memstream(&g_out, &g_outlen);
-    FILE *err = open_memstream(&g_errbuf, &g_errlen);
-    shell_init(&g_sh, out, err);
-    g_sh.quiet = true;
-    g_sh.stop_on_error = true;
+    shell_fixture_open();
     return 0;
 }
 
 static int teardown(void **state)
 {
     (void)state;
-    FILE *out = g_sh.out, *err = g_sh.err;
-    shell_free(&g_sh);
-    fclose(out);
-    fclose(err);
-    free(g_out);
-    free(g_errbuf);
+    shell_fixture_close();
     return 0;
-}
-
-static cmd_status run(const char *text)
-{
-    fflush(g_sh.out);
-    fflush(g_sh.err);
-    rewind(g_sh.out);
-    rewind(g_sh.err);
-    memset(g_out, 0, g_outlen);
-    memset(g_errbuf, 0, g_errlen);
-    cmd_status r = shell_run_text(&g_sh, text, NULL);
-    fflush(g_sh.out);
-    fflush(g_sh.err);
-    return r;
 }
 
 static int g_runs; /* walks whose two frames ran */

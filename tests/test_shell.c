@@ -3,6 +3,7 @@
  * round trips. */
 #include "check.h"
 #include "scratch.h"
+#include "shell_fixture.h"
 
 #include <signal.h>
 #include <stdlib.h>
@@ -13,30 +14,17 @@
 #include "shell/shell.h"
 #include "shell/writer.h"
 
-static shell g_sh;
-static char *g_out, *g_errbuf;
-static size_t g_outlen, g_errlen;
-
 static int setup(void **state)
 {
     (void)state;
-    FILE *out = open_memstream(&g_out, &g_outlen);
-    FILE *err = open_memstream(&g_errbuf, &g_errlen);
-    shell_init(&g_sh, out, err);
-    g_sh.quiet = true;
-    g_sh.stop_on_error = true;
+    shell_fixture_open();
     return scratch_make("shell");
 }
 
 static int teardown(void **state)
 {
     (void)state;
-    FILE *out = g_sh.out, *err = g_sh.err;
-    shell_free(&g_sh);
-    fclose(out);
-    fclose(err);
-    free(g_out);
-    free(g_errbuf);
+    shell_fixture_close();
     return scratch_remove();
 }
 
@@ -53,24 +41,6 @@ static char *snapshot(void)
     return text;
 }
 
-static void clear_output(void)
-{
-    fflush(g_sh.out);
-    fflush(g_sh.err);
-    rewind(g_sh.out);
-    rewind(g_sh.err);
-    g_out[0] = g_errbuf[0] = '\0';
-    g_outlen = g_errlen = 0;
-}
-
-static cmd_status run(const char *text)
-{
-    clear_output();
-    cmd_status r = shell_run_text(&g_sh, text, NULL);
-    fflush(g_sh.out);
-    fflush(g_sh.err);
-    return r;
-}
 
 static void path_in_dir(char *out, size_t len, const char *name)
 {

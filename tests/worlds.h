@@ -62,4 +62,18 @@ static inline double urand(unsigned long long *s, double lo, double hi)
     return lo + (hi - lo) * (double)(*s >> 11) / 9007199254740992.0;
 }
 
+/* A shot of the thin-plate tests: an object of kind with sizes drawn from [0.05,
+ * 0.3) m and superquadric exponents from [0.3, 2), rebuilt. */
+static inline body *add_random_shot(world *w, shape_kind kind, unsigned long long *seed)
+{
+    body *b = add(w, "shot", kind);
+    b->sp.radius = urand(seed, 0.05, 0.3);
+    b->sp.size = v3(urand(seed, 0.05, 0.3), urand(seed, 0.05, 0.3), urand(seed, 0.05, 0.3));
+    b->sp.a1 = urand(seed, 0.05, 0.3);
+    b->sp.exp1 = urand(seed, 0.3, 2);
+    b->sp.exp2 = urand(seed, 0.3, 2);
+    rebuild(b);
+    return b;
+}
+
 #endif

@@ -943,6 +943,15 @@ static int feature_edges(const walk *w, int k, closest_feature f, vec3 *out, int
  * normals of both and the cross products of the edges at the current features (for
  * touching edges and vertices).  The overlap along axis a is how far A must move
  * along a to clear B. */
+/* How far the other side reaches past face g of side s (its overlap along the
+ * face's outward normal), at its deepest vertex, climbed to from *j. */
+static inline double face_overlap(const walk *w, int s, int g, int *j)
+{
+    const poly *ps = w->p[s], *po = w->p[1 - s];
+    *j = poly_climb(po, dir_to(w, 1 - s, v3_neg(ps->f[g].n)), *j);
+    return ps->f[g].d - v3_dot(ps->f[g].n, to(w, s, po->v[*j]));
+}
+
 static void sat_estimate(const walk *w, closest_result *r)
 {
     double best = INFINITY;
@@ -952,15 +961,12 @@ static void sat_estimate(const walk *w, closest_result *r)
      * can be the least (pruned below without changing which face wins a tie) */
     double seed = INFINITY;
     for (int s = 0; s < 2; s++) {
-        if (w->f[s].kind != CLOSEST_FACE) continue;
-        const poly *ps = w->p[s], *po = w->p[1 - s];
-        const poly_face *fc = &ps->f[w->f[s].index];
-        int j = poly_climb(po, dir_to(w, 1 - s, v3_neg(fc->n)), 0);
-        seed = d_min(seed, fc->d - v3_dot(fc->n, to(w, s, po->v[j])));
+        int j = 0;
+        if (w->f[s].kind == CLOSEST_FACE) seed = d_min(seed, face_overlap(w, s, w->f[s].index, &j));
     }
     for (int s = 0; s < 2; s++) {
         int o = 1 - s, j = 0;
-        const poly *ps = w->p[s], *po = w->p[o];
+        const poly *ps = w->p[s];
         /* a ball of radius r_in about the other's centre is inside it, so some
          * vertex of it lies r_in or more behind its centre along a face's
          * outward normal: a face that the centre is past by r_in - best or less
@@ -971,8 +977,7 @@ static void sat_estimate(const walk *w, closest_result *r)
             int g = w->h[s]->face_order[i];
             double least = ps->f[g].d - v3_dot(ps->f[g].n, centre) + r_in;
             if (least >= best || least > seed) continue;
-            j = poly_climb(po, dir_to(w, o, v3_neg(ps->f[g].n)), j);
-            double ov = ps->f[g].d - v3_dot(ps->f[g].n, to(w, s, po->v[j]));
+            double ov = face_overlap(w, s, g, &j);
             if (ov < best) {
                 best = ov;
                 bs = s;

@@ -99,9 +99,8 @@ static double floor_of(const world *w, const cpoint *cp, double g0, double h)
  * one more row for each, at those points (appended to pts, its floor and gap
  * written); returns how many. */
 static int deepest_rows(world *w, points *pts, body **bs, double *floor_gap, double *gap, int m,
-                        double t, double h)
+                        double h)
 {
-    (void)t;
     int added = 0;
     for (int c = 0; c < pts->np && pts->n < SIM_CLUSTER_ROWS; c++) {
         pair *p = pts->pr[c];
@@ -197,7 +196,7 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end)
          * curved side rolling over an edge brings its next facet): each contact's
          * own closest points there, when they are closer than its points allow,
          * are followed too */
-        int added = done || it == CLUSTER_NEWTON - 1 ? deepest_rows(w, &pts, bs, floor_gap, gap, m, t, h) : 0;
+        int added = done || it == CLUSTER_NEWTON - 1 ? deepest_rows(w, &pts, bs, floor_gap, gap, m, h) : 0;
         for (int k = 0; k < n; k++) bs[list[k]] = w->bodies[list[k]];
         if (added > 0) {
             for (int k = m; k < m + added; k++) lam[k] = 0;
@@ -220,9 +219,8 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end)
     return h;
 }
 
-void cluster_settle(world *w, const int *list, int n, double t1)
+void cluster_settle(world *w, const int *list, int n)
 {
-    (void)t1;
     points pts;
     gather(w, list, n, &pts, 0);
     body **bs = w->step.now;

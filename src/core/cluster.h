@@ -23,8 +23,8 @@ typedef struct world world;
  * applied to their states.  Returns the step's length (until t_end at most). */
 double cluster_kick(world *w, const int *list, int n, double t, double t_end);
 
-/* The last kicks of the step (the states at its end, t1): touching points no
- * longer approach; lasting contacts whose gaps opened end. */
-void cluster_settle(world *w, const int *list, int n, double t1);
+/* The last kicks of the step (the objects' states at its end): touching points
+ * no longer approach; lasting contacts whose gaps opened end. */
+void cluster_settle(world *w, const int *list, int n);
 
 #endif

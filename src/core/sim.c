@@ -310,7 +310,7 @@ static void answer_object(world *w, int i, double t, double t_end)
     if (!mine) return;
     memcpy(mine, list, (size_t)n * sizeof *mine);
     for (int j = 0; j < n; j++) step_sync(w, mine[j], t);
-    cluster_settle(w, mine, n, t);
+    cluster_settle(w, mine, n);
     rest_classify(w, mine, n);
     for (int j = 0; j < n; j++) restart(w, mine[j], t);
     if (t < t_end) begin_clusters(w, mine, n, t, t_end);
@@ -440,10 +440,9 @@ static void internal_step(world *w, double t_end, bool fresh)
         for (long k = 0; k < w->pairs.n; k++) w->pairs.p[k].toi_fa = w->pairs.p[k].toi_fb = -1;
     for (int i = 0; i < w->n; i++) {
         if (!step_moves(w, i)) continue;
-        const body *o = w->bodies[i];
-        if (fresh || o->mode != MODE_FREE || o->held || w->step.fl[i].kind != FLIGHT_FREE)
-            step_start(w, i, t);
         const body *b = w->bodies[i];
+        if (fresh || b->mode != MODE_FREE || b->held || w->step.fl[i].kind != FLIGHT_FREE)
+            step_start(w, i, t);
         double ev = b->mode == MODE_SLIDE ? rest_slide_exit(w, i, t) : HUGE_VAL;
         set_event(w, i, ev);
         if (w->step.t_end > w->broad.until[i]) hold_box(w, i, t, true); /* (its first test, here
