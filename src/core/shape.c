@@ -392,7 +392,7 @@ static int build_polyhedron(shape *s, char *err, size_t errlen)
     s->hull = poly_hull_merge(pts, src->np, 0, why, sizeof why);
     free(pts);
     if (!s->hull) {
-        set_err(err, errlen, "polyhedron: its %d points have no volume: %s", src->np,
+        set_err(err, errlen, "polyhedron: its %d points make no solid: %s", src->np,
                 strip_hull(why));
         return -1;
     }
