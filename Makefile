@@ -244,7 +244,7 @@ install: vroc man/vroc.1
 	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(MANDIR) $(DESTDIR)$(SCENEDIR)
 	install -m 755 vroc $(DESTDIR)$(BINDIR)/vroc
 	install -m 644 man/vroc.1 $(DESTDIR)$(MANDIR)/vroc.1
-	install -m 644 scenes/*.vroc scenes/*.csv $(DESTDIR)$(SCENEDIR)/
+	install -m 644 scenes/*.vroc scenes/*.csv scenes/*.obj scenes/*.off scenes/*.ply $(DESTDIR)$(SCENEDIR)/
 
 uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/vroc $(DESTDIR)$(MANDIR)/vroc.1

@@ -98,6 +98,9 @@ static int read_header(ply_reader *r, ply_element *el, int *nel)
                                                                  : -2;
             if (r->format == -2)
                 return mb_err_line(b, c->line, "unknown format '%s'", w);
+            next_word(c, w, sizeof w);
+            if (strcmp(w, "1.0") != 0)
+                return mb_err_line(b, c->line, "PLY version '%s': only 1.0 is read", w);
         } else if (strcmp(w, "element") == 0) {
             if (*nel == PLY_MAX_ELEMENTS)
                 return mb_err_line(b, c->line, "more than %d elements", PLY_MAX_ELEMENTS);
