@@ -7,7 +7,10 @@
  * (ear clipping costs up to the cube of the corners).  A corner's normal is the
  * file's where it gives one; otherwise the area-weighted mean of the normals of the
  * faces at its vertex that turn from its own face by less than CREASE: a
- * tessellated curve is drawn smooth and a box's edges stay sharp.  (A vertex in
+ * tessellated curve is drawn smooth and a box's edges stay sharp.  Each face
+ * counts by its angle at the corner (Thurmer and Wuthrich 1998), so that a vertex
+ * between large and small faces, as near the poles of a sphere's tessellation,
+ * still gets the surface's normal.  (A vertex in
  * more than FAN_MAX faces takes its face's own normal: the search is quadratic in
  * them.)  Corners with the same vertex and normal share one vertex of the mesh.
  * Faces keep the file's winding, which may be either way: polyhedra are drawn
@@ -121,6 +124,22 @@ static vec3 newell(const mesh_file *m, int f)
     return n;
 }
 
+/* The angle of face f at its corner c, between the nearest corners before and
+ * after it at other points (a face may repeat a point: a quad folded into a
+ * triangle at a pole); 0 when there are none. */
+static double corner_angle(const mesh_file *m, int f, int c)
+{
+    int a = m->face_first[f], e = m->face_first[f + 1], n = e - a;
+    int v = m->corner[c], before = c, after = c;
+    for (int k = 1; k < n && m->corner[before] == v; k++) before = a + (c - a - k + n) % n;
+    for (int k = 1; k < n && m->corner[after] == v; k++) after = a + (c - a + k) % n;
+    vec3 p = m->v[v];
+    vec3 u = v3_sub(m->v[m->corner[before]], p), w = v3_sub(m->v[m->corner[after]], p);
+    double lu = v3_len(u), lw = v3_len(w);
+    if (!(lu > 0 && lw > 0)) return 0;
+    return atan2(v3_len(v3_cross(u, w)), v3_dot(u, w));
+}
+
 /* The file's normal of corner c, unit, or (0, 0, 0) when it gives none usable. */
 static vec3 file_normal(const mesh_file *m, int c)
 {
@@ -176,7 +195,8 @@ mesh_source *mesh_source_make(const mesh_file *m, const char *path, char *err, s
                     for (int j = lo; j < hi; j++) {
                         vec3 g = fn[face[at[j]]];
                         double l = v3_len(g);
-                        if (l > 0 && v3_dot(g, own) >= CREASE_COS * l) n = v3_add(n, g);
+                        if (l > 0 && v3_dot(g, own) >= CREASE_COS * l)
+                            n = v3_add(n, v3_scale(g, corner_angle(m, face[at[j]], at[j]) / l));
                     }
                 }
                 double l = v3_len(n);

@@ -48,7 +48,8 @@ int mesh_read_off(mesh_builder *b, const char *data, size_t len)
     if (c.eol - p >= 2 && p[0] == 'S' && p[1] == 'T') st = true, p += 2;
     if (p < c.eol && *p == 'C') col = true, p++;
     if (p < c.eol && *p == 'N') nrm = true, p++;
-    if (p < c.eol && (*p == '4' || *p == 'n'))
+    if (p < c.eol && (*p == '4' || *p == 'n') && word_len(p, c.eol) >= 4 &&
+        (memcmp(p + 1, "OFF", 3) == 0 || memcmp(p + 1, "nOFF", 4) == 0))
         return mb_err_line(b, c.line, "'%.*s': OFF of more than 3 dimensions is not read",
                            (int)word_len(c.p, c.eol), c.p);
     if (c.eol - p >= 3 && memcmp(p, "OFF", 3) == 0) { /* the keyword */

@@ -151,10 +151,10 @@ static int read_header(ply_reader *r, ply_element *el, int *nel)
             return mb_err(b, "element %s has %lld instances but no property", e->name, e->count);
         if (e->count > 0 && (unsigned long long)e->count > left / each)
             return mb_err_line(b, c->line,
-                               "element %s: %lld instances need at least %llu bytes, but the "
-                               "file has %zu after its header",
+                               "element %s: %lld instances need at least %llu bytes, but only "
+                               "%zu are left for them (of the %zu after the header)",
                                e->name, e->count, (unsigned long long)each * (unsigned long long)e->count,
-                               left);
+                               left, (size_t)(r->end - r->pos));
         left -= (size_t)e->count * each;
     }
     return 0;
