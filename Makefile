@@ -7,7 +7,8 @@
 #                      and a movie of them with the collisions' sound
 #   make deps          install the missing Debian packages (apt-get, sudo when not root)
 #   make record-hashes record the scenes' trace hashes anew (after an intended change)
-#   make fuzz          an AFL++ campaign of FUZZ_TIME seconds (tools/fuzz.sh)
+#   make fuzz          AFL++ campaigns of FUZZ_TIME seconds each, of the language and
+#                      of the four mesh readers (FUZZ_TARGETS; tools/fuzz.sh)
 #   make install       binary, man page and scenes under $(DESTDIR)$(PREFIX)
 #   make clean         remove what make built
 #
@@ -220,13 +221,15 @@ bench: deps
 	@$(MAKE) --no-print-directory vroc $(addprefix build/bench/,$(BENCHES)) $(BULLET)
 	@sh bench/run.sh
 
-# ---- fuzzing: an AFL++ campaign of FUZZ_TIME seconds in a scratch folder; what
-# it finds goes into tests/fuzz/regress/, which check replays (tools/fuzz.sh) ----
+# ---- fuzzing: AFL++ campaigns of FUZZ_TIME seconds each in a scratch folder,
+# of FUZZ_TARGETS (script obj stl off ply); what they find goes into
+# tests/fuzz/regress/, which check replays (tools/fuzz.sh) ----
 FUZZ_TIME ?= 60
+FUZZ_TARGETS ?= script obj stl off ply
 fuzz:
 	@sh tools/deps.sh fuzz
 	@$(MAKE) --no-print-directory build-fuzz/vroc build-fuzz/tests/fuzz_mesh
-	@FUZZ_TIME=$(FUZZ_TIME) sh tools/fuzz.sh
+	@FUZZ_TIME=$(FUZZ_TIME) FUZZ_TARGETS="$(FUZZ_TARGETS)" sh tools/fuzz.sh
 
 # ---- the main job ----
 demo: deps
