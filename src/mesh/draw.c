@@ -155,21 +155,32 @@ mesh_source *mesh_source_make(const mesh_file *m, const char *path, char *err, s
     for (int f = 0; f < m->nf; f++) nt += m->face_first[f + 1] - m->face_first[f] - 2;
     mesh_source *ms = calloc(1, sizeof *ms);
     shape_source *src = ms ? &ms->src : NULL;
-    vec3 *fn = malloc((size_t)(m->nf + 1) * sizeof *fn);
+    vec3 *fn = malloc((size_t)(m->nf + 1) * sizeof *fn);       /* face -> unit normal */
     int *first = calloc((size_t)m->nv + 1, sizeof *first);  /* vertex -> its corners */
     int *at = malloc((size_t)(nc + 1) * sizeof *at);
     int *face = malloc((size_t)(nc + 1) * sizeof *face);      /* corner -> face */
     int *dv = malloc((size_t)(nc + 1) * sizeof *dv);          /* corner -> mesh vertex */
+    float *ang = malloc((size_t)(nc + 1) * sizeof *ang);      /* corner -> its angle */
     mesh *d = src ? &src->draw : NULL;
-    if (!src || !(ms->path = strdup(path)) || !fn || !first || !at || !face || !dv || nt > 2147483647L) goto oom;
+    int cap = m->nv + m->nv / 4 + 16, nd = 0;
+    if (!src || !(ms->path = strdup(path)) || !fn || !first || !at || !face || !dv || !ang ||
+        nt > 2147483647L)
+        goto oom;
     src->release = mesh_source_release;
     src->np = m->nv;
     src->pts = malloc((size_t)m->nv * sizeof *src->pts);
-    if (!src->pts) goto oom;
+    d->pos = malloc((size_t)cap * sizeof *d->pos);
+    d->nrm = malloc((size_t)cap * sizeof *d->nrm);
+    if (!src->pts || !d->pos || !d->nrm) goto oom;
     memcpy(src->pts, m->v, (size_t)m->nv * sizeof *src->pts);
     for (int f = 0; f < m->nf; f++) {
-        fn[f] = newell(m, f);
-        for (int k = m->face_first[f]; k < m->face_first[f + 1]; k++) face[k] = f;
+        vec3 n = newell(m, f);
+        double l = v3_len(n);
+        fn[f] = isfinite(l) && l > 0 ? v3_scale(n, 1 / l) : v3(0, 0, 0);
+        for (int k = m->face_first[f]; k < m->face_first[f + 1]; k++) {
+            face[k] = f;
+            ang[k] = (float)corner_angle(m, f, k);
+        }
     }
     for (long c = 0; c < nc; c++) first[m->corner[c] + 1]++;
     for (int v = 0; v < m->nv; v++) first[v + 1] += first[v];
@@ -178,34 +189,36 @@ mesh_source *mesh_source_make(const mesh_file *m, const char *path, char *err, s
     for (int v = 0; v < m->nv; v++) first[v] = first[v + 1];
     first[m->nv] = (int)nc;
     /* the corners' normals, and the mesh's vertices */
-    d->pos = malloc((size_t)(nc + 1) * sizeof *d->pos);
-    d->nrm = malloc((size_t)(nc + 1) * sizeof *d->nrm);
-    if (!d->pos || !d->nrm) goto oom;
-    int nd = 0;
     for (int v = 0; v < m->nv; v++) {
         int lo = first[v], hi = first[v + 1], start = nd;
         for (int k = lo; k < hi; k++) {
-            int c = at[k], f = face[c];
-            vec3 n = file_normal(m, c);
+            int c = at[k];
+            vec3 own = fn[face[c]], n = file_normal(m, c);
             if (v3_len2(n) == 0) {
-                vec3 own = v3_norm(fn[f]);
-                if (!(v3_len(fn[f]) > 0) || hi - lo > FAN_MAX) {
-                    n = fn[f];
+                if (v3_len2(own) == 0 || hi - lo > FAN_MAX) {
+                    n = own;
                 } else {
                     for (int j = lo; j < hi; j++) {
                         vec3 g = fn[face[at[j]]];
-                        double l = v3_len(g);
-                        if (l > 0 && v3_dot(g, own) >= CREASE_COS * l)
-                            n = v3_add(n, v3_scale(g, corner_angle(m, face[at[j]], at[j]) / l));
+                        if (v3_dot(g, own) >= CREASE_COS) n = v3_add(n, v3_scale(g, ang[at[j]]));
                     }
                 }
                 double l = v3_len(n);
-                n = isfinite(l) && l > 0 ? v3_scale(n, 1 / l) : v3(0, 0, 1);
+                n = isfinite(l) && l > 0 ? v3_scale(n, 1 / l) : own;
+                if (v3_len2(n) == 0) n = v3(0, 0, 1);
             }
             int same = -1;
             for (int e = nd - start > FAN_MAX ? nd - FAN_MAX : start; e < nd && same < 0; e++)
                 if (d->nrm[e].x == n.x && d->nrm[e].y == n.y && d->nrm[e].z == n.z) same = e;
             if (same < 0) {
+                if (nd == cap) {
+                    cap = cap > 1073741823 ? 2147483647 : 2 * cap;
+                    vec3 *p = realloc(d->pos, (size_t)cap * sizeof *p);
+                    if (p) d->pos = p;
+                    vec3 *q = p ? realloc(d->nrm, (size_t)cap * sizeof *q) : NULL;
+                    if (q) d->nrm = q;
+                    if (!p || !q) goto oom;
+                }
                 d->pos[nd] = m->v[v];
                 d->nrm[nd] = n;
                 same = nd++;
@@ -217,7 +230,9 @@ mesh_source *mesh_source_make(const mesh_file *m, const char *path, char *err, s
     free(first);
     free(at);
     free(face);
+    free(ang);
     first = at = face = NULL;
+    ang = NULL;
     vec3 *shrunk = realloc(d->pos, (size_t)(nd + 1) * sizeof *shrunk);
     if (shrunk) d->pos = shrunk;
     shrunk = realloc(d->nrm, (size_t)(nd + 1) * sizeof *shrunk);
@@ -270,6 +285,7 @@ oom:
     free(at);
     free(face);
     free(dv);
+    free(ang);
     if (src) mesh_source_release(src);
     return NULL;
 }
