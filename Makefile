@@ -218,6 +218,7 @@ build/bench/bullet_gas: bench/bullet_gas.cpp
 	    $(shell pkg-config --libs bullet)
 
 bench: deps
+	@sh tools/deps.sh bench
 	@$(MAKE) --no-print-directory vroc $(addprefix build/bench/,$(BENCHES)) $(BULLET)
 	@sh bench/run.sh
 
