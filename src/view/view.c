@@ -356,7 +356,8 @@ static void view_draw_solid(const body *b)
 
 /* The body's edges, unlit, front and back: those of the collision polyhedron (the
  * real edges of a box, without the triangulation's diagonals), or the mesh's for a
- * sphere.  Lighting and culling must be off. */
+ * sphere and for a polyhedron from a file (its own faces, not its hull).  Lighting
+ * and culling must be off. */
 static void view_draw_wire(const body *b)
 {
     const poly *p = b->shape.hull;
@@ -365,7 +366,7 @@ static void view_draw_wire(const body *b)
     glPushMatrix();
     glMultMatrixd(model);
     view_color(b);
-    if (p && p->ne > 0) {
+    if (p && p->ne > 0 && b->sp.kind != SHAPE_POLYHEDRON) {
         glBegin(GL_LINES);
         for (int i = 0; i < p->ne; i++) {
             vec3 a = p->v[p->e[i].v[0]], c = p->v[p->e[i].v[1]];
