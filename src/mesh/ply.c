@@ -220,20 +220,28 @@ static int err_here(ply_reader *r, const char *msg, const char *what, long long 
     return mb_err_byte(r->b, (size_t)(r->pos - r->data), "%s %lld: %s", what, i, msg);
 }
 
+/* The place of e's single value named name (the last such), or -1. */
+static int value_index(const ply_element *e, const char *name)
+{
+    int at = -1;
+    for (int k = 0; k < e->np; k++)
+        if (!e->p[k].count && strcmp(e->p[k].name, name) == 0) at = k;
+    return at;
+}
+
 static int read_element(ply_reader *r, const ply_element *e, bool vertex, bool face)
 {
     mesh_builder *b = r->b;
-    int xyz[3] = {-1, -1, -1}, nxyz[3] = {-1, -1, -1}, list = -1;
+    int xyz[3], nxyz[3], list = -1;
     static const char *axes[3] = {"x", "y", "z"}, *naxes[3] = {"nx", "ny", "nz"};
-    for (int k = 0; k < e->np; k++) {
-        for (int a = 0; a < 3; a++) {
-            if (!e->p[k].count && strcmp(e->p[k].name, axes[a]) == 0) xyz[a] = k;
-            if (!e->p[k].count && strcmp(e->p[k].name, naxes[a]) == 0) nxyz[a] = k;
-        }
+    for (int a = 0; a < 3; a++) {
+        xyz[a] = value_index(e, axes[a]);
+        nxyz[a] = value_index(e, naxes[a]);
+    }
+    for (int k = 0; k < e->np; k++)
         if (e->p[k].count && (strcmp(e->p[k].name, "vertex_indices") == 0 ||
                               strcmp(e->p[k].name, "vertex_index") == 0))
             list = k;
-    }
     if (vertex && (xyz[0] < 0 || xyz[1] < 0 || xyz[2] < 0))
         return mb_err(b, "the vertex element has no x, y and z");
     if (face && list < 0)
@@ -292,13 +300,8 @@ static int read_data(ply_reader *r, const ply_element *el, int nel)
     }
     if (iv < 0) return mb_err(b, "it has no vertex element");
     r->nv = el[iv].count;
-    int have = 0;
-    for (int k = 0; k < el[iv].np; k++)
-        if (!el[iv].p[k].count && (strcmp(el[iv].p[k].name, "nx") == 0 ||
-                                   strcmp(el[iv].p[k].name, "ny") == 0 ||
-                                   strcmp(el[iv].p[k].name, "nz") == 0))
-            have++;
-    r->normals = have == 3;
+    r->normals = value_index(&el[iv], "nx") >= 0 && value_index(&el[iv], "ny") >= 0 &&
+                 value_index(&el[iv], "nz") >= 0;
     if (r->format == 0) r->c.p = r->c.eol = r->c.next; /* the text goes on after end_header */
     for (int i = 0; i < nel; i++)
         if (read_element(r, &el[i], i == iv, i == iface) != 0) return -1;
