@@ -30,17 +30,6 @@
 #include "core/shape.h"
 #include "mesh/meshfile.h"
 
-static double peak_rss_mb(void)
-{
-    FILE *f = fopen("/proc/self/status", "r");
-    char line[256];
-    double kb = 0;
-    while (f && fgets(line, sizeof line, f))
-        if (sscanf(line, "VmHWM: %lf kB", &kb) == 1) break;
-    if (f) fclose(f);
-    return kb / 1024;
-}
-
 /* Point (i, j) of an nu x nv grid on a torus of radii 1 and 0.35, in float32. */
 static void torus(int i, int j, int nu, int nv, float out[3])
 {

@@ -91,28 +91,29 @@ static int where(const int *perm, int k)
     return -1;
 }
 
-static void box_obj(buf *b)
+/* The box as text: its corners in the order p, one a line after vprefix, then
+ * its faces, one a line after fprefix, their indices counted from base. */
+static void box_text(buf *b, const int *p, const char *vprefix, const char *fprefix, int base)
 {
-    const int *p = ORDER[1];
-    putf(b, "# a box\no box\n");
-    for (int i = 0; i < 8; i++) putf(b, "v %.9g %.9g %.9g\n", corner(p[i]).x, corner(p[i]).y, corner(p[i]).z);
+    for (int i = 0; i < 8; i++)
+        putf(b, "%s%.9g %.9g %.9g\n", vprefix, corner(p[i]).x, corner(p[i]).y, corner(p[i]).z);
     for (int f = 0; f < 6; f++) {
-        putf(b, "f");
-        for (int k = 0; k < 4; k++) putf(b, " %d", where(p, QUADS[f][k]) + 1);
+        putf(b, "%s", fprefix);
+        for (int k = 0; k < 4; k++) putf(b, " %d", where(p, QUADS[f][k]) + base);
         putf(b, "\n");
     }
 }
 
+static void box_obj(buf *b)
+{
+    putf(b, "# a box\no box\n");
+    box_text(b, ORDER[1], "v ", "f", 1);
+}
+
 static void box_off(buf *b)
 {
-    const int *p = ORDER[2];
     putf(b, "OFF\n# a box\n8 6 12\n");
-    for (int i = 0; i < 8; i++) putf(b, "%.9g %.9g %.9g\n", corner(p[i]).x, corner(p[i]).y, corner(p[i]).z);
-    for (int f = 0; f < 6; f++) {
-        putf(b, "4");
-        for (int k = 0; k < 4; k++) putf(b, " %d", where(p, QUADS[f][k]));
-        putf(b, "\n");
-    }
+    box_text(b, ORDER[2], "", "4", 0);
 }
 
 /* The twelve triangles of the box, in the file's order. */
@@ -176,12 +177,12 @@ static void box_ply(buf *b, int format, bool other_names)
     putf(b, "element face 6\nproperty list %s %s %s\nend_header\n",
          other_names ? "ushort" : "uchar", other_names ? "uint" : "int",
          other_names ? "vertex_index" : "vertex_indices");
+    if (format == 0) {
+        box_text(b, p, "", "4", 0);
+        return;
+    }
     for (int i = 0; i < 8; i++) {
         vec3 v = corner(p[i]);
-        if (format == 0) {
-            putf(b, "%.9g %.9g %.9g\n", v.x, v.y, v.z);
-            continue;
-        }
         put_f32(b, v.x, big);
         put_f32(b, v.y, big);
         if (other_names) { /* z as a double */
@@ -195,12 +196,6 @@ static void box_ply(buf *b, int format, bool other_names)
         }
     }
     for (int f = 0; f < 6; f++) {
-        if (format == 0) {
-            putf(b, "4");
-            for (int k = 0; k < 4; k++) putf(b, " %d", where(p, QUADS[f][k]));
-            putf(b, "\n");
-            continue;
-        }
         if (other_names) {
             unsigned char n[2] = {big ? 0 : 4, big ? 4 : 0};
             put(b, n, 2);

@@ -203,11 +203,18 @@ static mesh_source *load_file(const char *path, char *err, size_t errlen)
     return src;
 }
 
-cmd_status cmd_file(shell *sh, const stmt *st)
+/* The polyhedron statement st applies to: its index, or -1 (an error, reported)
+ * or -2 (not a polyhedron: ignored with a warning). */
+static int polyhedron_target(shell *sh, const stmt *st)
 {
     int i = target(sh, st);
-    if (i < 0) return CMD_ERROR;
-    if (!applies(sh, st, i)) return CMD_OK;
+    return i < 0 ? -1 : applies(sh, st, i) ? i : -2;
+}
+
+cmd_status cmd_file(shell *sh, const stmt *st)
+{
+    int i = polyhedron_target(sh, st);
+    if (i < 0) return i == -1 ? CMD_ERROR : CMD_OK;
     char err[1024];
     mesh_source *src = load_file(st->word, err, sizeof err);
     if (!src) {
@@ -232,9 +239,8 @@ cmd_status cmd_file(shell *sh, const stmt *st)
 
 cmd_status cmd_pieces(shell *sh, const stmt *st)
 {
-    int i = target(sh, st);
-    if (i < 0) return CMD_ERROR;
-    if (!applies(sh, st, i)) return CMD_OK;
+    int i = polyhedron_target(sh, st);
+    if (i < 0) return i == -1 ? CMD_ERROR : CMD_OK;
     const body *b = sh->w.bodies[i];
     if ((int)st->num[0] != b->shape.pieces) {
         sh_error(sh, st, "pieces is read only: '%s' collides as %d convex piece%s (got %d)",
@@ -246,9 +252,8 @@ cmd_status cmd_pieces(shell *sh, const stmt *st)
 
 cmd_status cmd_sha256(shell *sh, const stmt *st)
 {
-    int i = target(sh, st);
-    if (i < 0) return CMD_ERROR;
-    if (!applies(sh, st, i)) return CMD_OK;
+    int i = polyhedron_target(sh, st);
+    if (i < 0) return i == -1 ? CMD_ERROR : CMD_OK;
     const body *b = sh->w.bodies[i];
     const mesh_source *src = mesh_source_of(b->sp.src);
     if (!src) {
