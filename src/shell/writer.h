@@ -30,6 +30,17 @@ void hand_write(FILE *out, const struct shell *sh);
  * angular_momentum), so that it reads back to the bit. */
 void body_write(FILE *out, const body *b);
 
+/* body_write for `save` into the file save_path (NULL: for print): a
+ * polyhedron's file is written relative to save_path's folder when it lies under
+ * it, else as an absolute path; print also writes the pieces it collides as and
+ * its centre of mass (a comment). */
+void body_write_for(FILE *out, const body *b, const char *save_path);
+
+/* The path of path as a saved file at save_path names it: relative to save_path's
+ * folder when path lies under it (both taken through realpath), else absolute.
+ * (Issue 31 writes one such helper for every path save writes.) */
+void writer_path(const char *path, const char *save_path, char *out, size_t outlen);
+
 /* Writes the contact state of body i of w (language.md, "Exact state"): its mode,
  * with its slide's support and face, whether it rests, and the objects it is in
  * lasting contact with (each pair once, on its later object, when only_later). */
