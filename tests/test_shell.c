@@ -132,7 +132,7 @@ static void the_bad_input_catalogue(void **state)
     write_file("long.vroc", big, strlen(big));
     path_in_dir(path, sizeof path, "long.vroc");
     snprintf(text, sizeof text, "read \"%s\"\n", path);
-    bad(text, "long.vroc:2: error: radius: expected a number, got '7777");
+    bad(text, "long.vroc:2: error: radius must be a finite number (got '7777");
     free(big);
     path_in_dir(path, sizeof path, "late-typo.vroc");
     write_file("late-typo.vroc", "sphere early\nradius = 9\n\n\n\nradius = 9\nradiuss = 1\n", 46);

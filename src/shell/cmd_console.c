@@ -12,6 +12,7 @@
 #include "outfile.h"
 #include "shell.h"
 #include "shell/help.h"
+#include "suggest.h"
 #include "writer.h"
 
 cmd_status cmd_run(shell *sh, const stmt *st)
@@ -190,7 +191,12 @@ cmd_status cmd_help(shell *sh, const stmt *st)
     }
     const help_entry *h = help_find(st->word);
     if (!h) {
-        sh_error(sh, st, "help: no command named '%s' (help lists them all)", st->word);
+        suggestion sg;
+        char hint[96];
+        suggest_init(&sg, st->word);
+        suggest_offer_commands(&sg, ~0u);
+        sh_error(sh, st, "help: no command named '%s'%s (help lists them all)", st->word,
+                 suggest_text(&sg, hint, sizeof hint));
         return CMD_ERROR;
     }
     fprintf(sh->out, "usage: %s\n  %s\n\n%s\n", h->usage, h->summary, h->description);

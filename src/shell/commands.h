@@ -56,9 +56,13 @@ typedef enum {
  * R_NONZERO_VEC: the vector is a direction, at least LIM_DIR_MIN long (with
  * VAL_VECTOR_ANGLE, (0, 0, 0) is accepted when the number after it is 0).
  * Every numeric command has R_RANGE, with limits from core/limits.h, under which
- * the simulation stays finite; tests/test_limits.c walks them. */
+ * the simulation stays finite; tests/test_limits.c walks them.  Units, for the
+ * postfix `deg` of expressions (expr.h): R_RADIANS, the value is an angle or a
+ * rate in radians (with VAL_VECTOR_ANGLE: the number after the vector), so deg
+ * may convert degrees to it; R_DEGREES, the value is in degrees already (fov);
+ * anywhere else deg is an error. */
 enum { R_LO_OPEN = 1, R_HI_OPEN = 2, R_NONZERO = 4, R_NONZERO_VEC = 8, R_RANGE = 16,
-       R_ZERO = 32, R_ABS = 64 };
+       R_ZERO = 32, R_ABS = 64, R_RADIANS = 128, R_DEGREES = 256 };
 
 /* shape classes a property applies to */
 enum { C_SPHERE = 1 << SHAPE_SPHERE, C_CUBE = 1 << SHAPE_CUBE, C_SQ = 1 << SHAPE_SUPERQUADRIC,
