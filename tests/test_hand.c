@@ -266,8 +266,12 @@ static char *snapshot(shell *sh)
     char *text;
     size_t len;
     FILE *f = open_memstream(&text, &len);
+    int shown = sh->set.precision; /* every setting to the bit, and then put back */
+    sh->set.precision = FMT_EXACT;
     settings_write(f, sh, 0);
-    for (int i = 0; i < sh->w.n; i++) body_write(f, sh->w.bodies[i]);
+    sh->set.precision = shown;
+    fprintf(f, "precision %d\n", shown);
+    for (int i = 0; i < sh->w.n; i++) body_write(f, sh->w.bodies[i], (write_style){FMT_EXACT, false});
     fclose(f);
     return text;
 }

@@ -34,8 +34,12 @@ static char *snapshot(void)
     char *text;
     size_t len;
     FILE *f = open_memstream(&text, &len);
+    int shown = g_sh.set.precision; /* every setting to the bit, and then put back */
+    g_sh.set.precision = FMT_EXACT;
     settings_write(f, &g_sh, 0);
-    for (int i = 0; i < g_sh.w.n; i++) body_write(f, g_sh.w.bodies[i]);
+    g_sh.set.precision = shown;
+    fprintf(f, "precision %d\n", shown);
+    for (int i = 0; i < g_sh.w.n; i++) body_write(f, g_sh.w.bodies[i], (write_style){FMT_EXACT, false});
     fprintf(f, "current %d time %.17g frame %ld\n", g_sh.current, g_sh.w.time, g_sh.w.frame);
     fclose(f);
     return text;

@@ -24,7 +24,7 @@ cmd_status cmd_time(shell *sh, const stmt *st)
 {
     (void)st;
     char a[32];
-    fprintf(sh->out, "time = %s\n", fmt_num(a, sh->w.time));
+    fprintf(sh->out, "time = %s\n", fmt_shown(a, sh->w.time, shell_shown(sh)));
     return CMD_OK;
 }
 
@@ -35,7 +35,18 @@ cmd_status cmd_print(shell *sh, const stmt *st)
         sh_error(sh, st, "no object named '%s'", st->word);
         return CMD_ERROR;
     }
-    body_write(sh->out, sh->w.bodies[i]);
+    const body *b = sh->w.bodies[i];
+    if (st->word2) { /* print NAME.property */
+        const command *c = command_find(st->word2);
+        if (!(c->classes & (1u << b->sp.kind))) {
+            sh_error(sh, st, "print: %s does not apply to %s '%s'", c->name,
+                     body_type_name(b->sp.kind), b->name);
+            return CMD_ERROR;
+        }
+        property_write(sh->out, &sh->w, i, c, shell_shown(sh));
+        return CMD_OK;
+    }
+    body_write(sh->out, b, (write_style){shell_shown(sh), true});
     contact_write(sh->out, &sh->w, i, 0);
     return CMD_OK;
 }
@@ -52,9 +63,27 @@ cmd_status cmd_list(shell *sh, const stmt *st)
 
 cmd_status cmd_show(shell *sh, const stmt *st)
 {
-    (void)st;
-    settings_write(sh->out, sh, 0);
-    return CMD_OK;
+    if (!st->word) {
+        settings_write(sh->out, sh, 0);
+        return CMD_OK;
+    }
+    const command *c = command_find(st->word);
+    if (c && (c->form == FORM_SETTING || c->run == cmd_select)) {
+        setting_write(sh->out, sh, c);
+        return CMD_OK;
+    }
+    if (c && c->form == FORM_PROPERTY) {
+        sh_error(sh, st, "show: %s is a property of objects: print NAME.%s shows it", c->name,
+                 c->name);
+        return CMD_ERROR;
+    }
+    suggestion sg;
+    char hint[96];
+    suggest_init(&sg, st->word);
+    suggest_offer_commands(&sg, 1u << FORM_SETTING);
+    sh_error(sh, st, "show: '%s' is not a setting%s (show lists them all)", st->word,
+             suggest_text(&sg, hint, sizeof hint));
+    return CMD_ERROR;
 }
 
 cmd_status cmd_save(shell *sh, const stmt *st)
@@ -76,7 +105,7 @@ cmd_status cmd_save(shell *sh, const stmt *st)
     settings_write(f, sh, 1);
     fprintf(f, "\n# objects\n");
     for (int i = 0; i < sh->w.n; i++) {
-        body_write(f, sh->w.bodies[i]);
+        body_write(f, sh->w.bodies[i], (write_style){FMT_EXACT, false});
         fputc('\n', f);
     }
     /* the contact state: placing an object ends its lasting contacts */
@@ -125,12 +154,13 @@ cmd_status cmd_distance(shell *sh, const stmt *st)
         return CMD_ERROR;
     }
     char a[32], fa[48], fb[48];
-    fprintf(sh->out, "distance = %s\npoint_A = ", fmt_num(a, r.distance));
-    writer_vec(sh->out, r.pa);
+    fmt_style s = shell_shown(sh);
+    fprintf(sh->out, "distance = %s\npoint_A = ", fmt_shown(a, r.distance, s));
+    writer_vec(sh->out, r.pa, s);
     fprintf(sh->out, "\npoint_B = ");
-    writer_vec(sh->out, r.pb);
+    writer_vec(sh->out, r.pb, s);
     fprintf(sh->out, "\nnormal = ");
-    writer_vec(sh->out, r.normal);
+    writer_vec(sh->out, r.normal, s);
     fprintf(sh->out, "\nfeature_A = %s\nfeature_B = %s\n", feature_name(r.fa, fa),
             feature_name(r.fb, fb));
     return CMD_OK;
@@ -147,7 +177,7 @@ cmd_status cmd_stats(shell *sh, const stmt *st)
     fprintf(sh->out, "frames = %ld\n", w->st.frames);
     fprintf(sh->out, "pair_checks = %ld\n", w->st.pair_checks);
     fprintf(sh->out, "collisions = %ld\n", w->st.collisions);
-    fprintf(sh->out, "sim_time = %s\n", fmt_num(a, w->time));
+    fprintf(sh->out, "sim_time = %s\n", fmt_shown(a, w->time, shell_shown(sh)));
     fprintf(sh->out, "wall_time = %.6f\n", sh->wall_time);
     fprintf(sh->out, "internal_steps = %ld\n", w->st.subframes);
     fprintf(sh->out, "heap_pops = %ld\n", w->st.heap_pops);

@@ -33,6 +33,8 @@ typedef enum {
     ARG_FILE,         /* a file name: bare word or "string" */
     ARG_COUNT,        /* an integer >= 0 */
     ARG_OPT_ONOFF,    /* optional on or off (select) */
+    ARG_NAME_DOT,     /* an object name, or NAME.property (print) */
+    ARG_SETTING,      /* an optional setting name (show) */
     VAL_NUMBER,       /* one number */
     VAL_INTEGER,      /* one integer */
     VAL_VECTOR,       /* (x, y, z) */
@@ -82,7 +84,8 @@ typedef struct command {
     unsigned range;      /* R_ flags; R_RANGE: check lo and hi */
     double lo, hi;
     const char *choices; /* VAL_CHOICE: "pair|sbs|anaglyph|mono"; ARG_NAME: words
-                          * allowed besides names (completion offers them) */
+                          * allowed besides names; VAL_FILE: besides files
+                          * (completion offers them) */
     unsigned classes;    /* FORM_PROPERTY: the C_ classes it applies to */
     setting_owner owner; /* FORM_SETTING: whose settings hold its field */
     size_t off;          /* FORM_PROPERTY: offset of its field in body (edit.h);

@@ -428,6 +428,39 @@ static int parse_numbers(stmt *st, const token *t, int nt, const where *at)
     return rc;
 }
 
+/* An object property's name: the command c names (NULL and a message, with the
+ * nearest name, when it is none). */
+static const command *find_property(const char *name, const where *at)
+{
+    const command *c = command_find(name);
+    if (c && c->form == FORM_PROPERTY) return c;
+    suggestion sg;
+    char hint[96];
+    suggest_init(&sg, name);
+    suggest_offer_commands(&sg, 1u << FORM_PROPERTY);
+    perr(at, "'%s' is not an object property%s (help lists them all)", name,
+         suggest_text(&sg, hint, sizeof hint));
+    return NULL;
+}
+
+/* NAME or NAME.property at t[i]: the name into st->word, the property's into
+ * st->word2. */
+static int get_name_dot(const token *t, int nt, int i, const command *c, stmt *st, const where *at)
+{
+    char *dot = i < nt && t[i].k == T_WORD ? memchr(t[i].s, '.', t[i].len) : NULL;
+    if (!dot) return get_name(t, nt, i, c, &st->word, at);
+    token name = t[i], prop = t[i];
+    name.len = (size_t)(dot - t[i].s);
+    prop.s = dot + 1;
+    prop.len = t[i].len - name.len - 1;
+    if (get_name(&name, 1, 0, c, &st->word, at) != 0) return -1;
+    if (!(st->word2 = tok_dup(&prop))) {
+        perr(at, "out of memory");
+        return -1;
+    }
+    return find_property(st->word2, at) ? 0 : -1;
+}
+
 /* Converts the tokens after the command word (actions) or after '=' into st. */
 static int parse_value(stmt *st, const token *t, int nt, const where *at)
 {
@@ -447,10 +480,17 @@ static int parse_value(stmt *st, const token *t, int nt, const where *at)
         i++;
         break;
     case ARG_OPT_WORD:
+    case ARG_SETTING:
         if (i < nt) {
-            if (get_word(t, nt, i, c, "a command name", &st->word, at) != 0) return -1;
+            if (get_word(t, nt, i, c, c->arg == ARG_SETTING ? "a setting's name" : "a command name",
+                         &st->word, at) != 0)
+                return -1;
             i++;
         }
+        break;
+    case ARG_NAME_DOT:
+        if (get_name_dot(t, nt, i, c, st, at) != 0) return -1;
+        i++;
         break;
     case ARG_FILE:
     case VAL_FILE:
@@ -580,16 +620,8 @@ static int parse_stmt(stmt *st, const token *t, int nt, const where *at)
             perr(at, "'%s' is not a valid object name", head);
             return -1;
         }
-        c = command_find(dot + 1);
-        if (!c || c->form != FORM_PROPERTY) {
-            suggestion sg;
-            char hint[96];
-            suggest_init(&sg, dot + 1);
-            suggest_offer_commands(&sg, 1u << FORM_PROPERTY);
-            perr(at, "'%s' is not an object property%s (help lists them all)", dot + 1,
-                 suggest_text(&sg, hint, sizeof hint));
-            return -1;
-        }
+        c = find_property(dot + 1, at);
+        if (!c) return -1;
         st->object = strdup(head);
         if (!st->object) {
             perr(at, "out of memory");

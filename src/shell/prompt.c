@@ -159,7 +159,7 @@ static int loop_readline(shell *sh)
             if (sh->running) {
                 char a[32];
                 sh->running = false;
-                fprintf(sh->out, "\nstopped at time = %s\n", fmt_num(a, sh->w.time));
+                fprintf(sh->out, "\nstopped at time = %s\n", fmt_shown(a, sh->w.time, shell_shown(sh)));
             } else {
                 fputc('\n', sh->out);
             }

@@ -31,8 +31,11 @@ shell_settings shell_settings_defaults(void)
     s.random_size[0] = 0.08;
     s.random_size[1] = 0.2;
     s.seed = 1;
+    s.precision = FMT_SHORT;
     return s;
 }
+
+fmt_style shell_shown(const shell *sh) { return (fmt_style)sh->set.precision; }
 
 double shell_clock(void)
 {
@@ -316,7 +319,7 @@ cmd_status shell_advance(shell *sh, const stmt *st, long n)
         if (shell_interrupted) {
             shell_interrupted = 0;
             char a[32];
-            sh_info(sh, "interrupted at time = %s", fmt_num(a, sh->w.time));
+            sh_info(sh, "interrupted at time = %s", fmt_shown(a, sh->w.time, shell_shown(sh)));
             break;
         }
         /* the hand acts at its rows' instants within the frame (hand.h) */

@@ -17,6 +17,7 @@
 #include <stdio.h>
 
 #include "commands.h"
+#include "fmt.h"
 #include "core/world.h"
 #include "hand/hand.h"
 #include "lang.h"
@@ -33,9 +34,11 @@ typedef struct {
     double random_size[2];  /* the least and the most of each random object's largest
                              * half-extent (a sphere's radius) */
     unsigned long seed;     /* of random's sequence */
+    int precision;          /* how numbers are shown to a person (fmt_style) */
 } shell_settings;
 
-/* The start-up values: random_box (2, 2, 2), random_size (0.08, 0.2), seed 1. */
+/* The start-up values: random_box (2, 2, 2), random_size (0.08, 0.2), seed 1,
+ * precision short. */
 shell_settings shell_settings_defaults(void);
 
 typedef struct shell {
@@ -143,6 +146,9 @@ void shell_overlay(shell *sh);
 /* The address of setting c's field (a FORM_SETTING) in its owner's settings. */
 void *shell_setting_field(shell *sh, const command *c);
 const void *shell_setting_value(const shell *sh, const command *c);
+
+/* How numbers are shown to a person now (`precision`). */
+fmt_style shell_shown(const shell *sh);
 
 /* How many numbers the random sequence has drawn since seed was set (what
  * random_draws restores). */

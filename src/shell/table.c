@@ -119,7 +119,9 @@ const command command_table[] = {
     SIM_A("force", R_NONZERO_VEC | R_RANGE, -POS, POS, force,
           "magnitude", -LIM_ACCEL_MAX, LIM_ACCEL_MAX),
     ACT("gravity", ARG_NONE, cmd_gravity),
-    SOUNDF("collision_sound", VAL_FILE, 0, 0, 0, collision_sound, cmd_collision_sound),
+    /* (its built-in words, which completion offers before file names) */
+    {"collision_sound", FORM_SETTING, VAL_FILE, 0, 0, 0, "click|knock|bell|off", 0, OWN_SOUND,
+     offsetof(sound_settings, collision_sound), cmd_collision_sound, NO_AFTER},
     SOUND("collision_vol", VAL_NUMBER, R_RANGE, 0, LIM_LOUD_MAX, collision_vol),
     /* console */
     COUNT("run", cmd_run),
@@ -128,8 +130,10 @@ const command command_table[] = {
     OTHER_R("frame", VAL_INTEGER, 0, LIM_FRAMES_MAX, cmd_frame),
     ACT("hash", ARG_NONE, cmd_hash),
     ACT("list", ARG_NONE, cmd_list),
-    ACT("print", ARG_NAME, cmd_print),
-    ACT("show", ARG_NONE, cmd_show),
+    ACT("print", ARG_NAME_DOT, cmd_print),
+    ACT("show", ARG_SETTING, cmd_show),
+    {"precision", FORM_SETTING, VAL_CHOICE, 0, 0, 0, "short|exact", 0, OWN_SHELL,
+     offsetof(shell_settings, precision), cmd_setting, NO_AFTER},
     ACT("save", ARG_FILE, cmd_save),
     ACT("distance", ARG_NAME2, cmd_distance),
     ACT("stats", ARG_NONE, cmd_stats),

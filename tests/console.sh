@@ -1,0 +1,85 @@
+#!/bin/sh
+# console.sh: the console beyond the thesis, in batch (language.md, "The console
+# beyond the thesis"): arithmetic in values, show NAME and print OBJ.PROPERTY,
+# "did you mean", clean numbers and precision.  The prompt's side is in
+# console_prompt.sh.
+. "$(dirname "$0")/lib.sh"
+cd "$TMP" || exit 1
+
+# has TEXT OUTPUT LINE...: every LINE is a whole line of OUTPUT
+has() {
+    desc=$1 out=$2
+    shift 2
+    for l in "$@"; do
+        printf '%s\n' "$out" | grep -qxF -- "$l" || { notok "$desc" "missing: $l" "$out"; return; }
+    done
+    ok "$desc"
+}
+# lacks TEXT OUTPUT PATTERN: no line of OUTPUT matches the regular expression
+lacks() {
+    if printf '%s\n' "$2" | grep -q -- "$3"; then notok "$1" "$(printf '%s\n' "$2" | grep -- "$3")"; else ok "$1"; fi
+}
+
+# ---- arithmetic in values
+out=$("$VROC" -b -q -c 'sphere b; radius = 1/4; rotate = (0, 0, 1) pi/2; angular_vel = (0, 0, 2*90 deg); precision = exact; print b.radius; print b.rotate; print b.angular_vel' 2>&1)
+has "values may be expressions, and deg converts to radians" "$out" \
+    "b.radius = 0.25" "b.rotate = (0, 0, 1) 1.5707963267948966" "b.angular_vel = (0, 0, 3.141592653589793)"
+"$VROC" -b -q -c "sphere b; radius = 1/3; translate = (sqrt(2), -2^2, min(1, 2)); save $TMP/x.vroc" 2>&1
+has "save writes plain numbers" "$(cat x.vroc)" "radius = 0.3333333333333333" "translate = (1.4142135623730951, -4, 1)"
+printf 'sphere b\n\nradius = 2*(1 + 3\n' > bad.vroc
+out=$("$VROC" -b bad.vroc 2>&1); status=$?
+has "an error in an expression names file:line and points at the column (status $status)" "$out" \
+    "bad.vroc:3: error: radius: this '(' is not closed" "    radius = 2*(1 + 3" "               ^"
+[ $status -eq 1 ] && ok "a batch run stops at it with status 1" || notok "a batch run stops at it with status 1" "$status"
+expect "fov is in degrees: deg is refused" 1 "fov is in degrees already" "$VROC" -b -c 'fov = 60 deg'
+
+# ---- did you mean, and exit
+expect "an unknown command suggests the nearest" 1 \
+    "error: unknown command 'radus': did you mean radius? (help lists them all)" "$VROC" -b -c 'sphere a; radus = 1'
+expect "an unknown property suggests the nearest" 1 \
+    "error: 'colr' is not an object property: did you mean color? (help lists them all)" "$VROC" -b -c 'sphere a; a.colr = (1, 2, 3)'
+expect "a word far from every name suggests nothing" 1 \
+    "error: unknown command 'frobnicate' (help lists them all)" "$VROC" -b -c 'frobnicate'
+expect "help of a typo suggests too" 1 "did you mean rotate?" "$VROC" -b -c 'help rotat'
+out=$(printf 'sphere a\nexit\nprint a\n' | "$VROC" 2>&1); status=$?
+[ $status -eq 0 ] && [ -z "$out" ] && ok "exit quits as quit does" || notok "exit quits as quit does" "$status $out"
+
+# ---- queries
+out=$("$VROC" -b -q -c 'time_step = 0.05; show time_step; show select; sphere b; print b.translate' 2>&1)
+[ "$out" = "time_step = 0.05
+select off
+b.translate = (0, 0, 0)" ] && ok "show NAME and print OBJ.PROPERTY print one line each" ||
+    notok "show NAME and print OBJ.PROPERTY print one line each" "$out"
+expect "show of a property says how to see it" 1 "show: radius is a property of objects: print NAME.radius" \
+    "$VROC" -b -c 'show radius'
+expect "show of a typo suggests a setting" 1 "show: 'time_stpe' is not a setting: did you mean time_step?" \
+    "$VROC" -b -c 'show time_stpe'
+expect "print of a property of another type is an error" 1 "print: radius does not apply to cube 'c'" \
+    "$VROC" -b -c 'cube c; print c.radius'
+out=$("$VROC" -b -q -c 'cube c; rotate = (1, 0, 0) 0.5; linear_vel = (1, 2, 3); print c; print c.velocity; print c.rotate' 2>&1)
+for q in linear_vel angular_vel orientation angular_momentum translate; do
+    n=$(printf '%s\n' "$out" | grep -c "^$q = ")
+    [ "$n" -eq 1 ] || { notok "print lists each quantity once" "$q: $n times" "$out"; break; }
+done
+[ "$n" -eq 1 ] && ok "print lists each quantity once"
+lacks "print leaves out the alias velocity and the derived rotate" "$out" "^\(velocity\|rotate\) = "
+has "both still answer print OBJ.velocity and print OBJ.rotate" "$out" \
+    "c.velocity = (1, 2, 3)" "c.rotate = (1, 0, 0) 0.5"
+
+# ---- clean numbers: 12 digits, no -0, no rounding dust beside what matters
+out=$("$VROC" -b -q -c 'time_step = 0.1; run 34; time; precision = exact; time' 2>&1)
+[ "$out" = "time = 3.4
+time = 3.4000000000000004" ] && ok "time shows 12 digits, and precision = exact the shortest exact decimal" ||
+    notok "time shows 12 digits, and precision = exact the shortest exact decimal" "$out"
+out=$("$VROC" -b -q -c 'sphere a; sphere b; translate = (-3, 0, 0); distance b a' 2>&1)
+has "distance's normal shows no -0" "$out" "normal = (-1, 0, 0)"
+out=$("$VROC" -b -q -c 'sphere a; linear_vel = (2, 1e-13, -0); print a.linear_vel; precision = exact; print a.linear_vel' 2>&1)
+has "a component below 1e-12 of the largest shows as 0; exact shows it" "$out" \
+    "a.linear_vel = (2, 0, 0)" "a.linear_vel = (2, 1e-13, -0)"
+out=$("$VROC" -b -q -c "sphere a; translate = (0.1, 0.2, 0.3); linear_vel = (1/3, 0, 0); time_step = 0.1; run 34; trace = $TMP/t.csv; events = $TMP/e.csv; save $TMP/s.vroc; show; stats" 2>&1)
+has "show and stats are clean" "$out" "time_step = 0.1" "sim_time = 3.4"
+grep -q "saved at time = 3.4000000000000004 " s.vroc && grep -q "^translate = (1.2333333333333298, 0.2, 0.3)$" s.vroc &&
+    grep -q ',3.4000000000000004,a,' t.csv && ok "save and trace are exact whatever precision says" ||
+    notok "save and trace are exact whatever precision says" "$(grep -e time -e translate s.vroc)" "$(tail -1 t.csv)"
+expect "precision takes short or exact" 1 "precision must be one of short|exact (got 'long')" \
+    "$VROC" -b -c 'precision = long'
