@@ -499,12 +499,12 @@ static void trace_writes_a_row_per_object_per_frame(void **state)
     int rows = 0;
     double z = 0, t = 0;
     assert_non_null(fgets(line, sizeof line, f));
-    assert_string_equal(line, "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,state\n");
+    assert_string_equal(line, "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,state,ke\n");
     while (fgets(line, sizeof line, f)) {
         rows++;
         int commas = 0;
         for (char *p = line; *p; p++) commas += *p == ',';
-        assert_int_equal(commas, 16);
+        assert_int_equal(commas, 17);
         long frame;
         char name[16];
         double x, y;
@@ -514,7 +514,12 @@ static void trace_writes_a_row_per_object_per_frame(void **state)
             assert_near(z, 4.0 - 4.9, 1e-9);
             assert_near(t, 1.0, 1e-12);
         }
-        assert_non_null(strstr(line, ",dynamic\n"));
+        char *state = strstr(line, ",dynamic,");
+        assert_non_null(state);
+        /* ke, the last column: m |v|^2 / 2 with v = (1, 0, 4 - g t) for a, (0, 0, -g t) for b */
+        double ke = strtod(state + strlen(",dynamic,"), NULL);
+        double vz = (strcmp(name, "a") == 0 ? 4 : 0) - 9.8 * t, vx = strcmp(name, "a") == 0;
+        assert_near(ke, 0.5 * (vx * vx + vz * vz), 1e-9);
     }
     fclose(f);
     assert_int_equal(rows, 2 * 11); /* two objects, at the start and after 10 frames */
