@@ -4,6 +4,7 @@
 # "did you mean", clean numbers and precision.  The prompt's side is in
 # console_prompt.sh.
 . "$(dirname "$0")/lib.sh"
+S=$(cd "$(dirname "$0")/../scenes" && pwd)
 cd "$TMP" || exit 1
 
 # has TEXT OUTPUT LINE...: every LINE is a whole line of OUTPUT
@@ -83,3 +84,64 @@ grep -q "saved at time = 3.4000000000000004 " s.vroc && grep -q "^translate = (1
     notok "save and trace are exact whatever precision says" "$(grep -e time -e translate s.vroc)" "$(tail -1 t.csv)"
 expect "precision takes short or exact" 1 "precision must be one of short|exact (got 'long')" \
     "$VROC" -b -c 'precision = long'
+
+# ---- energy at a glance
+out=$("$VROC" -b -q -c 'gravity; max_angular = 10; sphere ball; mass = 2; translate = (1, 0, 3); linear_vel = (0, 4, 0); angular_vel = (0, 0, 5); energy; energy ball' 2>&1)
+# kinetic 2 * 16 / 2 = 16 and (2/5) m r^2 w^2 / 2 = 10; potential m g z = 58.8; L about the
+# origin (1, 0, 3) x (0, 8, 0) + I w = (-24, 0, 8) + (0, 0, 4)
+has "energy prints the textbook's figures" "$out" "kinetic_energy = 26" "kinetic_linear = 16" \
+    "kinetic_rotational = 10" "potential_energy = 58.8" "total_energy = 84.8" \
+    "linear_momentum = (0, 8, 0)" "angular_momentum = (-24, 0, 12)" "angular_momentum_com = (0, 0, 4)"
+out=$("$VROC" -b -q -c 'sphere a; linear_vel = (1, 0, 0); sphere b; translate = (3, 0, 0); energy; run 30; energy' 2>&1)
+first=$(printf '%s\n' "$out" | grep '^total_energy' | head -1)
+last=$(printf '%s\n' "$out" | grep '^total_energy' | tail -1)
+[ "$first" = "total_energy = 0.5" ] && [ "$first" = "$last" ] &&
+    printf '%s\n' "$out" | grep -q "^kinetic_linear = 0.5$" &&
+    ok "an elastic collision keeps the total energy ($last)" ||
+    notok "an elastic collision keeps the total energy" "$out"
+expect "energy of a static object says it holds none" 0 "# floor is static: it never moves, and holds no energy" \
+    "$VROC" -b -c 'cube floor; mass = -1; energy floor'
+"$VROC" -b -q -c "sphere a; linear_vel = (3, 0, 0); trace = t2.csv; run 1" 2>&1
+[ "$(head -1 t2.csv)" = "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,state,ke" ] &&
+    [ "$(tail -1 t2.csv | cut -d, -f18)" = "4.5" ] && ok "the trace's ke column follows state (3 m/s: 4.5 J)" ||
+    notok "the trace's ke column follows state (3 m/s: 4.5 J)" "$(head -1 t2.csv)" "$(tail -1 t2.csv)"
+
+# ---- plot: the picture gnuplot draws, read back (its size, and that it is no blank)
+# png_size FILE: "W H" from the PNG's header
+png_size() { od -An -tu1 -j16 -N8 "$1" | awk '{ print $1*16777216 + $2*65536 + $3*256 + $4, $5*16777216 + $6*65536 + $7*256 + $8 }'; }
+# png_ink FILE: "distinct-grey-levels dark-pixels" of the picture
+png_ink() {
+    ffmpeg -v error -y -i "$1" -f rawvideo -pix_fmt gray - 2>/dev/null | od -An -v -tu1 |
+        awk '{ for (i = 1; i <= NF; i++) { seen[$i] = 1; if ($i < 128) dark++ } } END { print length(seen), dark + 0 }'
+}
+if command -v gnuplot >/dev/null 2>&1; then
+    W="gravity; cube floor; mass = -1; size = (3, 3, 0.1); translate = (0, 0, -0.1); sphere ball; radius = 0.2; translate = (0, 0, 1); linear_vel = (0.5, 0.3, 2); elasticity = 0.8"
+    out=$("$VROC" -b -c "$W; run 40; plot energy = e.png; plot momentum = m.png; plot ball.height = h.png" 2>&1)
+    for f in e m h; do
+        size=$(png_size $f.png 2>/dev/null); ink=$(png_ink $f.png)
+        want="900 520"; [ $f = m ] && want="900 900"
+        set -- $ink
+        if [ "$size" = "$want" ] && [ "${1:-0}" -ge 8 ] && [ "${2:-0}" -ge 2000 ]; then
+            ok "plot writes $f.png: $size, $1 grey levels, $2 dark pixels"
+        else
+            notok "plot writes $f.png ($want, drawn)" "size $size ink $ink" "$out"
+        fi
+    done
+    has "plot says what it drew" "$out" "plotted energy over 41 frames to e.png"
+    rm -f e.png
+    expect "a run restarted has nothing to plot" 1 "plot: this run has no frames to plot yet" \
+        "$VROC" -b -c "$W; run 5; restart; plot energy = e.png"
+    [ -f e.png ] && notok "a failed plot writes nothing" || ok "a failed plot writes nothing"
+    expect "plot of an object not in the run" 1 "plot: no object named 'nobody' in this run" \
+        "$VROC" -b -c "$W; run 5; plot nobody.height = e.png"
+else
+    notok "gnuplot is installed (make deps installs gnuplot-nox)"
+fi
+mkdir -p nopath
+expect "where gnuplot is missing, plot says so" 1 "plot: the gnuplot program is not installed" \
+    env PATH="$TMP/nopath" "$VROC" -b -c 'sphere a; run 3; plot energy = e.png'
+# recording the figures never changes the trace: a run split by plots gives the same file
+"$VROC" -b -q "$S/bounce.vroc" -c "trace = one.csv; run 60" > /dev/null 2>&1
+"$VROC" -b -q "$S/bounce.vroc" -c "trace = two.csv; run 20; plot energy = p1.png; run 25; plot momentum = p2.png; run 15" > /dev/null 2>&1
+[ -s one.csv ] && same "recording and plotting the figures never changes the trace" one.csv two.csv ||
+    notok "recording and plotting the figures never changes the trace" "no trace"

@@ -144,6 +144,20 @@ static void the_catalogue_of_broken_statements(void **state)
     expect_error("trace = \n", 1, "missing value");
     expect_error("output = \"\"\n", 1, "file name is empty");
     expect_error("sphere a; radius = 1; bogus\n", 1, "unknown command 'bogus'");
+    expect_error("plot\n", 1, "plot: missing the quantity: energy, momentum or NAME.height");
+    expect_error("plot energie = e.png\n", 1,
+                 "plot: the quantity is energy, momentum or NAME.height (got 'energie'): did you mean energy?");
+    expect_error("plot ball.radius = e.png\n", 1, "the quantity is energy, momentum or NAME.height");
+    expect_error("plot 3d.height = e.png\n", 1, "'3d' is not a valid object name");
+    expect_error("plot energy e.png\n", 1, "plot: expected '= FILE.png' after the quantity, got 'e.png'");
+    expect_error("plot energy =\n", 1, "plot: missing a file name");
+    expect_error("plot energy = e.jpg\n", 1, "plot: the file must be a .png (got 'e.jpg')");
+    expect_error("plot energy = e.png now\n", 1, "plot: unexpected 'now' after the value");
+    expect_error("energy 3d\n", 1, "'3d' is not a valid object name");
+    expect_error("show a b\n", 1, "show: unexpected 'b'");
+    expect_error("print a.\n", 1, "'' is not an object property");
+    expect_error("print a.radus\n", 1, "'radus' is not an object property: did you mean radius?");
+    expect_error("precision = long\n", 1, "precision must be one of short|exact (got 'long')");
 }
 
 /* The caret under an error's excerpt: its column in the statement (0 first), or
@@ -501,7 +515,8 @@ static void table_and_reference_agree(void **state)
         if (strncmp(h->usage, c->name, strlen(c->name)) != 0)
             fail_msg("commands/%s: usage '%s' does not start with the command", c->name,
                      h->usage);
-        if ((c->form != FORM_ACTION) != (strstr(h->usage, " = ") != NULL))
+        /* (plot QUANTITY = FILE is an action written with '=') */
+        if ((c->form != FORM_ACTION || c->arg == ARG_PLOT) != (strstr(h->usage, " = ") != NULL))
             fail_msg("commands/%s: usage '%s' disagrees with the table about '='", c->name,
                      h->usage);
     }

@@ -5,6 +5,7 @@
 #include "scratch.h"
 #include "shell_fixture.h"
 
+#include <math.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
@@ -514,15 +515,88 @@ static void trace_writes_a_row_per_object_per_frame(void **state)
             assert_near(z, 4.0 - 4.9, 1e-9);
             assert_near(t, 1.0, 1e-12);
         }
-        char *state = strstr(line, ",dynamic,");
-        assert_non_null(state);
+        char *st = strstr(line, ",dynamic,");
+        assert_non_null(st);
         /* ke, the last column: m |v|^2 / 2 with v = (1, 0, 4 - g t) for a, (0, 0, -g t) for b */
-        double ke = strtod(state + strlen(",dynamic,"), NULL);
+        double ke = strtod(st + strlen(",dynamic,"), NULL);
         double vz = (strcmp(name, "a") == 0 ? 4 : 0) - 9.8 * t, vx = strcmp(name, "a") == 0;
         assert_near(ke, 0.5 * (vx * vx + vz * vz), 1e-9);
     }
     fclose(f);
     assert_int_equal(rows, 2 * 11); /* two objects, at the start and after 10 frames */
+}
+
+/* plot's figures (figures.h): each frame's row, each object's series aligned with
+ * the rows (a new object starts late, a deleted one ends, one back after a gap
+ * goes on with NaN between), the oldest dropped past the frame and height
+ * limits, and plot saying so; the figures are the world's (energy.h). */
+static void figures_of_the_run(void **state)
+{
+    (void)state;
+    assert_int_equal(run("restart; gravity; sphere a; translate = (0, 0, 5); run 3\n"
+                         "sphere b; translate = (3, 0, 5); run 2; delete b; run 2\n"
+                         "sphere b; translate = (3, 0, 9); run 1\n"),
+                     CMD_OK);
+    const figures *f = &g_sh.figs;
+    assert_int_equal(f->n, 9); /* the start and 8 frames */
+    assert_int_equal(f->dropped, 0);
+    for (int r = 0; r < f->n; r++) {
+        assert_int_equal(f->rows[r].frame, r);
+        assert_near(f->rows[r].t, 0.1 * r, 1e-12);
+    }
+    const figure_series *a = figures_series(f, "a"), *b = figures_series(f, "b");
+    assert_non_null(a);
+    assert_non_null(b);
+    assert_int_equal(a->first, 0);
+    assert_int_equal(a->n, 9);
+    for (int r = 0; r < 9; r++) { /* free fall: 5 - g t^2 / 2 */
+        double t = 0.1 * r;
+        assert_near(a->z[r], 5 - 4.9 * t * t, 1e-9);
+    }
+    /* b: rows 4 and 5 (made after frame 3), gone for 6 and 7, back at 8 */
+    assert_int_equal(b->first, 4);
+    assert_int_equal(b->n, 5);
+    assert_true(isnan(b->z[2]) && isnan(b->z[3]));
+    assert_near(b->z[4], 9 - 4.9 * 0.01, 1e-9);
+    /* the last row is the world's energy: a and b each m g z + m v^2 / 2 */
+    double ta = 0.8, tb = 0.1;
+    double want = 9.8 * (5 - 4.9 * ta * ta) + 0.5 * (9.8 * ta) * (9.8 * ta) +
+                  9.8 * (9 - 4.9 * tb * tb) + 0.5 * (9.8 * tb) * (9.8 * tb);
+    assert_near(f->rows[8].kinetic + f->rows[8].potential, want, 1e-9);
+
+    /* restart starts a new run; the limits drop the oldest quarter */
+    assert_int_equal(run("restart; sphere a; sphere b; translate = (3, 0, 0); sphere c\n"
+                         "translate = (6, 0, 0)\n"),
+                     CMD_OK);
+    assert_int_equal(f->n, 0);
+    g_sh.figs.max_frames = 10;
+    assert_int_equal(run("run 30\n"), CMD_OK);
+    assert_true(f->n <= 10 && f->n >= 7);
+    assert_int_equal(f->dropped + f->n, 31);
+    assert_int_equal(f->rows[f->n - 1].frame, 30);
+    assert_int_equal(f->rows[0].frame, f->dropped);
+    a = figures_series(f, "a");
+    assert_int_equal(a->first, f->dropped);
+    assert_int_equal(a->n, f->n);
+    if (system("command -v gnuplot > /dev/null 2>&1") == 0) {
+        char text[400], path[300];
+        path_in_dir(path, sizeof path, "e.png");
+        snprintf(text, sizeof text, "plot energy = \"%s\"\n", path);
+        assert_int_equal(run(text), CMD_OK);
+        char want_msg[128];
+        snprintf(want_msg, sizeof want_msg, "plot: the run's first %ld frames were dropped",
+                 f->dropped);
+        if (!strstr(g_errbuf, want_msg)) fail_msg("'%s' lacks '%s'", g_errbuf, want_msg);
+    }
+    g_sh.figs.max_frames = FIGURES_MAX_FRAMES;
+    g_sh.figs.max_heights = 12; /* three objects: at most 4 frames */
+    assert_int_equal(run("restart; sphere a; sphere b; translate = (3, 0, 0); sphere c\n"
+                         "translate = (6, 0, 0); run 20\n"),
+                     CMD_OK);
+    assert_true(f->n <= 4 && f->heights <= 12);
+    assert_int_equal(f->dropped + f->n, 21);
+    g_sh.figs.max_heights = FIGURES_MAX_HEIGHTS;
+    assert_int_equal(run("restart\n"), CMD_OK);
 }
 
 int main(void)
@@ -543,6 +617,7 @@ int main(void)
         cmocka_unit_test(trace_writes_a_row_per_object_per_frame),
         cmocka_unit_test(failed_logs_are_turned_off),
         cmocka_unit_test(random_says_how_many_fit),
+        cmocka_unit_test(figures_of_the_run),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

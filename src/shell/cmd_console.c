@@ -1,6 +1,6 @@
 /* cmd_console.c: what a console tool adds to the thesis's language (language.md,
- * "Commands a console tool needs"): run, time, print, list, show, save, distance,
- * stats and help. */
+ * "Commands a console tool needs" and "The console beyond the thesis"): run,
+ * time, print, list, show, save, distance, stats, energy and help. */
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -8,6 +8,7 @@
 
 #include "core/closest.h"
 #include "core/edit.h"
+#include "core/energy.h"
 #include "handlers.h"
 #include "outfile.h"
 #include "shell.h"
@@ -189,6 +190,45 @@ cmd_status cmd_stats(shell *sh, const stmt *st)
     fprintf(sh->out, "render_time = %.6f\n", sh->view_st.render_time);
     fprintf(sh->out, "files_written = %ld\n", sh->view_st.frames_written);
     fprintf(sh->out, "existing_pairs = %ld\n", w->pairs.live);
+    return CMD_OK;
+}
+
+cmd_status cmd_energy(shell *sh, const stmt *st)
+{
+    const world *w = &sh->w;
+    energy_sum e;
+    const body *b = NULL;
+    if (st->word) {
+        int i = world_find(w, st->word);
+        if (i < 0) {
+            sh_error(sh, st, "no object named '%s'", st->word);
+            return CMD_ERROR;
+        }
+        b = w->bodies[i];
+        if (body_is_static(b)) {
+            fprintf(sh->out, "# %s is static: it never moves, and holds no energy\n", b->name);
+            return CMD_OK;
+        }
+        e = energy_of_body(w, b);
+    } else {
+        e = energy_of_world(w);
+    }
+    fmt_style s = shell_shown(sh);
+    char a[32];
+    fprintf(sh->out, "kinetic_energy = %s\n", fmt_shown(a, energy_kinetic(e), s));
+    fprintf(sh->out, "kinetic_linear = %s\n", fmt_shown(a, e.linear, s));
+    fprintf(sh->out, "kinetic_rotational = %s\n", fmt_shown(a, e.rotational, s));
+    fprintf(sh->out, "potential_energy = %s\n", fmt_shown(a, e.potential, s));
+    fprintf(sh->out, "total_energy = %s\n", fmt_shown(a, energy_total(e), s));
+    fprintf(sh->out, "linear_momentum = ");
+    writer_vec(sh->out, e.momentum, s);
+    fprintf(sh->out, "\nangular_momentum = ");
+    writer_vec(sh->out, e.angular_momentum, s);
+    if (b) {
+        fprintf(sh->out, "\nangular_momentum_com = ");
+        writer_vec(sh->out, b->L, s);
+    }
+    fputc('\n', sh->out);
     return CMD_OK;
 }
 

@@ -55,6 +55,7 @@ cmd_status cmd_restart(shell *sh, const stmt *st)
     sh->current = -1;
     hand_free(&sh->hand);
     hand_init(&sh->hand, sh->hand.say, sh->hand.say_ctx);
+    figures_clear(&sh->figs);
     return r;
 }
 
@@ -65,8 +66,13 @@ cmd_status cmd_quit(shell *sh, const stmt *st)
     return CMD_QUIT;
 }
 
-/* The file was parsed with the statement, nesting checked (lang.h). */
-cmd_status cmd_read(shell *sh, const stmt *st) { return shell_run_program(sh, st->sub); }
+/* The file was parsed with the statement, nesting checked (lang.h).  It starts a
+ * new run for plot (figures.h). */
+cmd_status cmd_read(shell *sh, const stmt *st)
+{
+    figures_clear(&sh->figs);
+    return shell_run_program(sh, st->sub);
+}
 
 cmd_status cmd_display(shell *sh, const stmt *st)
 {

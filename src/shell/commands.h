@@ -35,6 +35,8 @@ typedef enum {
     ARG_OPT_ONOFF,    /* optional on or off (select) */
     ARG_NAME_DOT,     /* an object name, or NAME.property (print) */
     ARG_SETTING,      /* an optional setting name (show) */
+    ARG_OPT_NAME,     /* an optional object name (energy) */
+    ARG_PLOT,         /* QUANTITY = FILE (plot) */
     VAL_NUMBER,       /* one number */
     VAL_INTEGER,      /* one integer */
     VAL_VECTOR,       /* (x, y, z) */

@@ -63,7 +63,7 @@ static void add_properties(const char *prefix, const body *b)
 
 static void add_names(const shell *sh, const char *suffix)
 {
-    char buf[BODY_NAME_MAX + 2];
+    char buf[BODY_NAME_MAX + 16];
     for (int i = 0; i < sh->w.n; i++) {
         snprintf(buf, sizeof buf, "%s%s", sh->w.bodies[i]->name, suffix);
         cand_add(buf);
@@ -117,6 +117,7 @@ static bool later_candidates(const shell *sh, const char *w0, bool has_eq, const
     switch (c->arg) {
     case ARG_NAME:
     case ARG_NAME2:
+    case ARG_OPT_NAME:
     case VAL_NAME:
         add_names(sh, "");
         add_choices(c->choices);
@@ -146,6 +147,12 @@ static bool later_candidates(const shell *sh, const char *w0, bool has_eq, const
         cand_add("select");
         return true;
     case ARG_FILE: return false;
+    case ARG_PLOT:
+        if (has_eq) return false;
+        cand_add("energy");
+        cand_add("momentum");
+        add_names(sh, ".height");
+        return true;
     case VAL_FILE:
         if (has_eq) add_choices(c->choices);
         return false;

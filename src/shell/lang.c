@@ -461,6 +461,58 @@ static int get_name_dot(const token *t, int nt, int i, const command *c, stmt *s
     return find_property(st->word2, at) ? 0 : -1;
 }
 
+/* plot's QUANTITY = FILE (t[0..2]): the quantity into st->num[0] (PLOT_ENERGY,
+ * PLOT_MOMENTUM, PLOT_HEIGHT with the object's name in st->object), the file into
+ * st->word. */
+static int get_plot(const token *t, int nt, const command *c, stmt *st, const where *at)
+{
+    char buf[96];
+    if (nt < 1 || t[0].k != T_WORD) {
+        perr(at, "%s: missing the quantity: energy, momentum or NAME.height", c->name);
+        return -1;
+    }
+    char q[BODY_NAME_MAX + 16];
+    snprintf(q, sizeof q, "%.*s", (int)(t[0].len < sizeof q - 1 ? t[0].len : sizeof q - 1), t[0].s);
+    char *dot = strchr(q, '.');
+    if (strcmp(q, "energy") == 0) {
+        st->num[0] = PLOT_ENERGY;
+    } else if (strcmp(q, "momentum") == 0) {
+        st->num[0] = PLOT_MOMENTUM;
+    } else if (dot && strcmp(dot + 1, "height") == 0 && t[0].len < sizeof q - 1) {
+        *dot = '\0';
+        if (!lang_valid_name(q)) {
+            perr(at, "'%s' is not a valid object name", q);
+            return -1;
+        }
+        if (!(st->object = strdup(q))) {
+            perr(at, "out of memory");
+            return -1;
+        }
+        st->num[0] = PLOT_HEIGHT;
+    } else {
+        suggestion sg;
+        char hint[96];
+        suggest_init(&sg, q);
+        suggest_offer_choices(&sg, "energy|momentum");
+        perr(at, "%s: the quantity is energy, momentum or NAME.height (got %s)%s", c->name,
+             tok_text(&t[0], buf), suggest_text(&sg, hint, sizeof hint));
+        return -1;
+    }
+    st->n = 1;
+    if (nt < 2 || t[1].k != T_EQ) {
+        perr(at, "%s: expected '= FILE.png' after the quantity%s%s", c->name, nt < 2 ? "" : ", got ",
+             nt < 2 ? "" : tok_text(&t[1], buf));
+        return -1;
+    }
+    if (get_word(t, nt, 2, c, "a file name", &st->word, at) != 0) return -1;
+    size_t n = strlen(st->word);
+    if (n < 5 || strcmp(st->word + n - 4, ".png") != 0) {
+        perr(at, "%s: the file must be a .png (got %s)", c->name, tok_text(&t[2], buf));
+        return -1;
+    }
+    return 0;
+}
+
 /* Converts the tokens after the command word (actions) or after '=' into st. */
 static int parse_value(stmt *st, const token *t, int nt, const where *at)
 {
@@ -487,6 +539,16 @@ static int parse_value(stmt *st, const token *t, int nt, const where *at)
                 return -1;
             i++;
         }
+        break;
+    case ARG_OPT_NAME:
+        if (i < nt) {
+            if (get_name(t, nt, i, c, &st->word, at) != 0) return -1;
+            i++;
+        }
+        break;
+    case ARG_PLOT:
+        if (get_plot(t, nt, c, st, at) != 0) return -1;
+        i = 3;
         break;
     case ARG_NAME_DOT:
         if (get_name_dot(t, nt, i, c, st, at) != 0) return -1;

@@ -74,6 +74,7 @@ void shell_init(shell *sh, FILE *out, FILE *err)
     sh->out = out;
     sh->err = err;
     hand_init(&sh->hand, shell_hand_say, sh);
+    figures_init(&sh->figs, FIGURES_MAX_FRAMES, FIGURES_MAX_HEIGHTS);
 }
 
 cmd_status shell_close_logs(shell *sh, const stmt *st)
@@ -109,6 +110,7 @@ void shell_free(shell *sh)
     view_free(sh->view);
     sh->view = NULL;
     hand_free(&sh->hand);
+    figures_free(&sh->figs);
 }
 
 /* ------------------------------------------------------------ messages */
@@ -235,6 +237,7 @@ cmd_status shell_run_file(shell *sh, const char *path)
 {
     char err[1024];
     lang_paths paths = paths_of(sh);
+    figures_clear(&sh->figs); /* a new run, as read starts one */
     /* level 1, as a file read at the prompt: one nesting limit for both */
     program *p = lang_parse_file(path, &paths, 1, NULL, 0, NULL, 0, err, sizeof err);
     return run_parsed(sh, p, err);
@@ -315,6 +318,7 @@ cmd_status shell_advance(shell *sh, const stmt *st, long n)
     cmd_status r = CMD_OK;
     sim_hook hook = {hand_hook_next, hand_hook_at, &sh->hand};
     sh->hand_failed = false;
+    if (n > 0 && sh->figs.n == 0) figures_record(&sh->figs, &sh->w); /* where the run starts */
     for (long k = 0; k < n && r == CMD_OK; k++) {
         if (shell_interrupted) {
             shell_interrupted = 0;
@@ -331,6 +335,7 @@ cmd_status shell_advance(shell *sh, const stmt *st, long n)
             r = CMD_ERROR;
             break;
         }
+        figures_record(&sh->figs, &sh->w);
         r = write_frame(sh, st);
         /* the panel's buttons pressed in the frame act at its end */
         if (r == CMD_OK && (shell_after_hand(sh) != CMD_OK || (sh->hand_failed && sh->stop_on_error)))

@@ -17,6 +17,7 @@
 #include <stdio.h>
 
 #include "commands.h"
+#include "figures.h"
 #include "fmt.h"
 #include "core/world.h"
 #include "hand/hand.h"
@@ -54,6 +55,7 @@ typedef struct shell {
         sound_settings sound;
     } startup;
     shell_logs logs;       /* trace and events */
+    figures figs;          /* the current run's figures, for plot */
     view *view;            /* off-screen context, created on first need */
     view_stats view_st;    /* what drawing has cost */
     struct media *media;   /* sound and movie (media.h), made on first need */

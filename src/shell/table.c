@@ -137,6 +137,8 @@ const command command_table[] = {
     ACT("save", ARG_FILE, cmd_save),
     ACT("distance", ARG_NAME2, cmd_distance),
     ACT("stats", ARG_NONE, cmd_stats),
+    ACT("energy", ARG_OPT_NAME, cmd_energy),
+    ACT("plot", ARG_PLOT, cmd_plot),
     OTHER("events", VAL_FILE_OR_OFF, cmd_log),
     OTHER("trace", VAL_FILE_OR_OFF, cmd_log),
     SIM("collision_heap", VAL_ONOFF, 0, 0, 0, collision_heap),
