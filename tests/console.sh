@@ -145,3 +145,17 @@ expect "where gnuplot is missing, plot says so" 1 "plot: the gnuplot program is 
 "$VROC" -b -q "$S/bounce.vroc" -c "trace = two.csv; run 20; plot energy = p1.png; run 25; plot momentum = p2.png; run 15" > /dev/null 2>&1
 [ -s one.csv ] && same "recording and plotting the figures never changes the trace" one.csv two.csv ||
     notok "recording and plotting the figures never changes the trace" "no trace"
+
+# ---- progress: batch runs show none unless -v, which writes a line a second
+# into a file (standard error is not a terminal here)
+"$VROC" -b -c 'sphere b; run 1500000' > quiet.out 2>&1
+[ ! -s quiet.out ] && ok "a batch run shows no progress" || notok "a batch run shows no progress" "$(head -3 quiet.out)"
+"$VROC" -b -v -c 'sphere b; run 1500000; time' > v.out 2> v.err
+if grep -q '^run: frame [0-9]* of 1500000, time = [0-9.e+]*, [0-9]* frames/s, .* left$' v.err &&
+    ! grep -q "$(printf '\r')" v.err && grep -qx 'time = 150000' v.out; then
+    ok "-v shows the progress of a long run as whole lines: $(tail -1 v.err)"
+else
+    notok "-v shows the progress of a long run as whole lines" "$(cat v.err)" "$(cat v.out)"
+fi
+"$VROC" -b -v -c 'sphere b; run 100' > v2.out 2>&1
+[ ! -s v2.out ] && ok "-v shows nothing for a short run" || notok "-v shows nothing for a short run" "$(cat v2.out)"

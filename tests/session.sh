@@ -4,7 +4,7 @@
 S=$(cd "$(dirname "$0")/../scenes" && pwd)
 
 expect "--version" 0 "vroc 0." "$VROC" --version
-expect "--help" 0 "usage: vroc [-b] [-q] [-o DIR] [-c COMMANDS] [FILE ...]" "$VROC" --help
+expect "--help" 0 "usage: vroc [-b] [-q] [-v] [-o DIR] [-c COMMANDS] [FILE ...]" "$VROC" --help
 expect "an unknown option exits 2" 2 "unknown option -z" "$VROC" -z
 expect "-c without its value exits 2" 2 "-c needs a value" "$VROC" -c
 

@@ -18,7 +18,7 @@
 
 cmd_status cmd_run(shell *sh, const stmt *st)
 {
-    return shell_advance(sh, st, (long)st->num[0]);
+    return shell_run_frames(sh, st, (long)st->num[0]);
 }
 
 cmd_status cmd_time(shell *sh, const stmt *st)

@@ -27,15 +27,25 @@ cmd_status cmd_step(shell *sh, const stmt *st) { return shell_advance(sh, st, 1)
 cmd_status cmd_start(shell *sh, const stmt *st)
 {
     if (shell_check_start(sh, st) != CMD_OK) return CMD_ERROR;
-    sh->running = true;
+    char a[32];
+    const char *t = fmt_shown(a, sh->w.time, shell_shown(sh));
     if (!sh->interactive)
         sh_info(sh, "time started; it runs in real time at the prompt (use run N in scripts)");
+    else if (sh->running)
+        sh_info(sh, "time is running already (time = %s)", t);
+    else
+        sh_info(sh, "time runs from time = %s: stop or Ctrl-C stops it", t);
+    sh->running = true;
     return CMD_OK;
 }
 
 cmd_status cmd_stop(shell *sh, const stmt *st)
 {
     (void)st;
+    char a[32];
+    if (sh->interactive)
+        sh_info(sh, sh->running ? "stopped at time = %s" : "time was not running (time = %s)",
+                fmt_shown(a, sh->w.time, shell_shown(sh)));
     sh->running = false;
     return CMD_OK;
 }

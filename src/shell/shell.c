@@ -127,6 +127,7 @@ static void break_line(shell *sh)
 
 static void vmsg(shell *sh, const stmt *st, const char *kind, const char *fmt, va_list ap)
 {
+    if (sh->progress) progress_hide(sh->progress);
     break_line(sh);
     fflush(sh->out);
     if (st && st->file) fprintf(sh->err, "%s:%d: %s: ", st->file, st->line, kind);
@@ -155,6 +156,7 @@ void sh_warn(shell *sh, const stmt *st, const char *fmt, ...)
 void sh_info(shell *sh, const char *fmt, ...)
 {
     if (sh->quiet) return;
+    if (sh->progress) progress_hide(sh->progress);
     break_line(sh);
     va_list ap;
     va_start(ap, fmt);
@@ -310,7 +312,8 @@ static cmd_status write_frame(shell *sh, const stmt *st)
     return r;
 }
 
-cmd_status shell_advance(shell *sh, const stmt *st, long n)
+/* shell_advance, with a status line when show (progress.h). */
+static cmd_status advance(shell *sh, const stmt *st, long n, bool show)
 {
     char err[1024];
     if (n > 0 && !sh->found_apart && shell_check_start(sh, st) != CMD_OK) return CMD_ERROR;
@@ -319,6 +322,11 @@ cmd_status shell_advance(shell *sh, const stmt *st, long n)
     sim_hook hook = {hand_hook_next, hand_hook_at, &sh->hand};
     sh->hand_failed = false;
     if (n > 0 && sh->figs.n == 0) figures_record(&sh->figs, &sh->w); /* where the run starts */
+    progress prog;
+    if (show) {
+        progress_begin(&prog, sh->err, n, t0);
+        sh->progress = &prog;
+    }
     for (long k = 0; k < n && r == CMD_OK; k++) {
         if (shell_interrupted) {
             shell_interrupted = 0;
@@ -340,9 +348,21 @@ cmd_status shell_advance(shell *sh, const stmt *st, long n)
         /* the panel's buttons pressed in the frame act at its end */
         if (r == CMD_OK && (shell_after_hand(sh) != CMD_OK || (sh->hand_failed && sh->stop_on_error)))
             r = CMD_ERROR;
+        if (show) progress_tick(&prog, k + 1, sh->w.time, shell_clock());
+    }
+    if (show) {
+        progress_hide(&prog);
+        sh->progress = NULL;
     }
     sh->wall_time += shell_clock() - t0;
     return r;
+}
+
+cmd_status shell_advance(shell *sh, const stmt *st, long n) { return advance(sh, st, n, false); }
+
+cmd_status shell_run_frames(shell *sh, const stmt *st, long n)
+{
+    return advance(sh, st, n, sh->interactive || sh->verbose);
 }
 
 void *shell_setting_field(shell *sh, const command *c)

@@ -23,6 +23,7 @@
 #include "hand/hand.h"
 #include "lang.h"
 #include "log.h"
+#include "progress.h"
 #include "sound/sound.h"
 #include "view/view.h"
 
@@ -66,6 +67,8 @@ typedef struct shell {
     bool hand_failed;      /* the hand reported an error since it began */
     bool interactive;      /* a terminal with readline */
     bool quiet;            /* -q */
+    bool verbose;          /* -v: progress in batch too */
+    progress *progress;    /* the status line of the run going on, or NULL */
     bool stop_on_error;    /* -b, or input that is not a terminal */
     FILE *out, *err;
     const char *scene_dir; /* installed scenes folder */
@@ -104,6 +107,10 @@ cmd_status shell_check_start(shell *sh, const stmt *st);
 /* Advances n frames (honouring Ctrl-C); writes the logs' rows after each, and the
  * views when record is on. */
 cmd_status shell_advance(shell *sh, const stmt *st, long n);
+
+/* shell_advance for `run`: at an interactive prompt, or with -v, a run that lasts
+ * shows its progress (progress.h). */
+cmd_status shell_run_frames(shell *sh, const stmt *st, long n);
 
 /* The one rule for an output that could not be written (outfile.h): trace,
  * events, the recorded frames, and any file written as time runs.  The caller has
