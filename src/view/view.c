@@ -448,7 +448,9 @@ static void view_draw_eye(view *v, const world *w, const view_settings *s, const
         glEnable(GL_LIGHTING);
         glEnable(GL_CULL_FACE);
     }
-    overlay_draw(&s->overlay); /* the hand and the panel, whatever `real` says */
+    /* the hand and the panel, whatever `real` says; a pixel at depth d is
+     * (top - bottom) d / (near h) across */
+    overlay_draw(&s->overlay, e->pos, e->f, (e->top - e->bottom) / (e->near * v->h));
 }
 
 /* Renders eyes 0 .. neyes-1 (1: the left eye only). */
