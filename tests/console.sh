@@ -159,3 +159,11 @@ else
 fi
 "$VROC" -b -v -c 'sphere b; run 100' > v2.out 2>&1
 [ ! -s v2.out ] && ok "-v shows nothing for a short run" || notok "-v shows nothing for a short run" "$(cat v2.out)"
+
+# ---- default colours: a palette in turn, red first, again after restart
+out=$("$VROC" -b -q -c 'cube floor; sphere a; cube b; sphere c; print floor.color; print a.color; print b.color; print c.color; restart; sphere d; print d.color' 2>&1)
+n=$(printf '%s\n' "$out" | sed -n 's/^[a-z]*\.color = //p' | head -4 | sort -u | wc -l)
+printf '%s\n' "$out" | grep -qx 'floor.color = (255, 0, 0)' && [ "$n" -eq 4 ] &&
+    printf '%s\n' "$out" | grep -qx 'd.color = (255, 0, 0)' &&
+    ok "new objects take distinguishable colours in turn, the thesis's red first" ||
+    notok "new objects take distinguishable colours in turn, the thesis's red first" "$out"

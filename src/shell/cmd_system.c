@@ -63,6 +63,7 @@ cmd_status cmd_restart(shell *sh, const stmt *st)
     sh->sound_set = sh->startup.sound; /* the soundtrack and movie go on, as the logs do */
     sh->rng = sh->set.seed;
     sh->current = -1;
+    sh->made = 0;
     hand_free(&sh->hand);
     hand_init(&sh->hand, sh->hand.say, sh->hand.say_ctx);
     figures_clear(&sh->figs);

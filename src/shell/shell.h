@@ -63,6 +63,8 @@ typedef struct shell {
     double wall_time;      /* seconds spent advancing time */
     bool running;          /* `start` given and not stopped */
     int current;           /* index of the current object, or -1 */
+    long made;             /* objects made since restart: the next takes colour `made`
+                            * of the palette (view_palette) */
     const stmt *running_st; /* the statement running (for the hand's messages) */
     bool hand_failed;      /* the hand reported an error since it began */
     bool interactive;      /* a terminal with readline */

@@ -242,12 +242,6 @@ int movie_open(movie **mp, const char *path, const view_settings *vs, double per
     return 0;
 }
 
-/* Rec. 601 luma, as view.c's anaglyph uses. */
-static unsigned char movie_luma(const unsigned char *p)
-{
-    return (unsigned char)((77u * p[0] + 150u * p[1] + 29u * p[2] + 128u) >> 8);
-}
-
 /* Lays the eyes out in m->frame: each movie pixel from the nearest eye pixel (the
  * same one when the sizes agree), the padding repeating the last column and row. */
 static void movie_compose(movie *m, const unsigned char *eye[2], int sw, int sh)
@@ -265,9 +259,7 @@ static void movie_compose(movie *m, const unsigned char *eye[2], int sw, int sh)
             size_t at = (sy * (size_t)sw + sx) * 3;
             unsigned char *o = row + (size_t)x * 3;
             if (m->mode == STEREO_ANAGLYPH) {
-                unsigned char l = movie_luma(eye[0] + at), r = movie_luma(eye[1] + at);
-                o[0] = l;
-                o[1] = o[2] = r;
+                view_anaglyph_pixel(eye[0] + at, eye[1] + at, o);
             } else {
                 memcpy(o, eye[k] + at, 3);
             }

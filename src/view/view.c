@@ -33,6 +33,7 @@
 #include <GL/gl.h>
 #include <GL/osmesa.h>
 #include <errno.h>
+#include <math.h>
 #include <pthread.h>
 #include <stdbool.h>
 #include <stdint.h>
@@ -535,22 +536,75 @@ static void view_compose_sbs(view *v)
     }
 }
 
-/* Rec. 601 luma of an 8-bit RGB pixel. */
-static unsigned char view_luma(const unsigned char *p)
+/* Dubois's red-cyan matrices (his 2001 paper's, as ffmpeg's stereo3d filter has
+ * them): each output primary from the left eye's and the right eye's linear
+ * RGB. */
+static const float DUBOIS_L[3][3] = {{0.456f, 0.500f, 0.176f},
+                                     {-0.040f, -0.038f, -0.016f},
+                                     {-0.015f, -0.021f, -0.005f}};
+static const float DUBOIS_R[3][3] = {{-0.043f, -0.088f, -0.002f},
+                                     {0.378f, 0.734f, -0.018f},
+                                     {-0.072f, -0.113f, 1.226f}};
+
+/* sRGB to linear light, by 8-bit value; and back, by linear value in 1/4095ths. */
+#define LINEAR_STEPS 4096
+static float g_to_linear[256];
+static unsigned char g_to_srgb[LINEAR_STEPS];
+static pthread_once_t g_tables = PTHREAD_ONCE_INIT;
+
+static void make_tables(void)
 {
-    return (unsigned char)((77u * p[0] + 150u * p[1] + 29u * p[2] + 128u) >> 8);
+    for (int i = 0; i < 256; i++) {
+        double c = i / 255.0;
+        g_to_linear[i] = (float)(c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4));
+    }
+    for (int i = 0; i < LINEAR_STEPS; i++) {
+        double l = i / (double)(LINEAR_STEPS - 1);
+        double c = l <= 0.0031308 ? 12.92 * l : 1.055 * pow(l, 1 / 2.4) - 0.055;
+        g_to_srgb[i] = (unsigned char)lround(255 * c);
+    }
 }
 
-/* The red-cyan anaglyph: red from the left eye's luma, green and blue from the right's. */
+void view_anaglyph_pixel(const unsigned char *left, const unsigned char *right, unsigned char *out)
+{
+    pthread_once(&g_tables, make_tables);
+    float l[3], r[3];
+    for (int k = 0; k < 3; k++) {
+        l[k] = g_to_linear[left[k]];
+        r[k] = g_to_linear[right[k]];
+    }
+    for (int c = 0; c < 3; c++) {
+        float x = 0;
+        for (int k = 0; k < 3; k++) x += DUBOIS_L[c][k] * l[k] + DUBOIS_R[c][k] * r[k];
+        x = x < 0 ? 0 : x > 1 ? 1 : x;
+        out[c] = g_to_srgb[(int)(x * (LINEAR_STEPS - 1) + 0.5f)];
+    }
+}
+
+/* The red-cyan anaglyph of the two eyes (view_anaglyph_pixel). */
 static void view_compose_anaglyph(view *v)
 {
     size_t n = (size_t)v->w * (size_t)v->h;
-    for (size_t i = 0; i < n; i++) {
-        unsigned char l = view_luma(v->eye[0] + 3 * i), r = view_luma(v->eye[1] + 3 * i);
-        v->out[3 * i] = l;
-        v->out[3 * i + 1] = r;
-        v->out[3 * i + 2] = r;
-    }
+    for (size_t i = 0; i < n; i++)
+        view_anaglyph_pixel(v->eye[0] + 3 * i, v->eye[1] + 3 * i, v->out + 3 * i);
+}
+
+void view_palette(long k, int rgb[3])
+{
+    static const int palette[VIEW_PALETTE][3] = {
+        {255, 0, 0},     /* red, the thesis's */
+        {30, 144, 255},  /* blue */
+        {50, 205, 50},   /* green */
+        {255, 165, 0},   /* orange */
+        {186, 85, 211},  /* violet */
+        {0, 206, 209},   /* turquoise */
+        {255, 215, 0},   /* yellow */
+        {255, 105, 180}, /* pink */
+        {170, 170, 170}, /* grey */
+        {160, 100, 50},  /* brown */
+    };
+    const int *c = palette[(k % VIEW_PALETTE + VIEW_PALETTE) % VIEW_PALETTE];
+    for (int i = 0; i < 3; i++) rgb[i] = c[i];
 }
 
 /* One file of a frame: output/frame-NNNNNN-suffix.png and its image. */

@@ -104,8 +104,8 @@ int view_render(view **v, const world *w, const view_settings *vs, char *err, si
 /* Renders and writes frame number `frame` into vs->output, creating the folders as
  * `mkdir -p` does: pair -> frame-NNNNNN-left.png and frame-NNNNNN-right.png; sbs ->
  * frame-NNNNNN-sbs.png (twice as wide, left eye on the left); anaglyph ->
- * frame-NNNNNN-anaglyph.png (red = luminance of the left eye, green and blue =
- * luminance of the right eye); mono -> frame-NNNNNN-left.png only (only the left eye
+ * frame-NNNNNN-anaglyph.png (view_anaglyph's red-cyan image in colour); mono ->
+ * frame-NNNNNN-left.png only (only the left eye
  * is rendered).  NNNNNN is the frame number as %06ld.  Adds the wall time spent to
  * st->render_time and the files written to st->frames_written (st may be NULL).
  * Returns 0, or -1 with a message in err (for a file or folder: naming the path and
@@ -120,5 +120,18 @@ const unsigned char *view_pixels(const view *v, int eye, int *width, int *height
 
 /* Destroys the context and the buffers (NULL is fine). */
 void view_free(view *v);
+
+/* The colours new objects take in turn (language.md, Table A.1's color): the
+ * k-th of VIEW_PALETTE distinguishable colours, bright on the black background,
+ * the first the thesis's red (255, 0, 0); k counts on past the last. */
+#define VIEW_PALETTE 10
+void view_palette(long k, int rgb[3]);
+
+/* The red-cyan anaglyph pixel of a left and a right eye's pixels (8-bit RGB)
+ * into out, by Dubois's least-squares projection (E. Dubois, "A projection
+ * method to generate anaglyph stereo images", ICASSP 2001), applied in linear
+ * light: the colours of the scene are kept as far as red and cyan filters let
+ * them, where a luminance anaglyph made everything grey. */
+void view_anaglyph_pixel(const unsigned char *left, const unsigned char *right, unsigned char *out);
 
 #endif
