@@ -334,6 +334,7 @@ static cmd_status advance(shell *sh, const stmt *st, long n, bool show)
             sh_info(sh, "interrupted at time = %s", fmt_shown(a, sh->w.time, shell_shown(sh)));
             break;
         }
+        media_frame_begin(sh); /* a movie's pictures within the frame start here */
         /* the hand acts at its rows' instants within the frame (hand.h) */
         hand_frame_begin(&sh->hand, &sh->w);
         int status = sim_frame_hooked(&sh->w, &hook, err, sizeof err);

@@ -181,6 +181,7 @@ const command command_table[] = {
     SOUNDF("sound", VAL_ONOFF, 0, 0, 0, live, cmd_sound),
     OTHER("soundtrack", VAL_FILE_OR_OFF, cmd_soundtrack),
     OTHER("movie", VAL_FILE_OR_OFF, cmd_movie),
+    VIEW("movie_rate", VAL_NUMBER, R_RANGE | R_LO_OPEN, 0, VIEW_MOVIE_RATE_MAX, movie_rate),
 };
 
 const int command_count = (int)(sizeof command_table / sizeof command_table[0]);

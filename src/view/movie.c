@@ -164,8 +164,7 @@ int movie_open(movie **mp, const char *path, const view_settings *vs, double per
         return -1;
     }
     if (!(period > 0) || !isfinite(period)) {
-        snprintf(err, errlen, "time_step is %g: a movie's frame rate is 1 / time_step, so it "
-                 "must be > 0", period);
+        snprintf(err, errlen, "a movie's picture lasts %g s: it must be > 0", period);
         return -1;
     }
     if (strlen(path) >= VIEW_PATH_MAX) {

@@ -81,6 +81,7 @@ view_settings view_settings_defaults(void)
     s.stereo = STEREO_PAIR;
     s.real = REAL_SOLID;
     s.record = false;
+    s.movie_rate = 30;
     return s;
 }
 
@@ -296,10 +297,10 @@ void view_free(view *v)
 
 /* ---- drawing ---- */
 
-/* The OpenGL matrix of the rigid map body -> world. */
-static void view_model_matrix(const body *b, GLdouble m[16])
+/* The OpenGL matrix of the rigid map body -> world, at pose p (NULL: its own). */
+static void view_model_matrix(const body *b, const view_pose *p, GLdouble m[16])
 {
-    overlay_pose_matrix(b->x, b->q, m);
+    overlay_pose_matrix(p ? p->x : b->x, p ? p->q : b->q, m);
 }
 
 /* The OpenGL matrix of world -> eye: rows r, u, -f, origin at the eye. */
@@ -329,12 +330,12 @@ static bool view_mesh_ok(const mesh *m)
     return m->nv > 0 && m->nt > 0 && m->pos && m->nrm && m->tri;
 }
 
-/* The body's mesh, lit and filled. */
-static void view_draw_solid(const body *b)
+/* The body's mesh, lit and filled, at pose p (NULL: its own). */
+static void view_draw_solid(const body *b, const view_pose *p)
 {
     const mesh *m = &b->shape.draw;
     GLdouble model[16];
-    view_model_matrix(b, model);
+    view_model_matrix(b, p, model);
     glPushMatrix();
     glMultMatrixd(model);
     view_color(b);
@@ -348,11 +349,11 @@ static void view_draw_solid(const body *b)
 /* The body's edges, unlit, front and back: those of the collision polyhedron (the
  * real edges of a box, without the triangulation's diagonals), or the mesh's for a
  * sphere.  Lighting and culling must be off. */
-static void view_draw_wire(const body *b)
+static void view_draw_wire(const body *b, const view_pose *pose)
 {
     const poly *p = b->shape.hull;
     GLdouble model[16];
-    view_model_matrix(b, model);
+    view_model_matrix(b, pose, model);
     glPushMatrix();
     glMultMatrixd(model);
     view_color(b);
@@ -417,9 +418,10 @@ static void view_pack_eye(view *v, int k)
                       v->eye[k] + 3 * (size_t)y * w, w);
 }
 
-/* Draws the world as eye e sees it into the k-th half of the image. */
-static void view_draw_eye(view *v, const world *w, const view_settings *s, const view_eye *e,
-                          int k)
+/* Draws the world as eye e sees it into the k-th half of the image, body i at
+ * poses[i] (poses NULL: where they are). */
+static void view_draw_eye(view *v, const world *w, const view_pose *poses, const view_settings *s,
+                          const view_eye *e, int k)
 {
     glViewport(k * v->w, 0, v->w, v->h);
     glScissor(k * v->w, 0, v->w, v->h);
@@ -436,7 +438,7 @@ static void view_draw_eye(view *v, const world *w, const view_settings *s, const
     bool any_wire = false;
     for (int i = 0; i < w->n; i++) {
         int style = view_style(w->bodies[i], s->real);
-        if (style == 1) view_draw_solid(w->bodies[i]);
+        if (style == 1) view_draw_solid(w->bodies[i], poses ? &poses[i] : NULL);
         any_wire = any_wire || style == 2;
     }
     if (any_wire) {
@@ -444,7 +446,8 @@ static void view_draw_eye(view *v, const world *w, const view_settings *s, const
         glDisable(GL_CULL_FACE);
         glDisableClientState(GL_NORMAL_ARRAY);
         for (int i = 0; i < w->n; i++)
-            if (view_style(w->bodies[i], s->real) == 2) view_draw_wire(w->bodies[i]);
+            if (view_style(w->bodies[i], s->real) == 2)
+                view_draw_wire(w->bodies[i], poses ? &poses[i] : NULL);
         glEnableClientState(GL_NORMAL_ARRAY);
         glEnable(GL_LIGHTING);
         glEnable(GL_CULL_FACE);
@@ -454,9 +457,10 @@ static void view_draw_eye(view *v, const world *w, const view_settings *s, const
     overlay_draw(&s->overlay, e->pos, e->f, (e->top - e->bottom) / (e->near * v->h));
 }
 
-/* Renders eyes 0 .. neyes-1 (1: the left eye only). */
-static int view_render_eyes(view **v, const world *w, const view_settings *vs, int neyes, char *err,
-                            size_t errlen)
+/* Renders eyes 0 .. neyes-1 (1: the left eye only), bodies at poses (NULL: their
+ * own). */
+static int view_render_eyes(view **v, const world *w, const view_pose *poses,
+                            const view_settings *vs, int neyes, char *err, size_t errlen)
 {
     view_eye eye[2];
     if (view_display(v, vs, err, errlen) != 0) return -1;
@@ -468,7 +472,7 @@ static int view_render_eyes(view **v, const world *w, const view_settings *vs, i
     glClearColor((GLfloat)bg[0] / 255.0f, (GLfloat)bg[1] / 255.0f, (GLfloat)bg[2] / 255.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_SCISSOR_TEST);
-    for (int k = 0; k < neyes; k++) view_draw_eye(vw, w, vs, &eye[k], k);
+    for (int k = 0; k < neyes; k++) view_draw_eye(vw, w, poses, vs, &eye[k], k);
     glFinish(); /* OSMesa copies the image into vw->rgba */
     for (int k = 0; k < 2; k++) {
         vw->have[k] = k < neyes;
@@ -479,7 +483,13 @@ static int view_render_eyes(view **v, const world *w, const view_settings *vs, i
 
 int view_render(view **v, const world *w, const view_settings *vs, char *err, size_t errlen)
 {
-    return view_render_eyes(v, w, vs, 2, err, errlen);
+    return view_render_eyes(v, w, NULL, vs, 2, err, errlen);
+}
+
+int view_render_posed(view **v, const world *w, const view_pose *poses, const view_settings *vs,
+                      char *err, size_t errlen)
+{
+    return view_render_eyes(v, w, poses, vs, 2, err, errlen);
 }
 
 const unsigned char *view_pixels(const view *v, int eye, int *width, int *height)
@@ -664,7 +674,7 @@ static int view_frame(view **v, const world *w, const view_settings *s, long fra
     int neyes = s->stereo == STEREO_MONO ? 1 : 2;
     /* the folder first: where no file can be written, nothing is drawn */
     if (s->output[0] && view_mkdirs(s->output, err, errlen) != 0) return -1;
-    if (view_render_eyes(v, w, s, neyes, err, errlen) != 0) return -1;
+    if (view_render_eyes(v, w, NULL, s, neyes, err, errlen) != 0) return -1;
     view *vw = *v;
     view_file f[2];
     int n = 1;

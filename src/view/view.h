@@ -24,6 +24,9 @@
 
 #include "core/world.h"
 
+/* The most pictures a second of simulated time a movie may take (movie_rate). */
+#define VIEW_MOVIE_RATE_MAX 1000
+
 /* Longest path of the output folder, with its final NUL. */
 #define VIEW_PATH_MAX 1024
 
@@ -74,12 +77,13 @@ typedef struct {
     int background[3];        /* 0..255 */
     real_mode real;           /* how static objects are drawn */
     bool record;              /* write the views of every frame while time runs */
+    double movie_rate;        /* a movie's pictures per second of simulated time */
     view_overlay overlay;     /* the hand and the panel (the shell keeps it current) */
 } view_settings;
 
 /* The start-up values: head at the origin looking along +y with z up, ipd 0.064,
- * fov 60, 640x512, output "frames", pair, black, solid, record off, no hand or
- * panel drawn. */
+ * fov 60, 640x512, output "frames", pair, black, solid, record off, movie_rate 30,
+ * no hand or panel drawn. */
 view_settings view_settings_defaults(void);
 
 /* What drawing has cost so far. */
@@ -100,6 +104,17 @@ int view_display(view **v, const view_settings *vs, char *err, size_t errlen);
  * up parallel to the view direction), fov outside (0, 180), a negative ipd, or a
  * context that cannot be made. */
 int view_render(view **v, const world *w, const view_settings *vs, char *err, size_t errlen);
+
+/* Where a body is drawn: its origin and orientation. */
+typedef struct {
+    vec3 x;
+    quat q;
+} view_pose;
+
+/* view_render with body i of w drawn at poses[i] instead of its own x and q
+ * (poses holds w->n of them): a movie's pictures between two frames. */
+int view_render_posed(view **v, const world *w, const view_pose *poses, const view_settings *vs,
+                      char *err, size_t errlen);
 
 /* Renders and writes frame number `frame` into vs->output, creating the folders as
  * `mkdir -p` does: pair -> frame-NNNNNN-left.png and frame-NNNNNN-right.png; sbs ->
