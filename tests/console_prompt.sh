@@ -7,8 +7,7 @@
 tmux_ready || exit 0
 SES=vroc$$
 
-tmux -f /dev/null new-session -d -s "$SES" -x 120 -y 40 \
-    "cd '$TMP' && HOME='$TMP' ASAN_OPTIONS='$ASAN_OPTIONS' '$VROC' -c 'sound = off'; echo EXIT=\$?; sleep 30"
+start_session "-c 'sound = off'"
 check_screen "the prompt" "vroc>"
 
 type_ "sphere b; radius = 2^-1 * (1 + 1/3)" Enter

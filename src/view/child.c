@@ -1,5 +1,5 @@
 /* child.c: the programs the views pipe pictures to, run as children (child.h). */
-#define _GNU_SOURCE /* sigtimedwait */
+#define _GNU_SOURCE /* pipe2 (a descriptor the child does not inherit), sigtimedwait */
 #include "child.h"
 
 #include <errno.h>
@@ -30,6 +30,29 @@ int child_spawn(char *const argv[], int in, int log, pid_t *pid)
     posix_spawn_file_actions_destroy(&fa);
     posix_spawnattr_destroy(&at);
     return rc;
+}
+
+int child_open(char *const argv[], const char *path, pid_t *pid, int *in, int *log, char *err,
+               size_t errlen)
+{
+    int pipefd[2] = {-1, -1};
+    *log = child_log_file(path);
+    int rc = *log < 0 ? errno : pipe2(pipefd, O_CLOEXEC) != 0 ? errno : 0;
+    if (rc == 0) rc = child_spawn(argv, pipefd[0], *log, pid);
+    if (pipefd[0] >= 0) close(pipefd[0]);
+    if (rc == 0) {
+        *in = pipefd[1];
+        return 0;
+    }
+    if (rc == ENOENT)
+        snprintf(err, errlen, "the %s program is not installed (not found on PATH; make deps "
+                 "installs it)", argv[0]);
+    else
+        snprintf(err, errlen, "cannot run %s: %s", argv[0], strerror(rc));
+    if (pipefd[1] >= 0) close(pipefd[1]);
+    if (*log >= 0) close(*log);
+    *log = -1;
+    return -1;
 }
 
 int child_wait(pid_t pid)

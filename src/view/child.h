@@ -13,6 +13,14 @@
  * errno value (ENOENT: not installed). */
 int child_spawn(char *const argv[], int in, int log, pid_t *pid);
 
+/* Starts argv[0] as child_spawn does, its standard input a pipe whose writing
+ * end is *in (the caller writes and closes it) and its messages in a log file
+ * beside path (child_log_file), *log.  Returns 0 with *pid, or -1 with a message
+ * in err ("the NAME program is not installed (not found on PATH; make deps
+ * installs it)", or "cannot run NAME: REASON"), nothing left open. */
+int child_open(char *const argv[], const char *path, pid_t *pid, int *in, int *log, char *err,
+               size_t errlen);
+
 /* Waits for pid.  Returns its exit status, or -1 when it did not exit by itself. */
 int child_wait(pid_t pid);
 

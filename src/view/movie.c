@@ -1,5 +1,4 @@
 /* movie.c: frames piped to the ffmpeg program, and the sound muxed in (movie.h). */
-#define _GNU_SOURCE /* pipe2, for a descriptor ffmpeg does not inherit */
 #include "movie.h"
 
 #include <errno.h>
@@ -218,25 +217,12 @@ int movie_open(movie **mp, const char *path, const view_settings *vs, double per
     argv[a++] = m->part;
     argv[a] = NULL;
 
-    int pipefd[2] = {-1, -1};
-    m->log = child_log_file(path);
-    int rc = m->log < 0 ? errno : pipe2(pipefd, O_CLOEXEC) != 0 ? errno : 0;
-    if (rc == 0) rc = child_spawn((char *const *)argv, pipefd[0], m->log, &m->pid);
-    if (pipefd[0] >= 0) close(pipefd[0]);
-    if (rc != 0) {
-        if (rc == ENOENT)
-            snprintf(err, errlen, "the ffmpeg program is not installed (not found on PATH; "
-                     "make deps installs it)");
-        else
-            snprintf(err, errlen, "cannot run ffmpeg: %s", strerror(rc));
-        if (pipefd[1] >= 0) close(pipefd[1]);
-        if (m->log >= 0) close(m->log);
+    if (child_open((char *const *)argv, path, &m->pid, &m->fd, &m->log, err, errlen) != 0) {
         if (!existed) unlink(path);
         free(m->frame);
         free(m);
         return -1;
     }
-    m->fd = pipefd[1];
     *mp = m;
     return 0;
 }

@@ -1,5 +1,4 @@
 /* plot.c: figures over time drawn by the gnuplot program (plot.h). */
-#define _GNU_SOURCE /* pipe2, for a descriptor gnuplot does not inherit */
 #include "plot.h"
 
 #include <errno.h>
@@ -116,31 +115,18 @@ int plot_png(const char *path, const plot_spec *p, char *err, size_t errlen)
 {
     char part[4200];
     child_beside(part, sizeof part, path, ".vroc-part-", ".png");
-    int log = child_log_file(path);
-    int pipefd[2] = {-1, -1};
-    int rc = log < 0 ? errno : pipe2(pipefd, O_CLOEXEC) != 0 ? errno : 0;
     pid_t pid;
+    int in, log;
     char *const argv[] = {"gnuplot", NULL};
-    if (rc == 0) rc = child_spawn(argv, pipefd[0], log, &pid);
-    if (pipefd[0] >= 0) close(pipefd[0]);
-    if (rc != 0) {
-        if (rc == ENOENT)
-            snprintf(err, errlen, "the gnuplot program is not installed (not found on PATH; make "
-                     "deps installs it, or apt-get install gnuplot-nox)");
-        else
-            snprintf(err, errlen, "cannot run gnuplot: %s", strerror(rc));
-        if (pipefd[1] >= 0) close(pipefd[1]);
-        if (log >= 0) close(log);
-        return -1;
-    }
+    if (child_open(argv, path, &pid, &in, &log, err, errlen) != 0) return -1;
     pipe_out *o = malloc(sizeof *o);
     if (o) {
-        o->fd = pipefd[1];
+        o->fd = in;
         o->rc = 0;
         o->n = 0;
         write_script(o, part, p);
     }
-    close(pipefd[1]);
+    close(in);
     int status = child_wait(pid);
     struct stat sb;
     char why[600];
