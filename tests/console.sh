@@ -167,3 +167,14 @@ printf '%s\n' "$out" | grep -qx 'floor.color = (255, 0, 0)' && [ "$n" -eq 4 ] &&
     printf '%s\n' "$out" | grep -qx 'd.color = (255, 0, 0)' &&
     ok "new objects take distinguishable colours in turn, the thesis's red first" ||
     notok "new objects take distinguishable colours in turn, the thesis's red first" "$out"
+
+# ---- read starts a new run for plot, as restart does
+printf 'sphere other\n' > other.vroc
+expect "read starts a new run: nothing to plot after it" 1 "plot: this run has no frames to plot yet" \
+    "$VROC" -b -c "sphere a; run 5; read other.vroc; plot energy = r.png"
+
+# ---- help's texts: six groups, and no line broken early (help ipd printed "Default" alone)
+expect "help help says six groups" 0 "in six groups: objects, object properties, system" "$VROC" -b -c 'help help'
+out=$("$VROC" -b -c 'help ipd' 2>&1)
+printf '%s\n' "$out" | grep -qx 'Default' && notok "help ipd keeps its lines whole" "$out" ||
+    ok "help ipd keeps its lines whole"

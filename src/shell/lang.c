@@ -402,7 +402,7 @@ static int read_numbers(stmt *st, cursor *cu, const where *at)
         }
         st->n = 3;
         return 0;
-    default: return -1; /* not a numeric kind: parse_value reads it */
+    default: return -1; /* never: parse_value calls this for numeric kinds only */
     }
 }
 
@@ -418,9 +418,8 @@ static int parse_numbers(stmt *st, const token *t, int nt, const where *at)
         const char *p = expr_skip(cu.p);
         if (*p) {
             char buf[96];
-            perr_at(at, src_of(&cu, p), "%s: unexpected %s after the %s", c->name,
-                    expr_token_text(p, buf),
-                    c->arg == ARG_NONE ? "command (it takes no arguments)" : "value");
+            perr_at(at, src_of(&cu, p), "%s: unexpected %s after the value", c->name,
+                    expr_token_text(p, buf));
             rc = -1;
         }
     }
@@ -467,18 +466,19 @@ static int get_name_dot(const token *t, int nt, int i, const command *c, stmt *s
 static int get_plot(const token *t, int nt, const command *c, stmt *st, const where *at)
 {
     char buf[96];
-    if (nt < 1 || t[0].k != T_WORD) {
+    if (nt < 1) {
         perr(at, "%s: missing the quantity: energy, momentum or NAME.height", c->name);
         return -1;
     }
     char q[BODY_NAME_MAX + 16];
     snprintf(q, sizeof q, "%.*s", (int)(t[0].len < sizeof q - 1 ? t[0].len : sizeof q - 1), t[0].s);
     char *dot = strchr(q, '.');
-    if (strcmp(q, "energy") == 0) {
+    bool word = t[0].k == T_WORD && t[0].len < sizeof q - 1;
+    if (word && strcmp(q, "energy") == 0) {
         st->num[0] = PLOT_ENERGY;
-    } else if (strcmp(q, "momentum") == 0) {
+    } else if (word && strcmp(q, "momentum") == 0) {
         st->num[0] = PLOT_MOMENTUM;
-    } else if (dot && strcmp(dot + 1, "height") == 0 && t[0].len < sizeof q - 1) {
+    } else if (word && dot && strcmp(dot + 1, "height") == 0) {
         *dot = '\0';
         if (!lang_valid_name(q)) {
             perr(at, "'%s' is not a valid object name", q);
