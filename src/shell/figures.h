@@ -18,9 +18,10 @@
 #include "core/body.h"
 #include "core/world.h"
 
-/* The limits vroc records with: a million frames, 2^23 heights (64 MB). */
+/* The limits vroc records with: a million frames, 2^22 heights (32 MB, at most
+ * twice that allocated as the series grow). */
 #define FIGURES_MAX_FRAMES 1000000L
-#define FIGURES_MAX_HEIGHTS (1L << 23)
+#define FIGURES_MAX_HEIGHTS (1L << 22)
 
 typedef struct {
     long frame;
