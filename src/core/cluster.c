@@ -47,8 +47,8 @@ static void gather(world *w, const int *list, int n, points *pts, double reach)
             double scale = A->shape.r_out + B->shape.r_out;
             closest_result r = pair_query(w, p, A, B);
             if (r.status == CLOSEST_INVALID) continue;
-            cpoint cp[16];
-            int nc = contact_cpoints(A, B, &r, d_max(SIM_CONTACT_TOL * scale, reach), cp, 16);
+            cpoint cp[CONTACT_MAX_POINTS];
+            int nc = contact_cpoints(A, B, &r, d_max(SIM_CONTACT_TOL * scale, reach), cp, CONTACT_MAX_POINTS);
             if (pts->np < SIM_CLUSTER_ROWS) pts->pr[pts->np++] = p;
             for (int c = 0; c < nc && pts->n < SIM_CLUSTER_ROWS; c++) {
                 cpoint *x = &pts->cp[pts->n];
@@ -120,9 +120,9 @@ static int deepest_rows(world *w, points *pts, body **bs, double *floor_gap, dou
         }
         if (!(least < HUGE_VAL) || r.distance >= least - tol) continue;
         /* their points there (material points and features, so rows now) */
-        cpoint cp[16];
+        cpoint cp[CONTACT_MAX_POINTS];
         double scale = A->shape.r_out + B->shape.r_out;
-        int nc = contact_cpoints(A, B, &r, SIM_CONTACT_TOL * scale, cp, 16);
+        int nc = contact_cpoints(A, B, &r, SIM_CONTACT_TOL * scale, cp, CONTACT_MAX_POINTS);
         for (int j = 0; j < nc && pts->n < SIM_CLUSTER_ROWS; j++) {
             cpoint *x = &pts->cp[pts->n];
             *x = cp[j];

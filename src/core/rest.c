@@ -217,9 +217,9 @@ bool rest_balanced(world *w, const int *list, int n)
             if (mobile[o] && o < i) continue; /* each pair once */
             const body *A = w->bodies[p->a], *B = w->bodies[p->b];
             closest_result r = pair_query(w, p, A, B);
-            cpoint cp[16];
+            cpoint cp[CONTACT_MAX_POINTS];
             double scale = A->shape.r_out + B->shape.r_out;
-            int nc = contact_cpoints(A, B, &r, SIM_CONTACT_TOL * scale, cp, 16);
+            int nc = contact_cpoints(A, B, &r, SIM_CONTACT_TOL * scale, cp, CONTACT_MAX_POINTS);
             for (int c = 0; c < nc; c++) {
                 if (nr == SIM_CLUSTER_ROWS) {
                     ok = false;

@@ -169,9 +169,9 @@ static int rows_of(world *w, const pair *p, const closest_result *r, double e, i
                    int room)
 {
     const body *A = w->bodies[p->a], *B = w->bodies[p->b];
-    cpoint cp[16];
+    cpoint cp[CONTACT_MAX_POINTS];
     double scale = A->shape.r_out + B->shape.r_out;
-    int nc = contact_cpoints(A, B, r, SIM_CONTACT_TOL * scale, cp, 16), n = 0;
+    int nc = contact_cpoints(A, B, r, SIM_CONTACT_TOL * scale, cp, CONTACT_MAX_POINTS), n = 0;
     for (int c = 0; c < nc && n < room; c++) {
         impulse_row *row = &rows[n++];
         row->p = cp[c].p == 0 ? p->a : p->b;

@@ -161,8 +161,8 @@ static double envelope_time(const body *a, const sched_move *ma, const body *b,
 static int meeting(const body *a, const sched_move *ma, const body *b, const sched_move *mb,
                    const closest_result *r, double tol)
 {
-    cpoint cp[16];
-    int n = contact_cpoints(a, b, r, tol, cp, 16);
+    cpoint cp[CONTACT_MAX_POINTS];
+    int n = contact_cpoints(a, b, r, tol, cp, CONTACT_MAX_POINTS);
     flight_motion fa = flight_motion_of(a, ma->moves, ma->a, ma->held ? &ma->c : NULL);
     flight_motion fb = flight_motion_of(b, mb->moves, mb->a, mb->held ? &mb->c : NULL);
     double scale = 1 + a->shape.r_out + b->shape.r_out;
