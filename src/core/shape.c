@@ -15,23 +15,14 @@
 #include "shape.h"
 
 #include "closest.h"
+#include "errmsg.h"
 
 #include <limits.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 static const double PI = 3.14159265358979323846;
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    if (!err || errlen == 0) return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
 
 /* A hull's failure (poly.h) for a message that names the shape: without the
  * "convex hull: " it starts with. */
@@ -272,7 +263,7 @@ static int build_sphere(shape *s, char *err, size_t errlen)
     ball.a1 = ball.a2 = ball.a3 = r;
     ball.exp1 = ball.exp2 = 1;
     if (sq_count(&ball) < 0 || sq_mesh(&ball, &s->draw) < 0) {
-        set_err(err, errlen, "sphere: resolution %d x %d is too large", s->p.ures,
+        errmsg_set(err, errlen, "sphere: resolution %d x %d is too large", s->p.ures,
                 s->p.vres);
         return -1;
     }
@@ -294,12 +285,12 @@ static int build_cube(shape *s, char *err, size_t errlen)
     else
         s->hull = poly_box(h, why, sizeof why); /* (its hull is known: no qhull run) */
     if (!s->hull) {
-        set_err(err, errlen, "cube: size (%.6g, %.6g, %.6g) cannot be built: %s", h.x, h.y, h.z,
+        errmsg_set(err, errlen, "cube: size (%.6g, %.6g, %.6g) cannot be built: %s", h.x, h.y, h.z,
                 strip_hull(why));
         return -1;
     }
     if (cube_mesh(h, &s->draw) < 0) {
-        set_err(err, errlen, "cube: out of memory");
+        errmsg_set(err, errlen, "cube: out of memory");
         return -1;
     }
     s->mass = box_mass(h);
@@ -311,19 +302,19 @@ static int build_cube(shape *s, char *err, size_t errlen)
 static int build_superquadric(shape *s, char *err, size_t errlen)
 {
     if (sq_count(&s->p) < 0) {
-        set_err(err, errlen, "superquadric: resolution %d x %d is too large", s->p.ures,
+        errmsg_set(err, errlen, "superquadric: resolution %d x %d is too large", s->p.ures,
                 s->p.vres);
         return -1;
     }
     if (sq_mesh(&s->p, &s->draw) < 0) {
-        set_err(err, errlen, "superquadric: out of memory at resolution %d x %d",
+        errmsg_set(err, errlen, "superquadric: out of memory at resolution %d x %d",
                 s->p.ures, s->p.vres);
         return -1;
     }
     char why[200];
     s->hull = poly_hull(s->draw.pos, s->draw.nv, why, sizeof why);
     if (!s->hull) {
-        set_err(err, errlen,
+        errmsg_set(err, errlen,
                 "superquadric: a1 %.6g, a2 %.6g, a3 %.6g with exp1 %.6g, exp2 %.6g cannot be "
                 "built: %s",
                 s->p.a1, s->p.a2, s->p.a3, s->p.exp1, s->p.exp2, strip_hull(why));
@@ -350,7 +341,7 @@ int shape_build(shape *s, const shape_params *p, char *err, size_t errlen)
     case SHAPE_CUBE: rc = build_cube(s, err, errlen); break;
     case SHAPE_SUPERQUADRIC: rc = build_superquadric(s, err, errlen); break;
     default:
-        set_err(err, errlen, "unknown shape kind %d", (int)params.kind);
+        errmsg_set(err, errlen, "unknown shape kind %d", (int)params.kind);
         rc = -1;
     }
     if (rc == 0) { /* the bounding box, in body axes */
@@ -366,7 +357,7 @@ int shape_build(shape *s, const shape_params *p, char *err, size_t errlen)
     }
     /* the Voronoi regions of the hull's features, for closest-feature tracking */
     if (rc == 0 && s->hull && !(s->feat = closest_hull_new(s->hull))) {
-        set_err(err, errlen, "out of memory for the closest-feature data");
+        errmsg_set(err, errlen, "out of memory for the closest-feature data");
         rc = -1;
     }
     if (rc < 0) shape_free(s);
