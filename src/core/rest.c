@@ -157,10 +157,8 @@ void rest_classify(world *w, const int *list, int n)
 static double first_below(double g0, double g1, double g2)
 {
     if (g2 == 0) return g1 < 0 ? -g0 / g1 : HUGE_VAL;
-    double disc = g1 * g1 - 4 * g2 * g0;
-    if (disc < 0) return HUGE_VAL;
-    double q = -0.5 * (g1 + copysign(sqrt(disc), g1));
-    double r1 = q / g2, r2 = q != 0 ? g0 / q : HUGE_VAL, best = HUGE_VAL;
+    double r1, r2, best = HUGE_VAL;
+    if (!quad_roots(g2, g1, g0, &r1, &r2)) return HUGE_VAL;
     if (r1 > 0) best = r1;
     if (r2 > 0 && r2 < best) best = r2;
     return best;

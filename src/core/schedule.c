@@ -31,10 +31,9 @@ static double first_reach(double p0, double p1, double p2, double target, double
     if (p2 == 0) {
         if (p1 > 0) t = -q / p1;
     } else {
-        double disc = p1 * p1 - 4 * p2 * q;
-        if (disc < 0) return HUGE_VAL; /* (only when p2 < 0: it never gets there) */
-        double m = -0.5 * (p1 + copysign(sqrt(disc), p1));
-        double r1 = m / p2, r2 = m != 0 ? q / m : r1;
+        /* (no real root only when p2 < 0: it never gets there) */
+        double r1, r2;
+        if (!quad_roots(p2, p1, q, &r1, &r2)) return HUGE_VAL;
         double small = d_min(r1, r2), big = d_max(r1, r2);
         /* convex: the upward crossing is the larger root; concave: the smaller */
         t = p2 > 0 ? big : small;

@@ -133,10 +133,8 @@ static double envelope_time(const body *a, const sched_move *ma, const body *b,
         if (q == 0) {
             if (c1 < 0) r = -c0 / c1;
         } else {
-            double disc = c1 * c1 - 4 * q * c0;
-            if (disc >= 0) {
-                double m = -0.5 * (c1 + copysign(sqrt(disc), c1));
-                double r1 = m / q, r2 = m != 0 ? c0 / m : r1;
+            double r1, r2;
+            if (quad_roots(q, c1, c0, &r1, &r2)) {
                 if (r1 >= t0 && r1 < r) r = r1;
                 if (r2 >= t0 && r2 < r) r = r2;
             }
