@@ -56,7 +56,7 @@ static double box_area(aabb a)
 static aabb box_grow(aabb a, double r) { return (aabb){v3_sub(a.lo, v3(r, r, r)), v3_add(a.hi, v3(r, r, r))}; }
 
 /* How much wider than an object's shape its box must be: the contact distance
- * (each box takes its half of the pair's, toi_touch), and far more than the
+ * (each box takes its half of the pair's, tol_touch), and far more than the
  * rounding of positions as large as c and reaches as long as reach. */
 static double slack(const body *b, vec3 c, double reach)
 {

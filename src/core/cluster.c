@@ -66,11 +66,10 @@ static void gather(world *w, const int *list, int n, points *pts, double reach)
     for (int k = 0; k < n; k++) in[list[k]] = false;
 }
 
-/* The contact distance of point k's pair. */
+/* The contact distance of point cp's pair. */
 static double touch_at(const world *w, const cpoint *cp)
 {
-    const body *a = w->bodies[cp->p], *b = w->bodies[cp->q];
-    return d_max(SIM_TOUCH, SIM_ROUND_REL * (a->shape.r_out + b->shape.r_out));
+    return tol_touch(w->bodies[cp->p], w->bodies[cp->q]);
 }
 
 /* The fastest any point of the cluster moves (m/s). */

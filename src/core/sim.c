@@ -40,9 +40,6 @@
 
 /* ------------------------------------------------------------ objects and pairs */
 
-/* The contact distance of objects a and b. */
-static double touch_of(const body *a, const body *b) { return toi_touch(a, b); }
-
 /* True when pair p needs searching: one of its objects moves, and they are not
  * pressed together. */
 static bool searched(const world *w, const pair *p)
@@ -493,7 +490,7 @@ static void find_contacts(world *w)
         if ((!a->moved && !b->moved) || a->held || b->held) continue; /* (hold.h) */
         closest_result r = pair_query(w, p, a, b);
         if (r.status == CLOSEST_INVALID) continue;
-        double touch = touch_of(a, b);
+        double touch = tol_touch(a, b);
         if (r.distance <= touch && r.distance >= -touch) {
             p->touching = true;
             p->hit = p->cache;
@@ -661,7 +658,7 @@ long sim_penetrations(world *w, sim_report report, void *ctx)
             /* only what a command placed: the simulation's own states are its own */
             if (p->touching || (!a->moved && !b->moved)) continue;
             closest_result r = pair_query(w, p, a, b);
-            if (r.status == CLOSEST_PENETRATING && r.distance < -touch_of(a, b)) {
+            if (r.status == CLOSEST_PENETRATING && r.distance < -tol_touch(a, b)) {
                 count++;
                 if (report) report(ctx, a, b, -r.distance);
             }

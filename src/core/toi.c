@@ -16,11 +16,6 @@
  * run (the objects pass within the contact distance without meeting). */
 #define TOI_MAX_QUERIES 100000
 
-double toi_touch(const body *a, const body *b)
-{
-    return d_max(SIM_TOUCH, SIM_ROUND_REL * (a->shape.r_out + b->shape.r_out));
-}
-
 /* Objects of at most this many vertices are bounded vertex by vertex as well
  * (envelope_time). */
 #define TOI_ENVELOPE_VERTICES 1024
@@ -199,7 +194,7 @@ toi_output toi_find(world *w, const toi_input *in)
     closest_cache cache = in->cache;
     double t = in->lo;
     const body *A0 = w->bodies[in->a], *B0 = w->bodies[in->b];
-    double touch = toi_touch(A0, B0);
+    double touch = tol_touch(A0, B0);
     double depth0 = 0; /* how deep in the pair was when first found in (by rounding) */
     while (out.queries < TOI_MAX_QUERIES) {
         const body *a = step_flown(w, in->a, t, 0), *b = step_flown(w, in->b, t, 0);

@@ -9,6 +9,9 @@
 #ifndef VROC_TOLERANCE_H
 #define VROC_TOLERANCE_H
 
+#include "body.h"
+#include "vmath.h"
+
 /* Most internal steps one frame may take; more is an error asking for fewer. */
 #define SIM_MAX_SUBFRAMES 1000000L
 
@@ -19,6 +22,13 @@
 /* Relative: distances between objects are known to this fraction of their size
  * (the contact distance grows with it for very large objects). */
 #define SIM_ROUND_REL 1e-13
+
+/* The contact distance of objects a and b: SIM_TOUCH, or more for objects so
+ * large that their distances round to more than it. */
+static inline double tol_touch(const body *a, const body *b)
+{
+    return d_max(SIM_TOUCH, SIM_ROUND_REL * (a->shape.r_out + b->shape.r_out));
+}
 
 /* An impact whose rebound would be slower than this (m/s: e times the closing
  * speed) is perfectly inelastic, when e < 1: the objects stay in contact, and the
