@@ -8,6 +8,7 @@
 #include "impulse.h"
 #include "lcp.h"
 #include "pairs.h"
+#include "rows.h"
 #include "schedule.h"
 #include "step.h"
 #include "tolerance.h"
@@ -21,12 +22,13 @@
 #define CLUSTER_RECOVER_SPEED 1e-3
 
 
-/* A cluster's pressed points: the rows of its impulses and the points they
- * follow. */
+/* A cluster's pressed points: the rows of its impulses, the points they follow
+ * and their gaps when gathered (in `rows`, over row, cp and gap). */
 typedef struct {
-    int n;
     impulse_row row[SIM_CLUSTER_ROWS];
     cpoint cp[SIM_CLUSTER_ROWS]; /* p and q renumbered as body indices */
+    double gap[SIM_CLUSTER_ROWS];
+    row_list rows;
     int np;                      /* the lasting contacts they come from */
     pair *pr[SIM_CLUSTER_ROWS];
 } points;
@@ -35,7 +37,8 @@ typedef struct {
  * of w->bodies (each pair once). */
 static void gather(world *w, const int *list, int n, points *pts, double reach)
 {
-    pts->n = pts->np = 0;
+    pts->rows = (row_list){pts->row, pts->cp, pts->gap, 0, SIM_CLUSTER_ROWS, false};
+    pts->np = 0;
     bool *in = w->step.mark;
     for (int k = 0; k < n; k++) in[list[k]] = true;
     for (int k = 0; k < n; k++) {
@@ -44,23 +47,10 @@ static void gather(world *w, const int *list, int n, points *pts, double reach)
             int o = link->other;
             if (!p->touching || (in[o] && o < i)) continue;
             const body *A = w->bodies[p->a], *B = w->bodies[p->b];
-            double scale = A->shape.r_out + B->shape.r_out;
             closest_result r = pair_query(w, p, A, B);
             if (r.status == CLOSEST_INVALID) continue;
-            cpoint cp[CONTACT_MAX_POINTS];
-            int nc = contact_cpoints(A, B, &r, d_max(SIM_CONTACT_TOL * scale, reach), cp, CONTACT_MAX_POINTS);
             if (pts->np < SIM_CLUSTER_ROWS) pts->pr[pts->np++] = p;
-            for (int c = 0; c < nc && pts->n < SIM_CLUSTER_ROWS; c++) {
-                cpoint *x = &pts->cp[pts->n];
-                *x = cp[c];
-                x->p = cp[c].p == 0 ? p->a : p->b;
-                x->q = cp[c].p == 0 ? p->b : p->a;
-                impulse_row *row = &pts->row[pts->n++];
-                row->p = x->p;
-                row->q = x->q;
-                row->e = 0;
-                cpoint_eval(x, w->bodies[x->p], w->bodies[x->q], &row->n, &row->at);
-            }
+            rows_add(&pts->rows, p, A, B, &r, d_max(tol_contact(A, B), reach), 0, w->bodies);
         }
     }
     for (int k = 0; k < n; k++) in[list[k]] = false;
@@ -101,7 +91,7 @@ static int deepest_rows(world *w, points *pts, body **bs, double *floor_gap, dou
                         double h)
 {
     int added = 0;
-    for (int c = 0; c < pts->np && pts->n < SIM_CLUSTER_ROWS; c++) {
+    for (int c = 0; c < pts->np && pts->rows.n < SIM_CLUSTER_ROWS; c++) {
         pair *p = pts->pr[c];
         const body *A = bs[p->a], *B = bs[p->b];
         closest_cache cache = p->cache;
@@ -118,27 +108,16 @@ static int deepest_rows(world *w, points *pts, body **bs, double *floor_gap, dou
             }
         }
         if (!(least < HUGE_VAL) || r.distance >= least - tol) continue;
-        /* their points there (material points and features, so rows now) */
-        cpoint cp[CONTACT_MAX_POINTS];
-        double scale = A->shape.r_out + B->shape.r_out;
-        int nc = contact_cpoints(A, B, &r, SIM_CONTACT_TOL * scale, cp, CONTACT_MAX_POINTS);
-        for (int j = 0; j < nc && pts->n < SIM_CLUSTER_ROWS; j++) {
-            cpoint *x = &pts->cp[pts->n];
-            *x = cp[j];
-            x->p = cp[j].p == 0 ? p->a : p->b;
-            x->q = cp[j].p == 0 ? p->b : p->a;
-            impulse_row *row = &pts->row[pts->n];
-            row->p = x->p;
-            row->q = x->q;
-            row->e = 0;
+        /* their points there (material points and features, so rows now): their
+         * gaps now set their floors, and their gaps there what is left */
+        int first = pts->rows.n, nc = rows_add(&pts->rows, p, A, B, &r, tol_contact(A, B), 0, w->bodies);
+        for (int k = first; k < first + nc; k++) {
+            const cpoint *x = &pts->cp[k];
             vec3 nn, at;
-            double g1 = cpoint_eval(x, bs[x->p], bs[x->q], &nn, &at);
-            double g0 = cpoint_eval(x, w->bodies[x->p], w->bodies[x->q], &row->n, &row->at);
-            int k = pts->n++;
-            floor_gap[k] = floor_of(w, x, g0, h);
-            gap[k] = g1 - floor_gap[k];
-            added++;
+            floor_gap[k] = floor_of(w, x, pts->gap[k], h);
+            gap[k] = cpoint_eval(x, bs[x->p], bs[x->q], &nn, &at) - floor_gap[k];
         }
+        added += nc;
     }
     return added;
 }
@@ -151,7 +130,7 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end)
     points pts;
     /* the points that could close within the step: its motion, twice over */
     gather(w, list, n, &pts, 2 * s * h);
-    int m = pts.n;
+    int m = pts.rows.n;
     if (m == 0 || !(h > 0)) return h;
     body **bs = w->step.now;
     bool *mobile = w->step.mark;
@@ -163,11 +142,7 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end)
     for (int k = 0; k < m; k++) lam[k] = 0;
     vec3 g = world_accel(w);
     double floor_gap[SIM_CLUSTER_ROWS];
-    for (int k = 0; k < m; k++) {
-        vec3 nn, at;
-        double g0 = cpoint_eval(&pts.cp[k], bs[pts.cp[k].p], bs[pts.cp[k].q], &nn, &at);
-        floor_gap[k] = floor_of(w, &pts.cp[k], g0, h);
-    }
+    for (int k = 0; k < m; k++) floor_gap[k] = floor_of(w, &pts.cp[k], pts.gap[k], h);
     for (int it = 0; it < CLUSTER_NEWTON; it++) {
         /* the gaps at the step's end after kicks lam: each object's copy kicked,
          * flown freely */
@@ -228,11 +203,8 @@ void cluster_settle(world *w, const int *list, int n)
     impulse_row rows[SIM_CLUSTER_ROWS];
     double u[SIM_CLUSTER_ROWS], lam[SIM_CLUSTER_ROWS];
     int m = 0;
-    for (int k = 0; k < pts.n; k++) {
-        vec3 nn, at;
-        double gp = cpoint_eval(&pts.cp[k], w->bodies[pts.cp[k].p], w->bodies[pts.cp[k].q], &nn, &at);
-        if (gp <= touch_at(w, &pts.cp[k])) rows[m++] = pts.row[k];
-    }
+    for (int k = 0; k < pts.rows.n; k++)
+        if (pts.gap[k] <= touch_at(w, &pts.cp[k])) rows[m++] = pts.row[k];
     for (int k = 0; k < n; k++) mobile[list[k]] = true;
     for (int k = 0; k < m; k++) u[k] = impulse_speed(&rows[k], bs);
     if (m > 0) impulse_solve(rows, m, bs, mobile, u, lam, w->step.lcp);

@@ -8,6 +8,7 @@
 #include "contact.h"
 #include "impulse.h"
 #include "pairs.h"
+#include "rows.h"
 #include "schedule.h"
 #include "step.h"
 #include "tolerance.h"
@@ -198,7 +199,7 @@ bool rest_balanced(world *w, const int *list, int n)
     body **bs = w->step.now;
     bool *mobile = w->step.mark;
     impulse_row rows[SIM_CLUSTER_ROWS] = {{0}};
-    int nr = 0;
+    row_list rl = {rows, NULL, NULL, 0, SIM_CLUSTER_ROWS, false};
     bool ok = true;
     for (int k = 0; k < n; k++) {
         int i = list[k];
@@ -215,23 +216,11 @@ bool rest_balanced(world *w, const int *list, int n)
             if (mobile[o] && o < i) continue; /* each pair once */
             const body *A = w->bodies[p->a], *B = w->bodies[p->b];
             closest_result r = pair_query(w, p, A, B);
-            cpoint cp[CONTACT_MAX_POINTS];
-            double scale = A->shape.r_out + B->shape.r_out;
-            int nc = contact_cpoints(A, B, &r, SIM_CONTACT_TOL * scale, cp, CONTACT_MAX_POINTS);
-            for (int c = 0; c < nc; c++) {
-                if (nr == SIM_CLUSTER_ROWS) {
-                    ok = false;
-                    break;
-                }
-                int P = cp[c].p == 0 ? p->a : p->b, Q = cp[c].p == 0 ? p->b : p->a;
-                impulse_row *row = &rows[nr++];
-                row->p = P;
-                row->q = Q;
-                row->e = 0;
-                cpoint_eval(&cp[c], w->bodies[P], w->bodies[Q], &row->n, &row->at);
-            }
+            rows_add(&rl, p, A, B, &r, tol_contact(A, B), 0, w->bodies);
+            ok = !rl.full;
         }
     }
+    int nr = rl.n;
     double lambda[SIM_CLUSTER_ROWS] = {0}, u[SIM_CLUSTER_ROWS] = {0};
     for (int k = 0; k < nr; k++) u[k] = impulse_speed(&rows[k], bs);
     if (ok && nr > 0) ok = impulse_solve(rows, nr, bs, mobile, u, lambda, w->step.lcp) == 0;

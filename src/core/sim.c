@@ -33,6 +33,7 @@
 #include "impulse.h"
 #include "pairs.h"
 #include "rest.h"
+#include "rows.h"
 #include "schedule.h"
 #include "step.h"
 #include "toi.h"
@@ -159,24 +160,13 @@ static bool limit_all(world *w, const int *list, int n)
 
 /* ------------------------------------------------------------ answering */
 
-/* The rows of pair p's contact points (its objects in the states of w->bodies, r
- * their closest result, e the restitution of every row) appended to rows; the
- * count appended. */
-static int rows_of(world *w, const pair *p, const closest_result *r, double e, impulse_row *rows,
-                   int room)
+/* Appends the rows of pair p's contact points (its objects in the states of
+ * w->bodies, r their closest result, e the restitution of every row); returns how
+ * many. */
+static int rows_of(world *w, row_list *l, const pair *p, const closest_result *r, double e)
 {
     const body *A = w->bodies[p->a], *B = w->bodies[p->b];
-    cpoint cp[CONTACT_MAX_POINTS];
-    double scale = A->shape.r_out + B->shape.r_out;
-    int nc = contact_cpoints(A, B, r, SIM_CONTACT_TOL * scale, cp, CONTACT_MAX_POINTS), n = 0;
-    for (int c = 0; c < nc && n < room; c++) {
-        impulse_row *row = &rows[n++];
-        row->p = cp[c].p == 0 ? p->a : p->b;
-        row->q = cp[c].p == 0 ? p->b : p->a;
-        row->e = e;
-        cpoint_eval(&cp[c], w->bodies[row->p], w->bodies[row->q], &row->n, &row->at);
-    }
-    return n;
+    return rows_add(l, p, A, B, r, tol_contact(A, B), e, w->bodies);
 }
 
 /* Held body i stops where it is at time t, until the hand sets its motion again
@@ -220,7 +210,8 @@ static void answer_contact(world *w, long k, double t, double t_end)
     impulse_row rows[IMPULSE_MAX_ROWS];
     const body *A = w->bodies[p->a], *B = w->bodies[p->b];
     double e = d_min(A->elasticity, B->elasticity);
-    int own = rows_of(w, p, &w->pairs.hits[k].r, e, rows, IMPULSE_MAX_ROWS), nr = own;
+    row_list rl = {rows, NULL, NULL, 0, IMPULSE_MAX_ROWS, false};
+    int own = rows_of(w, &rl, p, &w->pairs.hits[k].r, e);
     bool *mobile = w->step.mark;
     for (int j = 0; j < n; j++) mobile[mine[j]] = true;
     for (int j = 0; j < n; j++) {
@@ -229,9 +220,10 @@ static void answer_contact(world *w, long k, double t, double t_end)
             int other = link->other;
             if (!o->touching || o == p || (mobile[other] && other < i)) continue;
             closest_result r = pair_query(w, o, w->bodies[o->a], w->bodies[o->b]);
-            nr += rows_of(w, o, &r, 0, rows + nr, IMPULSE_MAX_ROWS - nr);
+            rows_of(w, &rl, o, &r, 0);
         }
     }
+    int nr = rl.n;
     double u[IMPULSE_MAX_ROWS], lambda[IMPULSE_MAX_ROWS], closing = 0;
     double scale = 1 + A->shape.r_out + B->shape.r_out;
     for (int r = 0; r < nr; r++) {

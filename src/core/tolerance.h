@@ -52,6 +52,13 @@ static inline double tol_touch(const body *a, const body *b)
  * outer radii) of the contact plane are in contact (the contact region). */
 #define SIM_CONTACT_TOL 1e-6
 
+/* The thickness of the contact region of objects a and b (SIM_CONTACT_TOL of their
+ * size). */
+static inline double tol_contact(const body *a, const body *b)
+{
+    return SIM_CONTACT_TOL * (a->shape.r_out + b->shape.r_out);
+}
+
 /* The gap (relative to the sizes, as SIM_CONTACT_TOL) at which lasting contacts
  * are kept, by a cluster's kicks and a slide's start: a little way apart, so
  * that their queries find them apart (cheap) rather than in (a depth to
