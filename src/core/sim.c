@@ -89,12 +89,12 @@ static void set_event(world *w, int i, double t)
     sched_set(w, sched_obj_id(i), t);
 }
 
-/* The broad phase holds moving object i, flying from time t, until the end of the
- * step (broad.h); same: on the motion of its last flight. */
-static void hold_box(world *w, int i, double t, bool same)
+/* Moving object i's box covers it, flying from time t, until the end of the step
+ * (broad.h); same: on the motion of its last flight. */
+static void cover_box(world *w, int i, double t, bool same)
 {
-    if (same && w->step.t_end <= w->broad.until[i]) return; /* (broad_hold's first test) */
-    if (step_moves(w, i) && broad_hold(w, i, t, w->step.t_end, same) != 0) w->out_of_memory = true;
+    if (same && w->step.t_end <= w->broad.until[i]) return; /* (broad_cover's first test) */
+    if (step_moves(w, i) && broad_cover(w, i, t, w->step.t_end, same) != 0) w->out_of_memory = true;
 }
 
 /* Object i flies on from time t as it is now (a slide: until it leaves its face). */
@@ -105,7 +105,7 @@ static void restart(world *w, int i, double t)
     double ev = HUGE_VAL;
     if (step_moves(w, i) && b->mode == MODE_SLIDE) ev = rest_slide_exit(w, i, t);
     set_event(w, i, ev);
-    hold_box(w, i, t, false);
+    cover_box(w, i, t, false);
     reschedule(w, i, t); /* (the pairs its box just made among them) */
     w->pairs.nfresh = 0;
 }
@@ -424,7 +424,7 @@ static void internal_step(world *w, double t_end, bool fresh)
     w->step.t_end = t_end;
     /* every moving object's flight starts afresh where it is (a free flight goes
      * on within a frame: the frame's start, where a save may be, is where it
-     * starts), and its box holds it to the step's end */
+     * starts), and its box covers it to the step's end */
     if (!fresh) /* what was searched for went no further than the last step */
         for (long k = 0; k < w->pairs.n; k++) w->pairs.p[k].toi_fa = w->pairs.p[k].toi_fb = -1;
     for (int i = 0; i < w->n; i++) {
@@ -434,7 +434,7 @@ static void internal_step(world *w, double t_end, bool fresh)
             step_start(w, i, t);
         double ev = b->mode == MODE_SLIDE ? rest_slide_exit(w, i, t) : HUGE_VAL;
         set_event(w, i, ev);
-        if (w->step.t_end > w->broad.until[i]) hold_box(w, i, t, true); /* (its first test, here
+        if (w->step.t_end > w->broad.until[i]) cover_box(w, i, t, true); /* (its first test, here
                                                                         * without a call) */
     }
     schedule_fresh(w, t);
@@ -527,7 +527,7 @@ static int start_over(world *w, double t_end)
     for (int i = 0; i < w->n; i++) {
         step_start(w, i, w->time);
         w->step.event[i] = HUGE_VAL; /* (sched_build: every object's at +inf) */
-        hold_box(w, i, w->time, false);
+        cover_box(w, i, w->time, false);
     }
     if (w->out_of_memory || sched_build(w, w->time) != 0) return -1;
     w->pairs.nfresh = 0; /* (every pair gets its bound below) */
