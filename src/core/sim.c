@@ -33,82 +33,14 @@
 #include "impulse.h"
 #include "pairs.h"
 #include "rest.h"
+#include "retime.h"
 #include "rows.h"
 #include "schedule.h"
 #include "step.h"
 #include "toi.h"
 #include "tolerance.h"
 
-/* ------------------------------------------------------------ objects and pairs */
-
-/* True when pair p needs searching: one of its objects moves, and they are not
- * pressed together. */
-static bool searched(const world *w, const pair *p)
-{
-    return !p->touching && (step_moves(w, p->a) || step_moves(w, p->b));
-}
-
-/* Pair k's cheap bound from time t, as its objects fly now (t itself for a held
- * object's: no bound foresees the hand). */
-static double bound_from(world *w, long k, double t)
-{
-    pair *p = &w->pairs.p[k];
-    if (!searched(w, p)) return HUGE_VAL;
-    const body *a = step_flown(w, p->a, t, 1), *b = step_flown(w, p->b, t, 1);
-    sched_move ma = step_move(w, p->a, a), mb = step_move(w, p->b, b);
-    double dt = sched_sphere_time(a, &ma, b, &mb);
-    return dt == HUGE_VAL ? dt : t + dt;
-}
-
-/* Object i's flight changed at time t: what was found of its pairs holds no
- * more; each gets its cheap bound. */
-static void reschedule(world *w, int i, double t)
-{
-    FOR_PAIRS_OF(w, i, link, p) {
-        p->toi_fa = p->toi_fb = -1;
-        sched_set(w, sched_pair_id(&w->sched, link->slot), bound_from(w, link->slot, t));
-    }
-}
-
-/* The pairs the broad phase made since the last call get their cheap bounds from
- * time t. */
-static void schedule_fresh(world *w, double t)
-{
-    if (w->pairs.nfresh == 0) return;
-    long n;
-    const long *fresh = pairs_take_fresh(w, &n);
-    for (long k = 0; k < n; k++)
-        if (w->pairs.p[fresh[k]].a >= 0)
-            sched_set(w, sched_pair_id(&w->sched, fresh[k]), bound_from(w, fresh[k], t));
-}
-
-/* Object i's own next event. */
-static void set_event(world *w, int i, double t)
-{
-    w->step.event[i] = t;
-    sched_set(w, sched_obj_id(i), t);
-}
-
-/* Moving object i's box covers it, flying from time t, until the end of the step
- * (broad.h); same: on the motion of its last flight. */
-static void cover_box(world *w, int i, double t, bool same)
-{
-    if (same && w->step.t_end <= w->broad.until[i]) return; /* (broad_cover's first test) */
-    if (step_moves(w, i) && broad_cover(w, i, t, w->step.t_end, same) != 0) w->out_of_memory = true;
-}
-
-/* Object i flies on from time t as it is now (a slide: until it leaves its face). */
-static void restart(world *w, int i, double t)
-{
-    step_start(w, i, t);
-    const body *b = w->bodies[i];
-    double ev = HUGE_VAL;
-    if (step_moves(w, i) && b->mode == MODE_SLIDE) ev = rest_slide_exit(w, i, t);
-    set_event(w, i, ev);
-    cover_box(w, i, t, false);
-    reschedule(w, i, t); /* (the pairs its box just made among them) */
-    w->pairs.nfresh = 0;
-}
+/* ------------------------------------------------------------ answering */
 
 /* The clusters among the n objects of list (their states at time t) start a step:
  * the kicks, then their flights until the step's end. */
@@ -125,8 +57,8 @@ static void begin_clusters(world *w, const int *list, int n, double t, double t_
         int m = rest_cluster(w, i, k_list);
         double h = cluster_kick(w, k_list, m, t, t_end);
         for (int j = 0; j < m; j++) {
-            restart(w, k_list[j], t);
-            set_event(w, k_list[j], t + h);
+            retime_object(w, k_list[j], t);
+            retime_event(w, k_list[j], t + h);
         }
     }
     free(k_list);
@@ -158,8 +90,6 @@ static bool limit_all(world *w, const int *list, int n)
     return cut;
 }
 
-/* ------------------------------------------------------------ answering */
-
 /* Appends the rows of pair p's contact points (its objects in the states of
  * w->bodies, r their closest result, e the restitution of every row); returns how
  * many. */
@@ -177,7 +107,7 @@ static void hold_stop(world *w, int i, double t)
     step_sync(w, i, t);
     b->hold_v = b->v = v3(0, 0, 0);
     body_set_angular_vel(b, v3(0, 0, 0));
-    restart(w, i, t);
+    retime_object(w, i, t);
 }
 
 /* Answers pair k's contact at time t: the impulses of its points and of every
@@ -272,8 +202,8 @@ static void answer_contact(world *w, long k, double t, double t_end)
         if (impulse_speed(&rows[r], w->step.now) <= open) p->touching = true;
     }
     rest_classify(w, mine, n);
-    for (int j = 0; j < n; j++) restart(w, mine[j], t);
-    if (hand) restart(w, held, t);
+    for (int j = 0; j < n; j++) retime_object(w, mine[j], t);
+    if (hand) retime_object(w, held, t);
     begin_clusters(w, mine, n, t, t_end);
     free(mine);
 }
@@ -290,7 +220,7 @@ static void answer_object(world *w, int i, double t, double t_end)
         step_sync(w, i, t);
         b->mode = MODE_GENERAL;
         b->slide_on = -1;
-        restart(w, i, t);
+        retime_object(w, i, t);
         begin_clusters(w, &i, 1, t, t_end);
         return;
     }
@@ -301,7 +231,7 @@ static void answer_object(world *w, int i, double t, double t_end)
     for (int j = 0; j < n; j++) step_sync(w, mine[j], t);
     cluster_settle(w, mine, n);
     rest_classify(w, mine, n);
-    for (int j = 0; j < n; j++) restart(w, mine[j], t);
+    for (int j = 0; j < n; j++) retime_object(w, mine[j], t);
     if (t < t_end) begin_clusters(w, mine, n, t, t_end);
     free(mine);
 }
@@ -377,7 +307,7 @@ static next_event find_next(world *w, double t_step, double t_end)
     next_event best = {HUGE_VAL, -1, -1, -1, -1};
     if (!w->set.collision_heap) {
         for (long k = 0; k < w->pairs.n; k++) {
-            if (w->pairs.p[k].a < 0 || !searched(w, &w->pairs.p[k])) continue;
+            if (w->pairs.p[k].a < 0 || !retime_searched(w, &w->pairs.p[k])) continue;
             double again, t = search(w, k, t_step, t_end, &again);
             next_event e = pair_event(w, t, k);
             if (t <= t_end && earlier(&e, &best)) best = e;
@@ -433,11 +363,11 @@ static void internal_step(world *w, double t_end, bool fresh)
         if (fresh || b->mode != MODE_FREE || b->held || w->step.fl[i].kind != FLIGHT_FREE)
             step_start(w, i, t);
         double ev = b->mode == MODE_SLIDE ? rest_slide_exit(w, i, t) : HUGE_VAL;
-        set_event(w, i, ev);
-        if (w->step.t_end > w->broad.until[i]) cover_box(w, i, t, true); /* (its first test, here
-                                                                        * without a call) */
+        retime_event(w, i, ev);
+        /* (retime_box's first test, here without a call) */
+        if (w->step.t_end > w->broad.until[i]) retime_box(w, i, t, true);
     }
-    schedule_fresh(w, t);
+    retime_fresh(w, t);
     /* clusters start their steps (their kicks change their flights) */
     for (int i = 0; i < w->n; i++) {
         const body *b = w->bodies[i];
@@ -527,12 +457,12 @@ static int start_over(world *w, double t_end)
     for (int i = 0; i < w->n; i++) {
         step_start(w, i, w->time);
         w->step.event[i] = HUGE_VAL; /* (sched_build: every object's at +inf) */
-        cover_box(w, i, w->time, false);
+        retime_box(w, i, w->time, false);
     }
     if (w->out_of_memory || sched_build(w, w->time) != 0) return -1;
     w->pairs.nfresh = 0; /* (every pair gets its bound below) */
     for (long k = 0; k < w->pairs.n; k++)
-        if (w->pairs.p[k].a >= 0) sched_set(w, sched_pair_id(&w->sched, k), bound_from(w, k, w->time));
+        if (w->pairs.p[k].a >= 0) sched_set(w, sched_pair_id(&w->sched, k), retime_bound(w, k, w->time));
     w->sched_dirty = false;
     return 0;
 }
@@ -611,7 +541,7 @@ int sim_frame_hooked(world *w, const sim_hook *hook, char *err, size_t errlen)
     if (rest_frame_end(w) > 0) {
         for (int i = 0; i < w->n; i++) {
             if (w->bodies[i]->state != STATE_RESTING) continue;
-            restart(w, i, w->time);
+            retime_object(w, i, w->time);
         }
     }
     if (w->set.time_step != w->base_step || w->time_base + (double)w->base_frames * w->base_step != t0) {
