@@ -1,23 +1,21 @@
-/* sim.c: frames, internal steps and their events (thesis 3.2.3, 3.3, 3.4.2;
- * design.md, "Dynamics").
+/* sim.c: frames, internal steps and the order of their events (thesis 3.2.3,
+ * 3.3, 3.4.2; design.md, "Dynamics").
  *
  * An internal step starts every moving object's flight afresh from where it is
- * (flight.h) and then answers the step's events in the order they happen, each at
- * its own instant:
+ * (flight.h), then finds the step's events in the order they happen and has each
+ * answered at its own instant (answer.h):
  *  - a pair's first contact (toi.h: conservative advancement, so nothing is
- *    passed): the impulses of the colliding points and of every lasting contact of
- *    the objects pressed together with them, answered together (impulse.h), then
- *    the modes of all of them (rest.h);
- *  - a slide whose object's centre of mass leaves the face (rest.h): the object
- *    tips or pivots over the edge, or leaves it, as a cluster decides;
+ *    passed), searched for the pairs the schedule says are due (schedule.h);
+ *  - a slide whose object's centre of mass leaves the face (rest.h);
  *  - the end of a cluster's step (cluster.h).
- * Each event changes the flights of the objects it touches from its instant on;
- * every other object flies on as it did, and what was found of its pairs holds.
- * Events at the same instant are answered in a fixed order (pairs before objects,
- * each by index), and which pairs are searched (the heap's due ones, or all of
- * them) changes no answer: a search depends on its pair's flights alone.  The
- * frame ends with the thesis's rule of rest (rest_frame_end).  Each collision
- * answered goes into the frame's events.
+ * Each event changes the flights of the objects it touches from its instant on
+ * (retime.h); every other object flies on as it did, and what was found of its
+ * pairs holds.  Events at the same instant are answered in a fixed order (pairs
+ * before objects, each by index), and which pairs are searched (the heap's due
+ * ones, or all of them) changes no answer: a search depends on its pair's flights
+ * alone.  The frame ends with the thesis's rule of rest (rest_frame_end).  As
+ * Box2D's b2World_Step sits beside its contact_solver.c, this file keeps the
+ * frame, the step and the loop over the events; answering them is answer.c's.
  */
 #include "sim.h"
 
@@ -27,214 +25,15 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "answer.h"
 #include "broad.h"
-#include "cluster.h"
-#include "contact.h"
-#include "impulse.h"
 #include "pairs.h"
 #include "rest.h"
 #include "retime.h"
-#include "rows.h"
 #include "schedule.h"
 #include "step.h"
 #include "toi.h"
 #include "tolerance.h"
-
-/* ------------------------------------------------------------ answering */
-
-/* The clusters among the n objects of list (their states at time t) start a step:
- * the kicks, then their flights until the step's end. */
-static void begin_clusters(world *w, const int *list, int n, double t, double t_end)
-{
-    int *k_list = malloc((size_t)w->n * sizeof *k_list);
-    if (!k_list) return;
-    for (int k = 0; k < n; k++) {
-        int i = list[k];
-        const body *b = w->bodies[i];
-        /* (a cluster begun already has its step's end as its objects' event) */
-        if (b->state != STATE_DYNAMIC || b->mode != MODE_GENERAL || w->step.event[i] != HUGE_VAL)
-            continue;
-        int m = rest_cluster(w, i, k_list);
-        double h = cluster_kick(w, k_list, m, t, t_end);
-        for (int j = 0; j < m; j++) {
-            retime_object(w, k_list[j], t);
-            retime_event(w, k_list[j], t + h);
-        }
-    }
-    free(k_list);
-}
-
-/* The speed limits, where a collision set a speed: |v| <= max_linear, |w| <=
- * max_angular (L scaled down). */
-static bool limit_speeds(world *w, body *b)
-{
-    double vl = v3_len(b->v), wl = v3_len(b->w);
-    bool cut = false;
-    if (vl > w->set.max_linear) {
-        b->v = v3_scale(b->v, w->set.max_linear / vl);
-        cut = true;
-    }
-    if (wl > w->set.max_angular) {
-        b->L = v3_scale(b->L, w->set.max_angular / wl);
-        body_update_w(b);
-        cut = true;
-    }
-    return cut;
-}
-
-/* The speed limits on the n objects of list; true when one was cut. */
-static bool limit_all(world *w, const int *list, int n)
-{
-    bool cut = false;
-    for (int j = 0; j < n; j++) cut = limit_speeds(w, w->bodies[list[j]]) || cut;
-    return cut;
-}
-
-/* Appends the rows of pair p's contact points (its objects in the states of
- * w->bodies, r their closest result, e the restitution of every row); returns how
- * many. */
-static int rows_of(world *w, row_list *l, const pair *p, const closest_result *r, double e)
-{
-    const body *A = w->bodies[p->a], *B = w->bodies[p->b];
-    return rows_add(l, p, A, B, r, tol_contact(A, B), e, w->bodies);
-}
-
-/* Held body i stops where it is at time t, until the hand sets its motion again
- * (hold.h): it met what cannot give way. */
-static void hold_stop(world *w, int i, double t)
-{
-    body *b = w->bodies[i];
-    step_sync(w, i, t);
-    b->hold_v = b->v = v3(0, 0, 0);
-    body_set_angular_vel(b, v3(0, 0, 0));
-    retime_object(w, i, t);
-}
-
-/* Answers pair k's contact at time t: the impulses of its points and of every
- * lasting contact of the objects pressed together with them, answered together;
- * then the modes and flights of all of them.  A held object (hold.h) is not
- * moved by them: it pushes with its velocity as an infinite mass would, and stops
- * against a static or held object, or one that cannot give way. */
-static void answer_contact(world *w, long k, double t, double t_end)
-{
-    pair *p = &w->pairs.p[k];
-    int seeds[2], ns = 0, *list = w->step.list;
-    bool ha = w->bodies[p->a]->held, hb = w->bodies[p->b]->held, hand = ha || hb;
-    if (!body_is_static(w->bodies[p->a]) && !ha) seeds[ns++] = p->a;
-    if (!body_is_static(w->bodies[p->b]) && !hb) seeds[ns++] = p->b;
-    if (hand && ns == 0) {
-        w->time = t;
-        if (ha) hold_stop(w, p->a, t);
-        if (hb) hold_stop(w, p->b, t);
-        return;
-    }
-    int n = rest_component(w, seeds, ns, list);
-    int *mine = malloc((size_t)(n > 0 ? n : 1) * sizeof *mine);
-    if (!mine) return;
-    memcpy(mine, list, (size_t)n * sizeof *mine);
-    for (int j = 0; j < n; j++) step_sync(w, mine[j], t);
-    int held = ha ? p->a : hb ? p->b : -1;
-    if (hand) step_sync(w, held, t);
-    w->time = t;
-    /* the rows: the contact's own, then the lasting contacts' */
-    impulse_row rows[IMPULSE_MAX_ROWS];
-    const body *A = w->bodies[p->a], *B = w->bodies[p->b];
-    double e = d_min(A->elasticity, B->elasticity);
-    row_list rl = {rows, NULL, NULL, 0, IMPULSE_MAX_ROWS, false};
-    int own = rows_of(w, &rl, p, &w->pairs.hits[k].r, e);
-    bool *mobile = w->step.mark;
-    for (int j = 0; j < n; j++) mobile[mine[j]] = true;
-    for (int j = 0; j < n; j++) {
-        int i = mine[j];
-        FOR_PAIRS_OF(w, i, link, o) {
-            int other = link->other;
-            if (!o->touching || o == p || (mobile[other] && other < i)) continue;
-            closest_result r = pair_query(w, o, w->bodies[o->a], w->bodies[o->b]);
-            rows_of(w, &rl, o, &r, 0);
-        }
-    }
-    int nr = rl.n;
-    double u[IMPULSE_MAX_ROWS], lambda[IMPULSE_MAX_ROWS], closing = 0;
-    double scale = 1 + A->shape.r_out + B->shape.r_out;
-    for (int r = 0; r < nr; r++) {
-        u[r] = impulse_speed(&rows[r], w->step.now);
-        if (r < own) closing = d_max(closing, -u[r]);
-        /* a rebound too slow to see is no rebound: they stay in contact */
-        if (rows[r].e < 1 && rows[r].e * -u[r] < SIM_BOUNCE_SPEED) rows[r].e = 0;
-        /* but nothing stays on a held object: it parts at that speed */
-        if (hand && r < own && rows[r].e == 0) u[r] -= SIM_BOUNCE_SPEED;
-    }
-    bool solved = impulse_solve(rows, nr, w->step.now, mobile, u, lambda, w->step.lcp) == 0;
-    if (!solved && own < nr) /* too many: the contact's own points alone */
-        solved = impulse_solve(rows, own, w->step.now, mobile, u, lambda, w->step.lcp) == 0;
-    if (solved && limit_all(w, mine, n)) {
-        /* the limits must not turn a point back into its contact: those that would
-         * approach again stop there */
-        double u2[IMPULSE_MAX_ROWS], l2[IMPULSE_MAX_ROWS];
-        for (int r = 0; r < nr; r++) {
-            rows[r].e = 0;
-            u2[r] = d_min(0, impulse_speed(&rows[r], w->step.now));
-        }
-        if (impulse_solve(rows, nr, w->step.now, mobile, u2, l2, w->step.lcp) == 0)
-            for (int r = 0; r < nr; r++) lambda[r] += l2[r];
-    }
-    for (int j = 0; j < n; j++) mobile[mine[j]] = false;
-    if (!solved && hand) hold_stop(w, held, t); /* what it pushes cannot give way */
-    else if (!solved) w->st.restarts++;
-    /* the event: the contact's own impulses */
-    double j_sum = 0;
-    vec3 at = v3(0, 0, 0);
-    for (int r = 0; r < own && solved; r++) {
-        j_sum += lambda[r];
-        at = v3_mad(at, rows[r].at, lambda[r]);
-    }
-    if (j_sum > 0) {
-        w->st.collisions++;
-        vec3 nab = w->pairs.hits[k].r.normal; /* from b to a */
-        world_event(w, &(sim_event){t, p->a, p->b, v3_scale(at, 1 / j_sum), nab, j_sum, closing});
-    }
-    /* they stay in contact where a point of theirs no longer moves apart (never
-     * with a held object: each of its contacts is a collision) */
-    p->hit = w->pairs.hits[k].cache;
-    for (int r = 0; r < own && !hand; r++) {
-        /* (a lossy contact that opens too slowly to see a rebound: none) */
-        double open = rows[r].e < 1 || e < 1 ? SIM_BOUNCE_SPEED : 1e3 * SIM_SPEED_ROUND * scale;
-        if (impulse_speed(&rows[r], w->step.now) <= open) p->touching = true;
-    }
-    rest_classify(w, mine, n);
-    for (int j = 0; j < n; j++) retime_object(w, mine[j], t);
-    if (hand) retime_object(w, held, t);
-    begin_clusters(w, mine, n, t, t_end);
-    free(mine);
-}
-
-/* Answers object i's own event at time t: a slide leaving its face, or the end
- * of its cluster's step. */
-static void answer_object(world *w, int i, double t, double t_end)
-{
-    int *list = w->step.list;
-    body *b = w->bodies[i];
-    w->time = t;
-    if (b->mode == MODE_SLIDE) {
-        /* over the edge: the cluster's steps decide what it does there */
-        step_sync(w, i, t);
-        b->mode = MODE_GENERAL;
-        b->slide_on = -1;
-        retime_object(w, i, t);
-        begin_clusters(w, &i, 1, t, t_end);
-        return;
-    }
-    int n = rest_cluster(w, i, list);
-    int *mine = malloc((size_t)(n > 0 ? n : 1) * sizeof *mine);
-    if (!mine) return;
-    memcpy(mine, list, (size_t)n * sizeof *mine);
-    for (int j = 0; j < n; j++) step_sync(w, mine[j], t);
-    cluster_settle(w, mine, n);
-    rest_classify(w, mine, n);
-    for (int j = 0; j < n; j++) retime_object(w, mine[j], t);
-    if (t < t_end) begin_clusters(w, mine, n, t, t_end);
-    free(mine);
-}
 
 /* ------------------------------------------------------------ finding the next */
 
@@ -372,7 +171,7 @@ static void internal_step(world *w, double t_end, bool fresh)
     for (int i = 0; i < w->n; i++) {
         const body *b = w->bodies[i];
         if (step_moves(w, i) && b->mode == MODE_GENERAL && w->step.event[i] == HUGE_VAL)
-            begin_clusters(w, &i, 1, t, t_end);
+            answer_clusters(w, &i, 1, t, t_end);
     }
     for (int n = 0;; n++) {
         next_event e = find_next(w, t, t_end);
