@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "cluster.h"
+#include "grow.h"
 #include "impulse.h"
 #include "pairs.h"
 #include "rest.h"
@@ -26,10 +27,54 @@
 #include "tolerance.h"
 #include "world.h"
 
+void answer_init(answer_scratch *s)
+{
+    memset(s, 0, sizeof *s);
+}
+
+void answer_free(answer_scratch *s)
+{
+    free(s->objects);
+    free(s->cluster);
+    free(s->classify);
+    free(s->kicked);
+    free(s->balanced);
+    free(s->now);
+    free(s->mark);
+    free(s->lcp);
+    answer_init(s);
+}
+
+int answer_prepare(world *w, bool changed)
+{
+    answer_scratch *s = &w->answer;
+    int rows = IMPULSE_MAX_ROWS > SIM_CLUSTER_ROWS ? IMPULSE_MAX_ROWS : SIM_CLUSTER_ROWS;
+    if (!s->lcp && !(s->lcp = malloc(lcp_work_size(rows)))) return -1;
+    if (w->n > s->cap) {
+        bool ok = true;
+        changed = true;
+        s->objects = grow_resized(s->objects, sizeof *s->objects, w->n, &ok);
+        s->cluster = grow_resized(s->cluster, sizeof *s->cluster, w->n, &ok);
+        s->classify = grow_resized(s->classify, sizeof *s->classify, w->n, &ok);
+        s->kicked = grow_resized(s->kicked, sizeof *s->kicked, w->n, &ok);
+        s->balanced = grow_resized(s->balanced, sizeof *s->balanced, w->n, &ok);
+        s->now = grow_resized(s->now, sizeof *s->now, w->n, &ok);
+        s->mark = grow_resized(s->mark, sizeof *s->mark, w->n, &ok);
+        if (!ok) return -1;
+        s->cap = w->n;
+    }
+    if (!changed) return 0;
+    for (int i = 0; i < w->n; i++) {
+        s->kicked[i] = s->balanced[i] = *w->bodies[i];
+        s->now[i] = w->bodies[i];
+        s->mark[i] = false;
+    }
+    return 0;
+}
+
 void answer_clusters(world *w, const int *list, int n, double t, double t_end)
 {
-    int *k_list = malloc((size_t)w->n * sizeof *k_list);
-    if (!k_list) return;
+    int *k_list = w->answer.cluster;
     for (int k = 0; k < n; k++) {
         int i = list[k];
         const body *b = w->bodies[i];
@@ -43,7 +88,6 @@ void answer_clusters(world *w, const int *list, int n, double t, double t_end)
             retime_event(w, k_list[j], t + h);
         }
     }
-    free(k_list);
 }
 
 /* The speed limits, where a collision set a speed: |v| <= max_linear, |w| <=
@@ -95,7 +139,7 @@ static void hold_stop(world *w, int i, double t)
 void answer_contact(world *w, long k, double t, double t_end)
 {
     pair *p = &w->pairs.p[k];
-    int seeds[2], ns = 0, *list = w->step.list;
+    int seeds[2] = {-1, -1}, ns = 0, *mine = w->answer.objects;
     bool ha = w->bodies[p->a]->held, hb = w->bodies[p->b]->held, hand = ha || hb;
     if (!body_is_static(w->bodies[p->a]) && !ha) seeds[ns++] = p->a;
     if (!body_is_static(w->bodies[p->b]) && !hb) seeds[ns++] = p->b;
@@ -105,10 +149,7 @@ void answer_contact(world *w, long k, double t, double t_end)
         if (hb) hold_stop(w, p->b, t);
         return;
     }
-    int n = rest_component(w, seeds, ns, list);
-    int *mine = malloc((size_t)(n > 0 ? n : 1) * sizeof *mine);
-    if (!mine) return;
-    memcpy(mine, list, (size_t)n * sizeof *mine);
+    int n = rest_component(w, seeds, ns, mine);
     for (int j = 0; j < n; j++) step_sync(w, mine[j], t);
     int held = ha ? p->a : hb ? p->b : -1;
     if (hand) step_sync(w, held, t);
@@ -119,7 +160,7 @@ void answer_contact(world *w, long k, double t, double t_end)
     double e = d_min(A->elasticity, B->elasticity);
     row_list rl = {rows, NULL, NULL, 0, IMPULSE_MAX_ROWS, false};
     int own = rows_of(w, &rl, p, &w->pairs.hits[k].r, e);
-    bool *mobile = w->step.mark;
+    bool *mobile = w->answer.mark;
     for (int j = 0; j < n; j++) mobile[mine[j]] = true;
     for (int j = 0; j < n; j++) {
         int i = mine[j];
@@ -134,25 +175,25 @@ void answer_contact(world *w, long k, double t, double t_end)
     double u[IMPULSE_MAX_ROWS], lambda[IMPULSE_MAX_ROWS], closing = 0;
     double scale = 1 + A->shape.r_out + B->shape.r_out;
     for (int r = 0; r < nr; r++) {
-        u[r] = impulse_speed(&rows[r], w->step.now);
+        u[r] = impulse_speed(&rows[r], w->answer.now);
         if (r < own) closing = d_max(closing, -u[r]);
         /* a rebound too slow to see is no rebound: they stay in contact */
         if (rows[r].e < 1 && rows[r].e * -u[r] < SIM_BOUNCE_SPEED) rows[r].e = 0;
         /* but nothing stays on a held object: it parts at that speed */
         if (hand && r < own && rows[r].e == 0) u[r] -= SIM_BOUNCE_SPEED;
     }
-    bool solved = impulse_solve(rows, nr, w->step.now, mobile, u, lambda, w->step.lcp) == 0;
+    bool solved = impulse_solve(rows, nr, w->answer.now, mobile, u, lambda, w->answer.lcp) == 0;
     if (!solved && own < nr) /* too many: the contact's own points alone */
-        solved = impulse_solve(rows, own, w->step.now, mobile, u, lambda, w->step.lcp) == 0;
+        solved = impulse_solve(rows, own, w->answer.now, mobile, u, lambda, w->answer.lcp) == 0;
     if (solved && limit_all(w, mine, n)) {
         /* the limits must not turn a point back into its contact: those that would
          * approach again stop there */
         double u2[IMPULSE_MAX_ROWS], l2[IMPULSE_MAX_ROWS];
         for (int r = 0; r < nr; r++) {
             rows[r].e = 0;
-            u2[r] = d_min(0, impulse_speed(&rows[r], w->step.now));
+            u2[r] = d_min(0, impulse_speed(&rows[r], w->answer.now));
         }
-        if (impulse_solve(rows, nr, w->step.now, mobile, u2, l2, w->step.lcp) == 0)
+        if (impulse_solve(rows, nr, w->answer.now, mobile, u2, l2, w->answer.lcp) == 0)
             for (int r = 0; r < nr; r++) lambda[r] += l2[r];
     }
     for (int j = 0; j < n; j++) mobile[mine[j]] = false;
@@ -176,18 +217,17 @@ void answer_contact(world *w, long k, double t, double t_end)
     for (int r = 0; r < own && !hand; r++) {
         /* (a lossy contact that opens too slowly to see a rebound: none) */
         double open = rows[r].e < 1 || e < 1 ? SIM_BOUNCE_SPEED : 1e3 * SIM_SPEED_ROUND * scale;
-        if (impulse_speed(&rows[r], w->step.now) <= open) p->touching = true;
+        if (impulse_speed(&rows[r], w->answer.now) <= open) p->touching = true;
     }
     rest_classify(w, mine, n);
     for (int j = 0; j < n; j++) retime_object(w, mine[j], t);
     if (hand) retime_object(w, held, t);
     answer_clusters(w, mine, n, t, t_end);
-    free(mine);
 }
 
 void answer_object(world *w, int i, double t, double t_end)
 {
-    int *list = w->step.list;
+    int *mine = w->answer.objects;
     body *b = w->bodies[i];
     w->time = t;
     if (b->mode == MODE_SLIDE) {
@@ -199,15 +239,11 @@ void answer_object(world *w, int i, double t, double t_end)
         answer_clusters(w, &i, 1, t, t_end);
         return;
     }
-    int n = rest_cluster(w, i, list);
-    int *mine = malloc((size_t)(n > 0 ? n : 1) * sizeof *mine);
-    if (!mine) return;
-    memcpy(mine, list, (size_t)n * sizeof *mine);
+    int n = rest_cluster(w, i, mine);
     for (int j = 0; j < n; j++) step_sync(w, mine[j], t);
     cluster_settle(w, mine, n);
     rest_classify(w, mine, n);
     for (int j = 0; j < n; j++) retime_object(w, mine[j], t);
     if (t < t_end) answer_clusters(w, mine, n, t, t_end);
-    free(mine);
 }
 

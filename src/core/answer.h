@@ -11,7 +11,43 @@
 #ifndef VROC_ANSWER_H
 #define VROC_ANSWER_H
 
+#include <stdbool.h>
+
+#include "body.h"
+#include "lcp.h"
+
 typedef struct world world;
+
+/* The scratch the answering works in (answer.c, and the clusters and rest it
+ * calls: cluster.c, rest.c), sized by answer_prepare when the step is prepared,
+ * so that no event allocates.  Each list and copy has the one user named here,
+ * so that none is borrowed while another holds it. */
+typedef struct {
+    int *objects;     /* per object: the objects an event answers (answer_contact's
+                       * component, answer_object's cluster; and the objects sim.c's
+                       * start over woke) */
+    int *cluster;     /* per object: one cluster's objects (answer_clusters',
+                       * rest_frame_end's) */
+    int *classify;    /* per object: rest_classify's work list */
+    body *kicked;     /* each object's copy that cluster_kick kicks and flies */
+    body *balanced;   /* each object's copy that rest_balanced pushes */
+    body **now;       /* each object's state as a contact problem sees it (impulse.h):
+                       * w->bodies[i], or its copy above while a kick or a balance
+                       * works on it */
+    bool *mark;       /* per object: marks, all false between uses (the objects
+                       * reached, the mobile objects of a contact problem) */
+    lcp_work *lcp;    /* room for the largest contact problem (lcp.h) */
+    int cap;          /* objects the arrays have room for */
+} answer_scratch;
+
+void answer_init(answer_scratch *s);
+void answer_free(answer_scratch *s);
+
+/* Makes room for the world's objects and, when changed (a command changed
+ * something) or when it grew, writes the copies afresh, so that frames allocate
+ * nothing and touch no fresh memory (sim_prepare calls it).  Returns 0, or -1
+ * when out of memory. */
+int answer_prepare(world *w, bool changed);
 
 /* Answers pair k's contact (found by its search, pairs.hits[k]) at time t, in the
  * internal step that ends at t_end: the impulses of its points and of every

@@ -39,7 +39,7 @@ static void gather(world *w, const int *list, int n, points *pts, double reach)
 {
     pts->rows = (row_list){pts->row, pts->cp, pts->gap, 0, SIM_CLUSTER_ROWS, false};
     pts->np = 0;
-    bool *in = w->step.mark;
+    bool *in = w->answer.mark;
     for (int k = 0; k < n; k++) in[list[k]] = true;
     for (int k = 0; k < n; k++) {
         int i = list[k];
@@ -132,8 +132,8 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end)
     gather(w, list, n, &pts, 2 * s * h);
     int m = pts.rows.n;
     if (m == 0 || !(h > 0)) return h;
-    body **bs = w->step.now;
-    bool *mobile = w->step.mark;
+    body **bs = w->answer.now;
+    bool *mobile = w->answer.mark;
     for (int k = 0; k < n; k++) mobile[list[k]] = true;
     double A[SIM_CLUSTER_ROWS * SIM_CLUSTER_ROWS], q[SIM_CLUSTER_ROWS], lam[SIM_CLUSTER_ROWS],
         next[SIM_CLUSTER_ROWS], wv[SIM_CLUSTER_ROWS], gap[SIM_CLUSTER_ROWS];
@@ -147,7 +147,7 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end)
         /* the gaps at the step's end after kicks lam: each object's copy kicked,
          * flown freely */
         for (int k = 0; k < n; k++) {
-            body *c = &w->step.scratch[STEP_COPIES * list[k] + 2];
+            body *c = &w->answer.kicked[list[k]];
             *c = *w->bodies[list[k]];
             bs[list[k]] = c;
         }
@@ -185,7 +185,7 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end)
             q[k] = gap[k];
             for (int j = 0; j < m; j++) q[k] -= A[k * m + j] * lam[j];
         }
-        if (lcp_solve(m, A, q, next, wv, w->step.lcp) != 0) break;
+        if (lcp_solve(m, A, q, next, wv, w->answer.lcp) != 0) break;
         for (int k = 0; k < m; k++) lam[k] = next[k];
     }
     impulse_apply(pts.row, m, bs, mobile, lam);
@@ -197,8 +197,8 @@ void cluster_settle(world *w, const int *list, int n)
 {
     points pts;
     gather(w, list, n, &pts, 0);
-    body **bs = w->step.now;
-    bool *mobile = w->step.mark;
+    body **bs = w->answer.now;
+    bool *mobile = w->answer.mark;
     /* the touching points: those that stay in contact stop approaching */
     impulse_row rows[SIM_CLUSTER_ROWS];
     double u[SIM_CLUSTER_ROWS], lam[SIM_CLUSTER_ROWS];
@@ -207,7 +207,7 @@ void cluster_settle(world *w, const int *list, int n)
         if (pts.gap[k] <= touch_at(w, &pts.cp[k])) rows[m++] = pts.row[k];
     for (int k = 0; k < n; k++) mobile[list[k]] = true;
     for (int k = 0; k < m; k++) u[k] = impulse_speed(&rows[k], bs);
-    if (m > 0) impulse_solve(rows, m, bs, mobile, u, lam, w->step.lcp);
+    if (m > 0) impulse_solve(rows, m, bs, mobile, u, lam, w->answer.lcp);
     for (int k = 0; k < n; k++) mobile[list[k]] = false;
     /* the lasting contacts that opened end */
     for (int k = 0; k < n; k++) {

@@ -25,7 +25,7 @@
  * qualify (dynamic; general when general_only). */
 static int reach(world *w, const int *seeds, int n, int *out, bool general_only)
 {
-    bool *mark = w->step.mark;
+    bool *mark = w->answer.mark;
     int m = 0;
     for (int k = 0; k < n; k++) {
         if (mark[seeds[k]]) continue;
@@ -118,7 +118,7 @@ static bool try_slide(world *w, int mi, int si, pair *p)
 
 void rest_classify(world *w, const int *list, int n)
 {
-    int *work = w->step.list, nw = 0;
+    int *work = w->answer.classify, nw = 0;
     for (int k = 0; k < n; k++) {
         int i = list[k];
         body *b = w->bodies[i];
@@ -196,14 +196,14 @@ bool rest_balanced(world *w, const int *list, int n)
 {
     /* each object's copy moves as the force alone would make it in a second, and
      * the supports push: what is left is its acceleration */
-    body **bs = w->step.now;
-    bool *mobile = w->step.mark;
+    body **bs = w->answer.now;
+    bool *mobile = w->answer.mark;
     impulse_row rows[SIM_CLUSTER_ROWS] = {{0}};
     row_list rl = {rows, NULL, NULL, 0, SIM_CLUSTER_ROWS, false};
     bool ok = true;
     for (int k = 0; k < n; k++) {
         int i = list[k];
-        body *c = &w->step.scratch[STEP_COPIES * list[k] + 3];
+        body *c = &w->answer.balanced[i];
         *c = *w->bodies[i];
         c->v = world_accel(w);
         c->L = c->w = v3(0, 0, 0);
@@ -223,7 +223,7 @@ bool rest_balanced(world *w, const int *list, int n)
     int nr = rl.n;
     double lambda[SIM_CLUSTER_ROWS] = {0}, u[SIM_CLUSTER_ROWS] = {0};
     for (int k = 0; k < nr; k++) u[k] = impulse_speed(&rows[k], bs);
-    if (ok && nr > 0) ok = impulse_solve(rows, nr, bs, mobile, u, lambda, w->step.lcp) == 0;
+    if (ok && nr > 0) ok = impulse_solve(rows, nr, bs, mobile, u, lambda, w->answer.lcp) == 0;
     for (int k = 0; k < n && ok; k++) {
         const body *c = bs[list[k]];
         double scale = 1 + c->shape.r_out;
@@ -261,7 +261,7 @@ static void come_to_rest(body *b)
 
 int rest_frame_end(world *w)
 {
-    int count = 0, *list = w->step.list;
+    int count = 0, *list = w->answer.cluster;
     for (int i = 0; i < w->n; i++) {
         body *b = w->bodies[i];
         if (b->state != STATE_DYNAMIC || b->mode == MODE_FREE) continue;

@@ -29,7 +29,7 @@ typedef struct world world;
 
 /* The objects pressed together with the seeds (n of them), through lasting
  * contacts between dynamic objects (static ones end it), the seeds first: written
- * to out (room for every object), their count returned.  Uses w->step.mark. */
+ * to out (room for every object), their count returned.  Uses w->answer.mark. */
 int rest_component(world *w, const int *seeds, int n, int *out);
 
 /* The same, through the objects in MODE_GENERAL only: a cluster. */

@@ -218,20 +218,16 @@ static void find_contacts(world *w)
             a->woken = b->woken = true;
         }
     }
-    int *list = w->step.list, n = 0;
+    int *woken = w->answer.objects, n = 0;
     for (int i = 0; i < w->n; i++) {
         body *b = w->bodies[i];
         if (b->woken && !body_is_static(b)) {
             if (b->state == STATE_RESTING) rest_wake(w, i);
-            list[n++] = i;
+            woken[n++] = i;
         }
         b->moved = b->woken = false;
     }
-    int *mine = malloc((size_t)(n > 0 ? n : 1) * sizeof *mine);
-    if (!mine) return;
-    memcpy(mine, list, (size_t)n * sizeof *mine);
-    rest_classify(w, mine, n);
-    free(mine);
+    rest_classify(w, woken, n);
 }
 
 /* The pairs and the broad phase as the commands left the objects. */
@@ -270,7 +266,7 @@ int sim_prepare(world *w)
 {
     if (update_pairs(w) != 0) return -1;
     bool changed = w->sched_dirty;
-    if (step_prepare(w, changed) != 0) return -1;
+    if (step_prepare(w, changed) != 0 || answer_prepare(w, changed) != 0) return -1;
     if (!changed) return 0;
     /* the boxes for the first internal step */
     long n = world_subframes(w);

@@ -7,7 +7,8 @@
  * collision heap).  sim_settings_defaults gives every start-up value in one place.
  * It also holds the state the simulation keeps between frames, each part owned
  * by its own module, which initialises and frees it: the pairs (pairs.h), the
- * schedule (schedule.h) and the internal step's scratch (step.h).  The world knows
+ * schedule (schedule.h), the flights of the internal step (step.h) and the
+ * scratch its events are answered in (answer.h).  The world knows
  * nothing of text, prompts, files or pixels: the shell and the views read it, and
  * read the frame's collisions from `events` (as Box2D's contact events).
  */
@@ -16,6 +17,7 @@
 
 #include <stdbool.h>
 
+#include "answer.h"
 #include "body.h"
 #include "broad.h"
 #include "force.h"
@@ -78,6 +80,7 @@ typedef struct world {
     broad_phase broad;    /* broad.h */
     schedule sched;       /* schedule.h */
     step_state step;      /* step.h */
+    answer_scratch answer; /* answer.h */
     bool sched_dirty;     /* something changed other than by the simulation: every
                            * pair is due, and the simulation copies its bodies
                            * afresh (edit.h sets it) */
