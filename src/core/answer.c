@@ -198,7 +198,7 @@ void answer_contact(world *w, long k, double t, double t_end)
     }
     for (int j = 0; j < n; j++) mobile[mine[j]] = false;
     if (!solved && hand) hold_stop(w, held, t); /* what it pushes cannot give way */
-    else if (!solved) w->st.restarts++;
+    else if (!solved) w->st.unsolved++;
     /* the event: the contact's own impulses */
     double j_sum = 0;
     vec3 at = v3(0, 0, 0);

@@ -14,13 +14,11 @@
 #include "tolerance.h"
 #include "world.h"
 
-/* Newton steps of the first kick, at most, and the gap it aims at (relative to
- * the contact distance). */
+/* Newton steps of the first kick, at most. */
 #define CLUSTER_NEWTON 6
 
 /* How fast a point that is in comes out (m/s). */
 #define CLUSTER_RECOVER_SPEED 1e-3
-
 
 /* A cluster's pressed points: the rows of its impulses, the points they follow
  * and their gaps when gathered (in `rows`, over row, cp and gap). */
@@ -185,7 +183,10 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end)
             q[k] = gap[k];
             for (int j = 0; j < m; j++) q[k] -= A[k * m + j] * lam[j];
         }
-        if (lcp_solve(m, A, q, next, wv, w->answer.lcp) != 0) break;
+        if (lcp_solve(m, A, q, next, wv, w->answer.lcp) != 0) {
+            w->st.unsolved++; /* (the last kicks found stand) */
+            break;
+        }
         for (int k = 0; k < m; k++) lam[k] = next[k];
     }
     impulse_apply(pts.row, m, bs, mobile, lam);
@@ -207,7 +208,7 @@ void cluster_settle(world *w, const int *list, int n)
         if (pts.gap[k] <= touch_at(w, &pts.cp[k])) rows[m++] = pts.row[k];
     for (int k = 0; k < n; k++) mobile[list[k]] = true;
     for (int k = 0; k < m; k++) u[k] = impulse_speed(&rows[k], bs);
-    if (m > 0) impulse_solve(rows, m, bs, mobile, u, lam, w->answer.lcp);
+    if (m > 0 && impulse_solve(rows, m, bs, mobile, u, lam, w->answer.lcp) != 0) w->st.unsolved++;
     for (int k = 0; k < n; k++) mobile[list[k]] = false;
     /* the lasting contacts that opened end */
     for (int k = 0; k < n; k++) {

@@ -16,7 +16,7 @@
 
 /* ---- who presses on whom ---- */
 
-/* Calls visit for every lasting contact of object i: the pair and the other. */
+/* Walks the lasting contacts of object i: pr the pair, oth the other object. */
 #define FOR_TOUCHING(w, i, pr, oth)                                                        \
     FOR_PAIRS_OF(w, i, link_, pr)                                                         \
         for (int oth = link_->other; pr && pr->touching; pr = NULL)

@@ -177,7 +177,7 @@ static void internal_step(world *w, double t_end, bool fresh)
         next_event e = find_next(w, t, t_end);
         if (e.kind < 0) break;
         if (n >= SIM_MAX_EVENTS_PER_STEP) {
-            w->st.restarts++;
+            w->st.overflows++;
             break;
         }
         if (e.kind == 0) answer_contact(w, e.index, e.t, t_end);

@@ -76,7 +76,7 @@ static inline double tol_contact(const body *a, const body *b)
 #define SIM_CLUSTER_ROWS 64
 
 /* Events one internal step may answer before it gives up and lets the step end
- * (a guard against a fault; counted in stats as a restart). */
+ * (a guard against a fault; counted in stats as an overflow). */
 #define SIM_MAX_EVENTS_PER_STEP 100000
 
 #endif

@@ -43,7 +43,13 @@ typedef struct {
     long subframes;       /* internal steps taken */
     long pair_checks;     /* pair distance queries */
     long collisions;      /* collisions answered */
-    long restarts;        /* closest-feature walks redone from scratch */
+    long restarts;        /* closest-feature walks redone from scratch (closest.h:
+                           * never expected) */
+    long unsolved;        /* contact problems with no solution (a collision's, a
+                           * cluster's kicks): the impulses are not applied; never
+                           * expected but for a held body, which stops instead */
+    long overflows;       /* internal steps cut short after SIM_MAX_EVENTS_PER_STEP
+                           * events (a guard against a fault; never expected) */
     long heap_pops;       /* pairs taken from the schedule to be checked */
     long events_lost;     /* collisions not reported in events (out of memory) */
     long late_pairs;      /* (heap off) contacts found of pairs the broad phase did

@@ -158,6 +158,8 @@ cmd_status cmd_stats(shell *sh, const stmt *st)
     fprintf(sh->out, "render_time = %.6f\n", sh->view_st.render_time);
     fprintf(sh->out, "files_written = %ld\n", sh->view_st.frames_written);
     fprintf(sh->out, "existing_pairs = %ld\n", w->pairs.live);
+    fprintf(sh->out, "unsolved = %ld\n", w->st.unsolved);
+    fprintf(sh->out, "overflows = %ld\n", w->st.overflows);
     return CMD_OK;
 }
 
