@@ -90,6 +90,52 @@ void answer_clusters(world *w, const int *list, int n, double t, double t_end)
     }
 }
 
+/* A collision being answered: the contact problem of its pair's points and of
+ * the lasting contacts of the objects pressed together with them. */
+typedef struct {
+    long k;               /* the pair's slot */
+    pair *p;
+    const int *objects;   /* the objects pressed together with it (mobile), n */
+    int n;
+    int held;             /* the pair's held object (hold.h), or -1 */
+    double e;             /* the pair's restitution */
+    impulse_row rows[IMPULSE_MAX_ROWS]; /* the pair's own `own`, then the lasting */
+    int own, nr;                        /*   contacts', nr in all */
+    double u[IMPULSE_MAX_ROWS];         /* each row's normal speed before */
+    double lambda[IMPULSE_MAX_ROWS];    /* and its impulse */
+    double closing;       /* the fastest the pair's own points approached */
+} collision;
+
+/* Appends the rows of pair p's contact points (its objects in the states of
+ * w->bodies, r their closest result, e the restitution of every row). */
+static void rows_of(world *w, row_list *l, const pair *p, const closest_result *r, double e)
+{
+    const body *A = w->bodies[p->a], *B = w->bodies[p->b];
+    rows_add(l, p, A, B, r, tol_contact(A, B), e, w->bodies);
+}
+
+/* The rows of collision c: its pair's own points (with the pair's restitution),
+ * then the lasting contacts of its objects (none), each pair once.  Marks its
+ * objects mobile. */
+static void gather(world *w, collision *c)
+{
+    row_list rl = {c->rows, NULL, NULL, 0, IMPULSE_MAX_ROWS, false};
+    rows_of(w, &rl, c->p, &w->pairs.hits[c->k].r, c->e);
+    c->own = rl.n;
+    bool *mobile = w->answer.mark;
+    for (int j = 0; j < c->n; j++) mobile[c->objects[j]] = true;
+    for (int j = 0; j < c->n; j++) {
+        int i = c->objects[j];
+        FOR_PAIRS_OF(w, i, link, o) {
+            int other = link->other;
+            if (!o->touching || o == c->p || (mobile[other] && other < i)) continue;
+            closest_result r = pair_query(w, o, w->bodies[o->a], w->bodies[o->b]);
+            rows_of(w, &rl, o, &r, 0);
+        }
+    }
+    c->nr = rl.n;
+}
+
 /* The speed limits, where a collision set a speed: |v| <= max_linear, |w| <=
  * max_angular (L scaled down). */
 static bool limit_speeds(world *w, body *b)
@@ -116,13 +162,68 @@ static bool limit_all(world *w, const int *list, int n)
     return cut;
 }
 
-/* Appends the rows of pair p's contact points (its objects in the states of
- * w->bodies, r their closest result, e the restitution of every row); returns how
- * many. */
-static int rows_of(world *w, row_list *l, const pair *p, const closest_result *r, double e)
+/* Solves collision c's impulses and applies them, then the speed limits: true
+ * when solved (nothing is applied when not).  Its objects are mobile no more. */
+static bool solve(world *w, collision *c)
 {
+    body **now = w->answer.now;
+    bool *mobile = w->answer.mark, hand = c->held >= 0;
+    impulse_row *rows = c->rows;
+    for (int r = 0; r < c->nr; r++) {
+        c->u[r] = impulse_speed(&rows[r], now);
+        if (r < c->own) c->closing = d_max(c->closing, -c->u[r]);
+        /* a rebound too slow to see is no rebound: they stay in contact */
+        if (rows[r].e < 1 && rows[r].e * -c->u[r] < SIM_BOUNCE_SPEED) rows[r].e = 0;
+        /* but nothing stays on a held object: it parts at that speed */
+        if (hand && r < c->own && rows[r].e == 0) c->u[r] -= SIM_BOUNCE_SPEED;
+    }
+    bool solved = impulse_solve(rows, c->nr, now, mobile, c->u, c->lambda, w->answer.lcp) == 0;
+    if (!solved && c->own < c->nr) /* too many: the contact's own points alone */
+        solved = impulse_solve(rows, c->own, now, mobile, c->u, c->lambda, w->answer.lcp) == 0;
+    if (solved && limit_all(w, c->objects, c->n)) {
+        /* the limits must not turn a point back into its contact: those that would
+         * approach again stop there */
+        double u2[IMPULSE_MAX_ROWS], l2[IMPULSE_MAX_ROWS];
+        for (int r = 0; r < c->nr; r++) {
+            rows[r].e = 0;
+            u2[r] = d_min(0, impulse_speed(&rows[r], now));
+        }
+        if (impulse_solve(rows, c->nr, now, mobile, u2, l2, w->answer.lcp) == 0)
+            for (int r = 0; r < c->nr; r++) c->lambda[r] += l2[r];
+    }
+    for (int j = 0; j < c->n; j++) mobile[c->objects[j]] = false;
+    return solved;
+}
+
+/* Collision c's event at time t, from its pair's own impulses (none when they
+ * sum to nothing). */
+static void report(world *w, const collision *c, double t)
+{
+    double j_sum = 0;
+    vec3 at = v3(0, 0, 0);
+    for (int r = 0; r < c->own; r++) {
+        j_sum += c->lambda[r];
+        at = v3_mad(at, c->rows[r].at, c->lambda[r]);
+    }
+    if (!(j_sum > 0)) return;
+    w->st.collisions++;
+    vec3 nab = w->pairs.hits[c->k].r.normal; /* from b to a */
+    world_event(w, &(sim_event){t, c->p->a, c->p->b, v3_scale(at, 1 / j_sum), nab, j_sum, c->closing});
+}
+
+/* Collision c's pair stays in lasting contact where a point of its own no longer
+ * moves apart (never with a held object: each of its contacts is a collision). */
+static void stay_or_part(world *w, const collision *c)
+{
+    pair *p = c->p;
     const body *A = w->bodies[p->a], *B = w->bodies[p->b];
-    return rows_add(l, p, A, B, r, tol_contact(A, B), e, w->bodies);
+    double scale = 1 + A->shape.r_out + B->shape.r_out;
+    p->hit = w->pairs.hits[c->k].cache;
+    for (int r = 0; r < c->own && c->held < 0; r++) {
+        /* (a lossy contact that opens too slowly to see a rebound: none) */
+        double open = c->rows[r].e < 1 || c->e < 1 ? SIM_BOUNCE_SPEED : 1e3 * SIM_SPEED_ROUND * scale;
+        if (impulse_speed(&c->rows[r], w->answer.now) <= open) p->touching = true;
+    }
 }
 
 /* Held body i stops where it is at time t, until the hand sets its motion again
@@ -154,71 +255,13 @@ void answer_contact(world *w, long k, double t, double t_end)
     int held = ha ? p->a : hb ? p->b : -1;
     if (hand) step_sync(w, held, t);
     w->time = t;
-    /* the rows: the contact's own, then the lasting contacts' */
-    impulse_row rows[IMPULSE_MAX_ROWS];
-    const body *A = w->bodies[p->a], *B = w->bodies[p->b];
-    double e = d_min(A->elasticity, B->elasticity);
-    row_list rl = {rows, NULL, NULL, 0, IMPULSE_MAX_ROWS, false};
-    int own = rows_of(w, &rl, p, &w->pairs.hits[k].r, e);
-    bool *mobile = w->answer.mark;
-    for (int j = 0; j < n; j++) mobile[mine[j]] = true;
-    for (int j = 0; j < n; j++) {
-        int i = mine[j];
-        FOR_PAIRS_OF(w, i, link, o) {
-            int other = link->other;
-            if (!o->touching || o == p || (mobile[other] && other < i)) continue;
-            closest_result r = pair_query(w, o, w->bodies[o->a], w->bodies[o->b]);
-            rows_of(w, &rl, o, &r, 0);
-        }
-    }
-    int nr = rl.n;
-    double u[IMPULSE_MAX_ROWS], lambda[IMPULSE_MAX_ROWS], closing = 0;
-    double scale = 1 + A->shape.r_out + B->shape.r_out;
-    for (int r = 0; r < nr; r++) {
-        u[r] = impulse_speed(&rows[r], w->answer.now);
-        if (r < own) closing = d_max(closing, -u[r]);
-        /* a rebound too slow to see is no rebound: they stay in contact */
-        if (rows[r].e < 1 && rows[r].e * -u[r] < SIM_BOUNCE_SPEED) rows[r].e = 0;
-        /* but nothing stays on a held object: it parts at that speed */
-        if (hand && r < own && rows[r].e == 0) u[r] -= SIM_BOUNCE_SPEED;
-    }
-    bool solved = impulse_solve(rows, nr, w->answer.now, mobile, u, lambda, w->answer.lcp) == 0;
-    if (!solved && own < nr) /* too many: the contact's own points alone */
-        solved = impulse_solve(rows, own, w->answer.now, mobile, u, lambda, w->answer.lcp) == 0;
-    if (solved && limit_all(w, mine, n)) {
-        /* the limits must not turn a point back into its contact: those that would
-         * approach again stop there */
-        double u2[IMPULSE_MAX_ROWS], l2[IMPULSE_MAX_ROWS];
-        for (int r = 0; r < nr; r++) {
-            rows[r].e = 0;
-            u2[r] = d_min(0, impulse_speed(&rows[r], w->answer.now));
-        }
-        if (impulse_solve(rows, nr, w->answer.now, mobile, u2, l2, w->answer.lcp) == 0)
-            for (int r = 0; r < nr; r++) lambda[r] += l2[r];
-    }
-    for (int j = 0; j < n; j++) mobile[mine[j]] = false;
-    if (!solved && hand) hold_stop(w, held, t); /* what it pushes cannot give way */
-    else if (!solved) w->st.unsolved++;
-    /* the event: the contact's own impulses */
-    double j_sum = 0;
-    vec3 at = v3(0, 0, 0);
-    for (int r = 0; r < own && solved; r++) {
-        j_sum += lambda[r];
-        at = v3_mad(at, rows[r].at, lambda[r]);
-    }
-    if (j_sum > 0) {
-        w->st.collisions++;
-        vec3 nab = w->pairs.hits[k].r.normal; /* from b to a */
-        world_event(w, &(sim_event){t, p->a, p->b, v3_scale(at, 1 / j_sum), nab, j_sum, closing});
-    }
-    /* they stay in contact where a point of theirs no longer moves apart (never
-     * with a held object: each of its contacts is a collision) */
-    p->hit = w->pairs.hits[k].cache;
-    for (int r = 0; r < own && !hand; r++) {
-        /* (a lossy contact that opens too slowly to see a rebound: none) */
-        double open = rows[r].e < 1 || e < 1 ? SIM_BOUNCE_SPEED : 1e3 * SIM_SPEED_ROUND * scale;
-        if (impulse_speed(&rows[r], w->answer.now) <= open) p->touching = true;
-    }
+    collision c = {.k = k, .p = p, .objects = mine, .n = n, .held = held,
+                   .e = d_min(w->bodies[p->a]->elasticity, w->bodies[p->b]->elasticity)};
+    gather(w, &c);
+    if (solve(w, &c)) report(w, &c, t);
+    else if (hand) hold_stop(w, held, t); /* what it pushes cannot give way */
+    else w->st.unsolved++;
+    stay_or_part(w, &c);
     rest_classify(w, mine, n);
     for (int j = 0; j < n; j++) retime_object(w, mine[j], t);
     if (hand) retime_object(w, held, t);
