@@ -216,12 +216,11 @@ static void report(world *w, const collision *c, double t)
 static void stay_or_part(world *w, const collision *c)
 {
     pair *p = c->p;
-    const body *A = w->bodies[p->a], *B = w->bodies[p->b];
-    double scale = 1 + A->shape.r_out + B->shape.r_out;
+    double still = 1e3 * tol_speed(w->bodies[p->a], w->bodies[p->b]);
     p->hit = w->pairs.hits[c->k].cache;
     for (int r = 0; r < c->own && c->held < 0; r++) {
         /* (a lossy contact that opens too slowly to see a rebound: none) */
-        double open = c->rows[r].e < 1 || c->e < 1 ? SIM_BOUNCE_SPEED : 1e3 * SIM_SPEED_ROUND * scale;
+        double open = c->rows[r].e < 1 || c->e < 1 ? SIM_BOUNCE_SPEED : still;
         if (impulse_speed(&c->rows[r], w->answer.now) <= open) p->touching = true;
     }
 }

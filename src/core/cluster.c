@@ -77,7 +77,7 @@ static double fastest(const world *w, const int *list, int n)
 static double floor_of(const world *w, const cpoint *cp, double g0, double h)
 {
     const body *P = w->bodies[cp->p], *Q = w->bodies[cp->q];
-    double hover = SIM_HOVER * (1 + P->shape.r_out + Q->shape.r_out);
+    double hover = tol_hover(P, Q);
     return g0 >= hover ? hover : g0 >= 0 ? g0 : d_min(0, g0 + h * CLUSTER_RECOVER_SPEED);
 }
 
@@ -219,7 +219,7 @@ void cluster_settle(world *w, const int *list, int n)
             closest_result r = pair_query_apart(w, p, A, B);
             /* (within the thickness of a contact, a rolling or rocking contact
              * holds: its points come and go as it turns) */
-            double held = SIM_CONTACT_TOL * (1 + A->shape.r_out + B->shape.r_out);
+            double held = SIM_CONTACT_TOL * (1 + tol_size(A, B));
             if (r.status == CLOSEST_SEPARATED && r.distance > held) p->touching = false;
         }
     }

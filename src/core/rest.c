@@ -80,30 +80,30 @@ static bool try_slide(world *w, int mi, int si, pair *p)
 {
     body *m = w->bodies[mi];
     const body *s = w->bodies[si];
-    double scale = 1 + m->shape.r_out + s->shape.r_out;
+    double size = 1 + tol_size(m, s);
     closest_result r = mi == p->a ? pair_query(w, p, m, s) : pair_query(w, p, s, m);
     if (r.status == CLOSEST_INVALID) return false;
     if (mi != p->a) closest_mirror(&r);
     double e = d_min(m->elasticity, s->elasticity);
-    double deep = e < 1 ? REST_LEVEL_DEPTH * scale : SIM_CONTACT_TOL * scale;
-    if (r.distance > SIM_CONTACT_TOL * scale || r.distance < -deep) return false;
+    double thick = SIM_CONTACT_TOL * size, deep = e < 1 ? REST_LEVEL_DEPTH * size : thick;
+    if (r.distance > thick || r.distance < -deep) return false;
     int face;
-    if (!contact_holds(m, s, &r, SIM_CONTACT_TOL * scale, &face)) {
+    if (!contact_holds(m, s, &r, thick, &face)) {
         return false;
     }
     vec3 n = v3_norm(q_rotate(s->q, s->shape.hull->f[face].n));
     /* pressed onto the face, moving along it, turning about its normal only */
-    if (!(v3_dot(world_accel(w), n) < -SIM_ACCEL_ROUND * scale)) return false;
+    if (!(v3_dot(world_accel(w), n) < -tol_accel(m, s))) return false;
     /* a lossy contact ends a rocking too slow to see as a rebound would (impulse's
      * SIM_BOUNCE_SPEED): it lands flat */
-    double tol = e < 1 ? SIM_BOUNCE_SPEED : 1e3 * SIM_SPEED_ROUND * scale;
+    double tol = e < 1 ? SIM_BOUNCE_SPEED : 1e3 * tol_speed(m, s);
     vec3 w_off = v3_mad(m->w, n, -v3_dot(m->w, n));
     if (fabs(v3_dot(m->v, n)) > tol || v3_len(w_off) * m->shape.r_out > tol) {
         return false;
     }
     /* flat on the face, so that a turn about its normal lifts no corner and sinks
      * none */
-    double hover = SIM_HOVER * scale;
+    double hover = tol_hover(m, s);
     m->x = v3_mad(m->x, n, hover - r.distance);
     contact_level(m, s, face, REST_LEVEL_TILT, hover);
     m->mode = MODE_SLIDE;

@@ -114,7 +114,7 @@ static double envelope_time(const body *a, const sched_move *ma, const body *b,
     int na = lines_of(a, ma, n, 1, p, la, &qa), nb = lines_of(b, mb, n, -1, p, lb, &qb);
     if (na == 0 || nb == 0) return -1;
     int ka = envelope(la, na, T, pa), kb = envelope(lb, nb, T, pb);
-    double q = qa + qb, margin = SIM_ROUND_REL * (1 + a->shape.r_out + b->shape.r_out);
+    double q = qa + qb, margin = tol_margin(a, b);
     int i = 0, j = 0;
     for (double t0 = 0; t0 < T;) {
         double t1 = T;
@@ -158,7 +158,7 @@ static int meeting(const body *a, const sched_move *ma, const body *b, const sch
     int n = contact_cpoints(a, b, r, tol, cp, CONTACT_MAX_POINTS);
     flight_motion fa = flight_motion_of(a, ma->moves, ma->a, ma->held ? &ma->c : NULL);
     flight_motion fb = flight_motion_of(b, mb->moves, mb->a, mb->held ? &mb->c : NULL);
-    double scale = 1 + a->shape.r_out + b->shape.r_out;
+    double su = tol_speed(a, b), sc = tol_accel(a, b);
     for (int k = 0; k < n; k++) {
         const body *P = cp[k].p == 0 ? a : b, *Q = cp[k].p == 0 ? b : a;
         const flight_motion *fp = cp[k].p == 0 ? &fa : &fb, *fq = cp[k].p == 0 ? &fb : &fa;
@@ -166,7 +166,7 @@ static int meeting(const body *a, const sched_move *ma, const body *b, const sch
         cpoint_eval(&cp[k], P, Q, &nrm, &at);
         double u = v3_dot(v3_sub(flight_point_velocity(fp, at), flight_point_velocity(fq, at)), nrm);
         double c = v3_dot(v3_sub(flight_point_accel(fp, at), flight_point_accel(fq, at)), nrm);
-        if (u < -SIM_SPEED_ROUND * scale || (u <= SIM_SPEED_ROUND * scale && c < -SIM_ACCEL_ROUND * scale))
+        if (u < -su || (u <= su && c < -sc))
             return 1;
     }
     return 0;
@@ -229,7 +229,7 @@ toi_output toi_find(world *w, const toi_input *in)
              * distance at their relative speed */
             double s = v3_len(v3_sub(ma.moves ? ma.v : v3(0, 0, 0), mb.moves ? mb.v : v3(0, 0, 0)));
             double depth = d_max(touch, d_max(inside, 0.1 * depth0));
-            double turn = (ma.rate + mb.rate) * (A0->shape.r_out + B0->shape.r_out);
+            double turn = ma.rate * A0->shape.r_out + mb.rate * B0->shape.r_out;
             if (ma.held || mb.held) turn = ma.rate * ma.reach + mb.rate * mb.reach;
             dt = depth / d_max(s + turn, 1e-3);
         }
