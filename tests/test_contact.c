@@ -3,7 +3,9 @@
  * A pair's tolerances come from its moving object, never from a static one's
  * size: a tilted cube lands on floors from 5 m to 10 km wide, and 4.5 km from the
  * origin, with the textbook's impulse and spin, the same on every floor to 1e-9,
- * and a cube at rest sits the same hair above each. */
+ * and a cube at rest sits the same hair above each.  Seams are flat: a cube and
+ * a ball slide across the seams of 2, 5 and 20 coplanar tiles without a
+ * collision, at the speed they had to 1e-12. */
 #include "check.h"
 
 #include <stdlib.h>
@@ -143,11 +145,88 @@ static void resting_cube_sits_alike_on_every_floor(void **state)
     }
 }
 
+/* ------------------------------------------------------------ flat seams */
+
+/* n static tiles in a row 4 m long and 1 m wide, 0.2 m thick, along u = (cos yaw,
+ * sin yaw, 0) and turned with it, tile k's top at z = lift[k] (NULL: 0); the
+ * first is object 0. */
+static void add_tiles(world *w, int n, double yaw, const double *lift)
+{
+    vec3 u = v3(cos(yaw), sin(yaw), 0);
+    double half = 2.0 / n;
+    for (int k = 0; k < n; k++) {
+        char name[16];
+        snprintf(name, sizeof name, "tile%d", k);
+        body *t = add_static_box(w, name, v3(half, 0.5, 0.1));
+        body_set_rotation(t, v3(0, 0, 1), yaw);
+        t->x = v3_add(v3_scale(u, -2 + (2 * k + 1) * half), v3(0, 0, -0.1 + (lift ? lift[k] : 0)));
+    }
+}
+
+/* An object (kind, 0.05 m: a cube's half-size, a ball's radius) set amid the
+ * first of n tiles (within the contact distance of its top) and sent along the
+ * row at 1 m/s, 0.1 rad off it: it slides across the seams, tile after tile,
+ * with no collision and its speed unchanged to 1e-12, and keeps its hover gap
+ * above each (where the tiles are lifted too). */
+static void slides_across(shape_kind kind, int n, double yaw, const double *lift)
+{
+    world w;
+    contact_world(&w);
+    add_tiles(&w, n, yaw, lift);
+    body *o = kind == SHAPE_SPHERE ? add_ball(&w, "o", 0.05) : add_box(&w, "o", v3(0.05, 0.05, 0.05));
+    vec3 u = v3(cos(yaw), sin(yaw), 0), across = v3(-sin(yaw), cos(yaw), 0);
+    if (kind != SHAPE_SPHERE) body_set_rotation(o, v3(0, 0, 1), yaw + 0.3);
+    double z = 0.05 + (lift ? lift[0] : 0) + 5e-10;
+    o->x = v3_add(v3_add(v3_scale(u, -1.9), v3_scale(across, -0.15)), v3(0, 0, z));
+    vec3 dir = v3_add(v3_scale(u, cos(0.1)), v3_scale(across, sin(0.1)));
+    o->v = dir;
+    vec3 x0 = o->x;
+    char err[256];
+    for (int f = 0; f < 34; f++) {
+        assert_int_equal(sim_frame(&w, err, sizeof err), 0);
+        assert_int_equal(w.nevents, 0);
+        assert_int_equal(o->mode, MODE_SLIDE);
+        assert_near(v3_len(o->v), 1, 1e-12);
+    }
+    /* where its flight says, on the tile under it there, its hover gap above it */
+    assert_int_equal(w.st.collisions, 0);
+    vec3 dx = v3_sub(o->x, x0);
+    assert_near(v3_dot(dx, dir), w.time, 1e-9);
+    int under = (int)floor((v3_dot(o->x, u) + 2) / (4.0 / n));
+    assert_true(under > 0.8 * (n - 1));
+    assert_int_equal(o->slide_on, under);
+    double top = lift ? lift[under] : 0, above = o->x.z - 0.05 - top;
+    assert_true(above > 0 && above < 1e-7);
+    print_message("%s across %d tiles (yaw %g%s): %g m along in %g s onto tile %d, speed %.17g, "
+                  "%.3g m above it\n", kind == SHAPE_SPHERE ? "ball" : "cube", n, yaw,
+                  lift ? ", lifted" : "", v3_dot(dx, dir), w.time, under, v3_len(o->v), above);
+    world_free(&w);
+}
+
+static void seams_of_coplanar_tiles_are_flat(void **state)
+{
+    (void)state;
+    const int counts[] = {2, 5, 20};
+    for (int c = 0; c < 3; c++) {
+        slides_across(SHAPE_CUBE, counts[c], 0, NULL);
+        slides_across(SHAPE_SPHERE, counts[c], 0, NULL);
+        slides_across(SHAPE_CUBE, counts[c], 0.7, NULL);
+        slides_across(SHAPE_SPHERE, counts[c], -2.1, NULL);
+    }
+    /* tiles whose tops are up to 4e-10 m apart (coplanar within 1e-9 m) */
+    double lift[20];
+    unsigned long long seed = 5;
+    for (int k = 0; k < 20; k++) lift[k] = urand(&seed, -4e-10, 4e-10);
+    slides_across(SHAPE_CUBE, 20, 0.4, lift);
+    slides_across(SHAPE_SPHERE, 20, 0.4, lift);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(tilted_cube_lands_alike_on_every_floor),
         cmocka_unit_test(resting_cube_sits_alike_on_every_floor),
+        cmocka_unit_test(seams_of_coplanar_tiles_are_flat),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -273,8 +273,13 @@ void answer_object(world *w, int i, double t, double t_end)
     body *b = w->bodies[i];
     w->time = t;
     if (b->mode == MODE_SLIDE) {
-        /* over the edge: the cluster's steps decide what it does there */
         step_sync(w, i, t);
+        /* across a seam, onto a coplanar face: on it slides */
+        if (rest_slide_on(w, i)) {
+            retime_object(w, i, t);
+            return;
+        }
+        /* over the edge: the cluster's steps decide what it does there */
         b->mode = MODE_GENERAL;
         b->slide_on = -1;
         retime_object(w, i, t);

@@ -404,9 +404,7 @@ vec3 contact_closing_corner(const body *a, const body *b, const closest_result *
 /* A point of the object on side p (0: a, 1: b) at world point x, in its frame. */
 static vec3 local_of(const body *o, vec3 x) { return q_unrotate(o->q, v3_sub(x, o->x)); }
 
-/* The face of polyhedron o whose outward normal is nearest world direction d, or
- * -1 for a sphere. */
-static int facing(const body *o, vec3 d)
+int contact_facing(const body *o, vec3 d)
 {
     const poly *h = o->shape.hull;
     if (!h || o->sp.kind == SHAPE_SPHERE) return -1;
@@ -574,7 +572,7 @@ int contact_cpoints(const body *a, const body *b, const closest_result *r, doubl
         cpoint base = {.p = pside, .q = q, .r = 0};
         int nq = q == 0 ? z.na : z.nb, np = pside == 0 ? z.na : z.nb;
         /* the plane: the face of Q's side itself, when it is one */
-        int fq = nq >= 3 ? facing(Q, m) : -1;
+        int fq = nq >= 3 ? contact_facing(Q, m) : -1;
         if (fq >= 0) {
             base.kind = CPT_PLANE;
             base.f0 = Q->shape.hull->f[fq].n;
@@ -585,7 +583,7 @@ int contact_cpoints(const body *a, const body *b, const closest_result *r, doubl
         /* the points: on P's own surface (its face, edge or vertex that faces Q),
          * so that their gaps are the objects' own, however thick the region */
         const support *sp = pside == 0 ? &z.sa : &z.sb;
-        int fp = np >= 3 ? facing(P, v3_neg(m)) : -1;
+        int fp = np >= 3 ? contact_facing(P, v3_neg(m)) : -1;
         for (int i = 0; i < z.n && count < max; i++) {
             vec3 x = v3_mad(region_world(&z, n, z.p[i]), m, half);
             lift(P, sp, np, fp, m, &x);
@@ -740,7 +738,7 @@ bool contact_level(body *m, const body *s, int face, double max_tilt, double gap
     const poly *hs = s->shape.hull, *hm = m->shape.hull;
     if (!hs || !hm || m->sp.kind == SHAPE_SPHERE || face < 0 || face >= hs->nf) return false;
     vec3 n = q_rotate(s->q, hs->f[face].n);
-    int fm = facing(m, v3_neg(n));
+    int fm = contact_facing(m, v3_neg(n));
     vec3 nm = q_rotate(m->q, hm->f[fm].n), want = v3_neg(n);
     vec3 axis = v3_cross(nm, want);
     double sn = v3_len(axis), cs = v3_dot(nm, want), angle = atan2(sn, cs);

@@ -80,6 +80,10 @@ bool contact_holds(const body *m, const body *s, const closest_result *r, double
  * is recomputed from L. */
 bool contact_level(body *m, const body *s, int face, double max_tilt, double gap);
 
+/* The face of polyhedron o whose outward normal is nearest world direction d, or
+ * -1 for a sphere. */
+int contact_facing(const body *o, vec3 d);
+
 /* Velocity of the material point of b at world point p. */
 vec3 contact_point_velocity(const body *b, vec3 p);
 

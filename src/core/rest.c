@@ -153,7 +153,40 @@ void rest_classify(world *w, const int *list, int n)
     }
 }
 
-/* The first tau > 0 at which g0 + g1 tau + g2 tau^2 (g0 > 0) turns negative, or
+/* A slide goes on across a seam, onto a face of another static object, when the
+ * two faces are coplanar within this angle (rad) and this offset (m); a centre of
+ * mass on the seam that is short of the new face by no more than REST_SEAM_GAP
+ * and moves onto it is over it. */
+#define REST_SEAM_ANGLE 1e-9
+#define REST_SEAM_GAP 1e-9
+
+/* A point's height inside one edge of a face, in the face's plane, as it moves:
+ * g0 + g1 tau + g2 tau^2 at tau from now. */
+typedef struct {
+    double g0, g1, g2;
+} edge_gap;
+
+/* The height of point c inside edge k of face F of static s (n the face's normal),
+ * for a point moving at v with acceleration a. */
+static edge_gap gap_to_edge(const body *s, const poly_face *F, int k, vec3 n, vec3 c, vec3 v, vec3 a)
+{
+    const poly *h = s->shape.hull;
+    vec3 p0 = v3_add(s->x, q_rotate(s->q, h->v[h->face_vert[F->first + k]]));
+    vec3 p1 = v3_add(s->x, q_rotate(s->q, h->v[h->face_vert[F->first + (k + 1) % F->count]]));
+    vec3 in = v3_norm(v3_cross(n, v3_sub(p1, p0))); /* into the face, across this edge */
+    return (edge_gap){v3_dot(in, v3_sub(c, p0)), v3_dot(in, v), 0.5 * v3_dot(in, a)};
+}
+
+/* True when a point at g is past its edge: outside it, and not coming onto the
+ * face across it from within REST_SEAM_GAP (a seam's other side). */
+static bool past_edge(edge_gap g)
+{
+    if (g.g0 > 0) return false;
+    bool entering = g.g1 > 0 || (g.g1 == 0 && g.g2 > 0);
+    return !(entering && g.g0 >= -REST_SEAM_GAP);
+}
+
+/* The first tau > 0 at which g0 + g1 tau + g2 tau^2 (g0 >= 0) turns negative, or
  * HUGE_VAL. */
 static double first_below(double g0, double g1, double g2)
 {
@@ -180,14 +213,57 @@ double rest_slide_exit(const world *w, int i, double t)
     const poly_face *F = &h->f[face];
     double best = HUGE_VAL;
     for (int k = 0; k < F->count; k++) {
-        vec3 p0 = v3_add(s->x, q_rotate(s->q, h->v[h->face_vert[F->first + k]]));
-        vec3 p1 = v3_add(s->x, q_rotate(s->q, h->v[h->face_vert[F->first + (k + 1) % F->count]]));
-        vec3 in = v3_norm(v3_cross(n, v3_sub(p1, p0))); /* into the face, across this edge */
-        double g0 = v3_dot(in, v3_sub(c, p0));
-        if (g0 <= 0) return t; /* over the edge already */
-        best = d_min(best, first_below(g0, v3_dot(in, v), 0.5 * v3_dot(in, f->a)));
+        edge_gap g = gap_to_edge(s, F, k, n, c, v, f->a);
+        if (past_edge(g)) return t; /* over the edge already */
+        best = d_min(best, first_below(d_max(g.g0, 0), g.g1, g.g2));
     }
     return best == HUGE_VAL ? best : t + best;
+}
+
+bool rest_slide_on(world *w, int i)
+{
+    body *m = w->bodies[i];
+    int from = m->slide_on;
+    const body *s = w->bodies[from];
+    const poly *h = s->shape.hull;
+    if (!h || m->slide_face < 0 || m->slide_face >= h->nf) return false;
+    vec3 n = m->slide_n, c = body_com(m), a = w->step.fl[i].a;
+    vec3 on = v3_add(s->x, q_rotate(s->q, h->v[h->face_vert[h->f[m->slide_face].first]]));
+    FOR_PAIRS_OF(w, i, link, p) {
+        const body *o = w->bodies[link->other];
+        const poly *ho = o->shape.hull;
+        if (link->other == from || !body_is_static(o) || !ho || o->sp.kind == SHAPE_SPHERE) continue;
+        /* its face that way: coplanar with this one */
+        int face = contact_facing(o, n);
+        const poly_face *F = &ho->f[face];
+        vec3 n2 = v3_norm(q_rotate(o->q, F->n));
+        vec3 on2 = v3_add(o->x, q_rotate(o->q, ho->v[ho->face_vert[F->first]]));
+        if (!(v3_dot(n2, n) > 0) || v3_len(v3_cross(n2, n)) > REST_SEAM_ANGLE ||
+            fabs(v3_dot(v3_sub(on2, on), n)) > REST_SEAM_GAP)
+            continue;
+        /* the centre of mass over it (or coming onto it), pressed onto it */
+        bool over = true;
+        for (int k = 0; k < F->count && over; k++) over = !past_edge(gap_to_edge(o, F, k, n2, c, m->v, a));
+        if (!over || !(v3_dot(world_accel(w), n2) < -tol_accel(m, o))) continue;
+        /* it slides on that face from here, the hover gap above it */
+        long old = pair_index(w, i, from);
+        if (old >= 0) w->pairs.p[old].touching = false;
+        p->touching = true;
+        closest_result r = pair_query(w, p, w->bodies[p->a], w->bodies[p->b]);
+        p->hit = p->cache;
+        if (r.status != CLOSEST_INVALID) m->x = v3_mad(m->x, n2, tol_hover(m, o) - r.distance);
+        m->slide_on = link->other;
+        m->slide_face = face;
+        if (n2.x != n.x || n2.y != n.y || n2.z != n.z) {
+            /* (along it, turning about its normal only) */
+            m->slide_n = n2;
+            m->v = v3_mad(m->v, n2, -v3_dot(m->v, n2));
+            body_set_angular_vel(m, v3_scale(n2, v3_dot(m->w, n2)));
+            m->rot_given = false;
+        }
+        return true;
+    }
+    return false;
 }
 
 /* ---- balance and rest ---- */
