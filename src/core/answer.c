@@ -136,29 +136,38 @@ static void gather(world *w, collision *c)
     c->nr = rl.n;
 }
 
-/* The speed limits, where a collision set a speed: |v| <= max_linear, |w| <=
- * max_angular (L scaled down). */
-static bool limit_speeds(world *w, body *b)
+/* The speed limits on object i, where a collision set its speed: |v| <=
+ * max_linear, |w| <= max_angular (L scaled down).  Writes what it cut first to
+ * *cut; true when it cut. */
+static bool limit_speeds(world *w, int i, sim_cut *cut)
 {
+    body *b = w->bodies[i];
     double vl = v3_len(b->v), wl = v3_len(b->w);
-    bool cut = false;
-    if (vl > w->set.max_linear) {
+    bool linear = vl > w->set.max_linear, angular = wl > w->set.max_angular;
+    if (linear) {
+        *cut = (sim_cut){i, false, vl, w->set.max_linear};
         b->v = v3_scale(b->v, w->set.max_linear / vl);
-        cut = true;
     }
-    if (wl > w->set.max_angular) {
+    if (angular) {
+        if (!linear) *cut = (sim_cut){i, true, wl, w->set.max_angular};
         b->L = v3_scale(b->L, w->set.max_angular / wl);
         body_update_w(b);
-        cut = true;
     }
-    return cut;
+    return linear || angular;
 }
 
-/* The speed limits on the n objects of list; true when one was cut. */
+/* The speed limits on the n objects of list; true when one was cut, the
+ * collision then counted in stats (the world's first such, with what it cut). */
 static bool limit_all(world *w, const int *list, int n)
 {
     bool cut = false;
-    for (int j = 0; j < n; j++) cut = limit_speeds(w, w->bodies[list[j]]) || cut;
+    sim_cut first = {-1, false, 0, 0}, one = first;
+    for (int j = 0; j < n; j++) {
+        if (!limit_speeds(w, list[j], &one)) continue;
+        if (!cut) first = one;
+        cut = true;
+    }
+    if (cut && w->st.speed_cuts++ == 0) w->st.first_cut = first;
     return cut;
 }
 

@@ -5,8 +5,10 @@
  * sim.c finds the events in the order they happen; each is answered here at its
  * own instant t, with every object it touches brought there (step_sync), and the
  * flights it changes started afresh from t (retime.h).  The speed limits
- * (max_linear, max_angular) apply to what a collision sets.  Each collision
- * answered goes into the frame's events (world.h).
+ * (max_linear, max_angular) apply to what a collision sets: a result they cut
+ * loses energy, and is counted (sim_stats.speed_cuts, the first described in
+ * first_cut) so that the caller can say so.  Each collision answered goes into
+ * the frame's events (world.h).
  */
 #ifndef VROC_ANSWER_H
 #define VROC_ANSWER_H

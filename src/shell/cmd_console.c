@@ -160,6 +160,7 @@ cmd_status cmd_stats(shell *sh, const stmt *st)
     fprintf(sh->out, "existing_pairs = %ld\n", w->pairs.live);
     fprintf(sh->out, "unsolved = %ld\n", w->st.unsolved);
     fprintf(sh->out, "overflows = %ld\n", w->st.overflows);
+    fprintf(sh->out, "speed_cuts = %ld\n", w->st.speed_cuts);
     return CMD_OK;
 }
 

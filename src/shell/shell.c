@@ -304,6 +304,20 @@ static cmd_status write_frame(shell *sh, const stmt *st)
     return r;
 }
 
+/* The world's first collision whose result a speed limit cut (sim.h) warns,
+ * naming the object and the limit to raise: each such cut loses energy. */
+static void warn_speed_cut(shell *sh, const stmt *st)
+{
+    const sim_cut *c = &sh->w.st.first_cut;
+    const char *limit = c->angular ? "max_angular" : "max_linear";
+    const char *name = c->object >= 0 && c->object < sh->w.n ? sh->w.bodies[c->object]->name : "?";
+    sh_warn(sh, st,
+            "%s = %g cut the %s a collision gave '%s' (%.3g %s): each such cut loses energy, and "
+            "stats counts them (speed_cuts); raise %s to keep it",
+            limit, c->limit, c->angular ? "spin" : "speed", name, c->speed, c->angular ? "rad/s" : "m/s",
+            limit);
+}
+
 cmd_status shell_advance(shell *sh, const stmt *st, long n)
 {
     char err[1024];
@@ -312,6 +326,7 @@ cmd_status shell_advance(shell *sh, const stmt *st, long n)
     cmd_status r = CMD_OK;
     sim_hook hook = {hand_hook_next, hand_hook_at, &sh->hand};
     sh->hand_failed = false;
+    long cuts = sh->w.st.speed_cuts; /* (the first of a world's warns) */
     for (long k = 0; k < n && r == CMD_OK; k++) {
         if (shell_interrupted) {
             shell_interrupted = 0;
@@ -323,6 +338,8 @@ cmd_status shell_advance(shell *sh, const stmt *st, long n)
         hand_frame_begin(&sh->hand, &sh->w);
         int status = sim_frame_hooked(&sh->w, &hook, err, sizeof err);
         hand_frame_end(&sh->hand, &sh->w);
+        if (cuts == 0 && sh->w.st.speed_cuts > 0) warn_speed_cut(sh, st);
+        cuts = sh->w.st.speed_cuts;
         if (status != 0) {
             sh_error(sh, st, "%s", err);
             r = CMD_ERROR;
