@@ -221,12 +221,49 @@ static void seams_of_coplanar_tiles_are_flat(void **state)
     slides_across(SHAPE_SPHERE, 20, 0.4, lift);
 }
 
+/* A block slides down a frictionless ramp of three coplanar tiles (turned by 0.3
+ * rad; the third thicker, its top in the same plane): across both seams it goes
+ * on at g sin(theta) t, with no collision, as on one face. */
+static void block_slides_down_a_ramp_of_tiles(void **state)
+{
+    (void)state;
+    const double theta = 0.3;
+    world w;
+    contact_world(&w);
+    vec3 down = v3(cos(theta), 0, -sin(theta)), n = v3(sin(theta), 0, cos(theta));
+    const double along[3] = {0, 1, 2.2}, len[3] = {0.5, 0.5, 0.7}, thick[3] = {0.1, 0.1, 0.3};
+    for (int k = 0; k < 3; k++) {
+        char name[16];
+        snprintf(name, sizeof name, "ramp%d", k);
+        body *r = add_static_box(&w, name, v3(len[k], 1, thick[k]));
+        body_set_rotation(r, v3(0, 1, 0), theta);
+        r->x = v3_add(v3_scale(down, along[k]), v3_scale(n, 0.1 - thick[k]));
+    }
+    body *b = add_box(&w, "block", v3(0.05, 0.05, 0.05));
+    body_set_rotation(b, v3(0, 1, 0), theta);
+    b->x = v3_add(v3_scale(down, -0.3), v3_scale(n, 0.15 + 5e-10));
+    vec3 x0 = b->x;
+    w.set.time_step = 0.05;
+    char err[256];
+    for (int f = 1; f <= 27; f++) {
+        assert_int_equal(sim_frame(&w, err, sizeof err), 0);
+        double t = w.time, a = G * sin(theta);
+        assert_int_equal(w.nevents, 0);
+        assert_int_equal(b->mode, MODE_SLIDE);
+        assert_rel(v3_dot(b->v, down), a * t, 1e-9);
+        assert_rel(v3_dot(v3_sub(b->x, x0), down), 0.5 * a * t * t, 1e-9);
+    }
+    assert_int_equal(b->slide_on, 2); /* (2.6 m down: on the third) */
+    world_free(&w);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(tilted_cube_lands_alike_on_every_floor),
         cmocka_unit_test(resting_cube_sits_alike_on_every_floor),
         cmocka_unit_test(seams_of_coplanar_tiles_are_flat),
+        cmocka_unit_test(block_slides_down_a_ramp_of_tiles),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
