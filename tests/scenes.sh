@@ -1,6 +1,7 @@
 #!/bin/sh
-# scenes.sh: every scene loads and runs in vroc -b without a warning, and without
-# a fault counted in stats; the thesis's environments reproduce Table 5.1
+# scenes.sh: every scene loads and runs in vroc -b without a warning (but the
+# speed limits', where the scene's cut a collision's result), and without a fault
+# counted in stats; the thesis's environments reproduce Table 5.1
 # (objects, pairs, subframes); no dynamic object overlaps anything at the start,
 # and the objects meant to rest on something sit a hair above it; refresh draws
 # each thesis environment.
@@ -37,7 +38,7 @@ for f in "$S"/*.vroc; do
     name=$(basename "$f" .vroc)
     out=$("$VROC" -b -q "$f" -c "run $frames; stats" 2>&1)
     status=$?
-    said=$(printf '%s\n' "$out" | grep -vE '^[a-z_]+ = ')
+    said=$(printf '%s\n' "$out" | grep -vE '^[a-z_]+ = ' | no_cut_warning)
     if [ $status -eq 0 ] && [ -z "$said" ]; then ok "$name runs in vroc -b, quietly"
     else notok "$name runs in vroc -b, quietly" "status $status" "$(printf '%s' "$said" | head -3)"; fi
     # and no fault shows in stats: no walk redone, no contact unsolved, no step
