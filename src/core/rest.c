@@ -9,7 +9,6 @@
 #include "impulse.h"
 #include "pairs.h"
 #include "rows.h"
-#include "schedule.h"
 #include "step.h"
 #include "tolerance.h"
 #include "world.h"
