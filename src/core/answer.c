@@ -263,8 +263,16 @@ void answer_contact(world *w, long k, double t, double t_end)
     int held = ha ? p->a : hb ? p->b : -1;
     if (hand) step_sync(w, held, t);
     w->time = t;
-    collision c = {.k = k, .p = p, .objects = mine, .n = n, .held = held,
-                   .e = d_min(w->bodies[p->a]->elasticity, w->bodies[p->b]->elasticity)};
+    /* (its arrays are written as they are filled: kilobytes a collision would
+     * otherwise clear) */
+    collision c;
+    c.k = k;
+    c.p = p;
+    c.objects = mine;
+    c.n = n;
+    c.held = held;
+    c.e = d_min(w->bodies[p->a]->elasticity, w->bodies[p->b]->elasticity);
+    c.closing = 0;
     gather(w, &c);
     if (solve(w, &c)) report(w, &c, t);
     else if (hand) hold_stop(w, held, t); /* what it pushes cannot give way */

@@ -166,8 +166,11 @@ typedef struct {
 } edge_gap;
 
 /* The height of point c inside edge k of face F of static s (n the face's normal),
- * for a point moving at v with acceleration a. */
-static edge_gap gap_to_edge(const body *s, const poly_face *F, int k, vec3 n, vec3 c, vec3 v, vec3 a)
+ * for a point moving at v with acceleration a.  (Inlined: a slide's exit is asked
+ * for at every internal step.) */
+static inline __attribute__((always_inline)) edge_gap gap_to_edge(const body *s, const poly_face *F,
+                                                                  int k, vec3 n, vec3 c, vec3 v,
+                                                                  vec3 a)
 {
     const poly *h = s->shape.hull;
     vec3 p0 = v3_add(s->x, q_rotate(s->q, h->v[h->face_vert[F->first + k]]));
