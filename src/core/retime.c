@@ -38,12 +38,6 @@ void retime_fresh(world *w, double t)
             sched_set(w, sched_pair_id(&w->sched, fresh[k]), retime_bound(w, fresh[k], t));
 }
 
-void retime_event(world *w, int i, double t)
-{
-    w->step.event[i] = t;
-    sched_set(w, sched_obj_id(i), t);
-}
-
 void retime_box(world *w, int i, double t, bool same)
 {
     if (same && w->step.t_end <= w->broad.until[i]) return; /* (broad_cover's first test) */

@@ -14,9 +14,9 @@
 #include <stdbool.h>
 
 #include "pairs.h"
+#include "schedule.h"
 #include "step.h"
-
-typedef struct world world;
+#include "world.h"
 
 /* True when pair p needs searching: one of its objects moves, and they are not
  * pressed together. */
@@ -33,8 +33,13 @@ double retime_bound(world *w, long k, double t);
  * time t. */
 void retime_fresh(world *w, double t);
 
-/* Object i's own next event is at time t (+inf: none). */
-void retime_event(world *w, int i, double t);
+/* Object i's own next event is at time t (+inf: none).  (Inline: every internal
+ * step sets every moving object's.) */
+static inline void retime_event(world *w, int i, double t)
+{
+    w->step.event[i] = t;
+    sched_set(w, sched_obj_id(i), t);
+}
 
 /* Moving object i's box covers it, flying from time t, until the end of the step
  * (broad_cover); same: on the motion of its last flight.  Running out of memory

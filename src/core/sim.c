@@ -164,7 +164,7 @@ static void internal_step(world *w, double t_end, bool fresh)
         /* (retime_box's first test, here without a call) */
         if (w->step.t_end > w->broad.until[i]) retime_box(w, i, t, true);
     }
-    retime_fresh(w, t);
+    if (w->pairs.nfresh > 0) retime_fresh(w, t); /* (its own first test, without a call) */
     /* clusters start their steps (their kicks change their flights) */
     for (int i = 0; i < w->n; i++) {
         const body *b = w->bodies[i];
