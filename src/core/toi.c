@@ -194,18 +194,22 @@ toi_output toi_find(world *w, const toi_input *in)
     closest_cache cache = in->cache;
     double t = in->lo;
     const body *A0 = w->bodies[in->a], *B0 = w->bodies[in->b];
+    piece_pairs *pp = in->pieces && in->pieces->n > 0 ? in->pieces : NULL;
+    for (int k = 0; pp && k < pp->n; k++) pp->e[k].found = pp->e[k].hit;
     double touch = tol_touch(A0, B0);
     double depth0 = 0; /* how deep in the pair was when first found in (by rounding) */
     while (out.queries < TOI_MAX_QUERIES) {
         const body *a = step_flown(w, in->a, t, 0), *b = step_flown(w, in->b, t, 0);
-        closest_result r = body_distance_apart(a, b, &cache);
+        closest_result r = pp ? pieces_distance(a, b, pp, PIECES_SEARCH, false)
+                              : body_distance_apart(a, b, &cache);
         out.queries++;
         if (r.status == CLOSEST_INVALID) return out;
         sched_move ma = step_move(w, in->a, a), mb = step_move(w, in->b, b);
         double d = r.status == CLOSEST_SEPARATED ? r.distance : 0, target = 0.5 * touch, inside = 0;
         if (d <= touch) {
             if (r.status != CLOSEST_SEPARATED) {
-                r = body_distance(a, b, &cache); /* the normal, with the depth */
+                /* the normal, with the depth */
+                r = pp ? pieces_distance(a, b, pp, PIECES_SEARCH, true) : body_distance(a, b, &cache);
                 out.queries++;
             }
             double thick = touch + (r.status == CLOSEST_SEPARATED ? 0 : -r.distance);
