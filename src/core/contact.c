@@ -638,6 +638,13 @@ int contact_cpoints(const body *a, const body *b, const closest_result *r, doubl
     return count;
 }
 
+int contact_cpoints_of_pieces(const body *a, const body *b, const closest_result *r, double tol,
+                              cpoint *out, int max)
+{
+    body ta, tb;
+    return cpoints_of(pieces_view(a, r->ka, &ta), pieces_view(b, r->kb, &tb), r, tol, out, max);
+}
+
 /* The gap of EDGES point cp (see cpoint_eval), its normal and point. */
 static double edges_eval(const cpoint *cp, const body *P, const body *Q, vec3 *n, vec3 *at)
 {

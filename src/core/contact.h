@@ -62,6 +62,11 @@ typedef struct {
 int contact_cpoints(const body *a, const body *b, const closest_result *r, double tol, cpoint *out,
                     int max);
 
+/* contact_cpoints at the pair of pieces r names alone (pieces.h): for bodies of
+ * one piece, the same. */
+int contact_cpoints_of_pieces(const body *a, const body *b, const closest_result *r, double tol,
+                              cpoint *out, int max);
+
 /* The gap of point cp with its objects in the states P and Q (> 0 apart), the
  * unit normal there (from Q towards P) and the world point where they press (on
  * P's surface). */

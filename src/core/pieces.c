@@ -85,28 +85,52 @@ static closest_cache *cache_of(piece_pairs *pp, int t, pieces_use use, closest_c
 closest_result pieces_distance(const body *a, const body *b, piece_pairs *pp, pieces_use use,
                                bool depth)
 {
+    double others;
+    return pieces_distance_others(a, b, pp, use, depth, &others);
+}
+
+closest_result pieces_distance_others(const body *a, const body *b, piece_pairs *pp,
+                                      pieces_use use, bool depth, double *others)
+{
+    *others = HUGE_VAL;
     int n = pp && pp->n > 0 ? pp->n : a->shape.pieces * b->shape.pieces;
+    bool skip = use == PIECES_SEARCH && pp && pp->n > 0;
     /* the nearest bound first, then every other pair that could be nearer */
-    int first = 0, i, j;
+    int first = -1, i, j;
     double least = HUGE_VAL;
     for (int t = 0; t < n; t++) {
+        if (skip && pp->e[t].held) continue;
         pair_at(b, pp, t, &i, &j);
         double l = lower(a, i, b, j);
-        if (l < least) {
+        if (first < 0 || l < least) {
             least = l;
             first = t;
         }
+    }
+    if (first < 0) { /* every pair left out: apart, as far as the search goes */
+        closest_result r = {.status = CLOSEST_SEPARATED, .distance = HUGE_VAL,
+                            .normal = v3(0, 0, 1)};
+        return r;
     }
     closest_cache peek;
     pair_at(b, pp, first, &i, &j);
     closest_result best = one_pair(a, i, b, j, cache_of(pp, first, use, &peek), depth);
     for (int t = 0; t < n && best.status != CLOSEST_INVALID; t++) {
-        if (t == first) continue;
+        if (t == first || (skip && pp->e[t].held)) continue;
         if (!depth && best.status != CLOSEST_SEPARATED) break; /* (apart: no) */
         pair_at(b, pp, t, &i, &j);
-        if (!(lower(a, i, b, j) < best.distance)) continue;
+        double l = lower(a, i, b, j);
+        if (!(l < best.distance)) {
+            *others = d_min(*others, l);
+            continue;
+        }
         closest_result r = one_pair(a, i, b, j, cache_of(pp, t, use, &peek), depth);
-        if (r.status == CLOSEST_INVALID || r.distance < best.distance) best = r;
+        if (r.status == CLOSEST_INVALID || r.distance < best.distance) {
+            *others = d_min(*others, best.distance);
+            best = r;
+        } else {
+            *others = d_min(*others, r.distance);
+        }
     }
     return best;
 }

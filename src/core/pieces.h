@@ -29,6 +29,8 @@
 typedef struct {
     int i, j;
     closest_cache c, hit, found;
+    bool held;  /* in the lasting contact of its pair when a search began: that
+                 * search leaves it out (toi.h) */
 } piece_pair;
 
 typedef struct {
@@ -39,7 +41,7 @@ typedef struct {
 /* Which caches a query starts from and writes. */
 typedef enum {
     PIECES_QUERY,  /* c, and back into c */
-    PIECES_SEARCH, /* found, and back into found */
+    PIECES_SEARCH, /* found, and back into found; the pairs held left out */
     PIECES_PEEK    /* c, and into nothing */
 } pieces_use;
 
@@ -52,6 +54,11 @@ static inline bool body_compound(const body *b) { return b->built && b->shape.pi
  * there).  ka and kb name the pieces of the result. */
 closest_result pieces_distance(const body *a, const body *b, piece_pairs *pp, pieces_use use,
                                bool depth);
+
+/* The same, with *others: no more than the distance of any other of its pairs of
+ * pieces (HUGE_VAL when there is none), for bounds on when they could meet. */
+closest_result pieces_distance_others(const body *a, const body *b, piece_pairs *pp,
+                                      pieces_use use, bool depth, double *others);
 
 /* The pairs of pieces of a and b within tol of each other (distance <= tol, with
  * the depth), nearest first: at most max written to out, the count returned.

@@ -402,6 +402,29 @@ static bool faces_closed(const shape_source *src, int first, int last)
     return closed;
 }
 
+/* Six times the signed volume faces first .. last - 1 of src enclose (fans with
+ * the origin): > 0 when they face outward. */
+static double faces_volume6(const shape_source *src, int first, int last)
+{
+    double v = 0;
+    for (int f = first; f < last; f++) {
+        int a = src->face_first[f], e = src->face_first[f + 1];
+        for (int k = a + 1; k + 1 < e; k++)
+            v += v3_dot(src->pts[src->corner[a]],
+                        v3_cross(src->pts[src->corner[k]], src->pts[src->corner[k + 1]]));
+    }
+    return v;
+}
+
+/* True when faces first .. last - 1 of src close a solid for a static object:
+ * closed, and facing outward (a closed surface whose faces all face inward, as
+ * a room's walls, floor and ceiling do, holds the room's empty inside: its
+ * faces are slabs). */
+static bool faces_solid(const shape_source *src, int first, int last)
+{
+    return faces_closed(src, first, last) && faces_volume6(src, first, last) > 0;
+}
+
 /* Newell's normal of face f of the scaled points pts: twice its area long. */
 static vec3 face_newell(const shape_source *src, const vec3 *pts, int f)
 {
@@ -554,7 +577,7 @@ static int make_pieces(const shape_source *src, const vec3 *pts, bool fixed, dou
     for (int k = 0; k < runs && rc == 0; k++) {
         int first = src->npieces > 1 ? src->piece_first[k] : 0;
         int last = src->npieces > 1 ? src->piece_first[k + 1] : src->nf;
-        if (fixed && !faces_closed(src, first, last)) {
+        if (fixed && !faces_solid(src, first, last)) {
             for (int f = first; f < last && rc == 0; f++) {
                 vec3 n = face_newell(src, pts, f);
                 double l = v3_len(n);
@@ -625,7 +648,7 @@ static int build_polyhedron(shape *s, char *err, size_t errlen)
     vec3 *pts;
     if (scaled_points(s, &pts, err, errlen) != 0) return -1;
     char why[200];
-    bool whole = src->nf == 0 || (src->npieces <= 1 && !(s->p.fixed && !faces_closed(src, 0, src->nf)));
+    bool whole = src->nf == 0 || (src->npieces <= 1 && !(s->p.fixed && !faces_solid(src, 0, src->nf)));
     piece_list pl = {0};
     int slabs = 0;
     if (!whole && make_pieces(src, pts, s->p.fixed, s->p.thickness, &pl, &slabs, err, errlen) != 0) {
