@@ -591,7 +591,11 @@ static int cpoints_of(const body *a, const body *b, const closest_result *r, dou
          * so that their gaps are the objects' own, however thick the region */
         const support *sp = pside == 0 ? &z.sa : &z.sb;
         int fp = np >= 3 ? contact_facing(P, v3_neg(m)) : -1;
-        for (int i = 0; i < z.n && count < max; i++) {
+        /* (more corners than room: every so many, around the whole region, so
+         * that what they hold is still about its centre) */
+        int take = z.n < max ? z.n : max;
+        for (int k = 0; k < take; k++) {
+            int i = z.n <= max ? k : (int)((long)k * z.n / take);
             vec3 x = v3_mad(region_world(&z, n, z.p[i]), m, half);
             lift(P, sp, np, fp, m, &x);
             out[count] = base;

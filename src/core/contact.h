@@ -49,8 +49,9 @@ typedef struct {
     double sgn; /*   and the sign that turns sd x f1 from q towards p */
 } cpoint;
 
-/* The most points one contact is followed by: the corners of its region beyond
- * these are left out (two quadrilaterals overlap in eight at most). */
+/* The most points one contact is followed by: of a region with more corners,
+ * this many spread around it are kept (two quadrilaterals overlap in eight at
+ * most; a cup's round base has more). */
 #define CONTACT_MAX_POINTS 16
 
 /* The points at which touching (or nearly touching) polyhedra or spheres a and b
