@@ -656,7 +656,7 @@ static int build_polyhedron(shape *s, char *err, size_t errlen)
         free(pts);
         return -1;
     }
-    whole = whole || pl.n == 1;
+    whole = whole || (pl.n == 1 && slabs == 0);
     if (whole) {
         /* one piece: the exact hull of all the points ("the hull of all its
          * vertices"), and shape_off_hull's test is then exact too */
