@@ -509,7 +509,10 @@ static int meet(world *w, int i, const broad_tree *t)
     return 0;
 }
 
-static int build_trees(world *w);
+static int build(world *w, bool fixed);
+
+/* Both trees anew. */
+static int build_trees(world *w) { return build(w, true); }
 
 /* Object i has a new box: it goes into its tree, its pairs with the boxes it now
  * meets are made, and those with the boxes it no longer meets end.  Returns 0 or
@@ -536,7 +539,7 @@ static int refit(world *w, int i, aabb box)
     }
     /* the boxes of the tree only grow: once as many boxes as there are objects
      * were made again, the tree is built anew */
-    if (++bp->since_build > BROAD_REBUILD * w->n && build_trees(w) != 0) return -1;
+    if (++bp->since_build > BROAD_REBUILD * w->n && build(w, false) != 0) return -1;
     if (meet(w, i, &bp->moving) != 0 || (!fixed && meet(w, i, &bp->fixed) != 0)) return -1;
     /* (backwards: ending a pair takes it out of the list) */
     const pair_adj *adj = &w->pairs.adj[i];
@@ -586,12 +589,13 @@ static int make_items(world *w)
     return 0;
 }
 
-/* Both trees anew from the boxes, top down (a better tree than one made by
- * insertions); the refits count starts again.  Returns 0 or -1. */
-static int build_trees(world *w)
+/* The moving tree anew from the boxes (and the static one too when `fixed`), top
+ * down (a better tree than one made by insertions); the refits count starts
+ * again.  Returns 0 or -1. */
+static int build(world *w, bool fixed)
 {
     broad_phase *bp = &w->broad;
-    if (make_items(w) != 0) return -1;
+    if (fixed && make_items(w) != 0) return -1;
     int big = w->n > bp->nitem ? w->n : bp->nitem;
     int *obj = malloc((size_t)(big ? big : 1) * sizeof *obj);
     aabb *box = malloc((size_t)(bp->nitem ? bp->nitem : 1) * sizeof *box);
@@ -603,11 +607,11 @@ static int build_trees(world *w)
         int n = 0;
         for (int i = 0; i < w->n; i++) {
             if (!body_is_static(w->bodies[i])) obj[n++] = i;
-            else bp->leaf[i] = -1;
+            else if (fixed) bp->leaf[i] = -1;
         }
         if (n > 0 && (t->root = tree_build(t, obj, n, bp->box, bp->leaf)) < 0) rc = -1;
     }
-    if (rc == 0) { /* the static items */
+    if (rc == 0 && fixed) { /* the static items */
         broad_tree *t = &bp->fixed;
         tree_init(t);
         for (int k = 0; k < bp->nitem; k++) {

@@ -624,14 +624,14 @@ static int cpoints_of(const body *a, const body *b, const closest_result *r, dou
     return count;
 }
 
-int contact_cpoints(const body *a, const body *b, const closest_result *r, double tol, cpoint *out,
-                    int max)
+int contact_cpoints(const body *a, const body *b, const piece_pairs *pp, const closest_result *r,
+                    double tol, cpoint *out, int max)
 {
     if (!body_compound(a) && !body_compound(b)) return cpoints_of(a, b, r, tol, out, max);
     /* bodies of several pieces: the points of every pair of their pieces that
      * touch, one contact problem (pieces.h); r's own pair first, as r has it */
     closest_result near[CONTACT_MAX_POINTS];
-    int n = pieces_touching(a, b, d_max(tol, r->distance), near, CONTACT_MAX_POINTS), count = 0;
+    int n = pieces_touching(a, b, pp, d_max(tol, r->distance), near, CONTACT_MAX_POINTS), count = 0;
     body ta, tb;
     count = cpoints_of(pieces_view(a, r->ka, &ta), pieces_view(b, r->kb, &tb), r, tol, out, max);
     for (int k = 0; k < n && count < max; k++) {

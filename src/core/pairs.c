@@ -25,7 +25,6 @@ void pairs_free(pair_list *pl)
     free(pl->hits);
     for (long k = 0; pl->pieces && k < pl->cap; k++) free(pl->pieces[k].e);
     free(pl->pieces);
-    free(pl->scratch.e);
     free(pl->free_slots);
     for (int i = 0; i < pl->nadj; i++) free(pl->adj[i].l);
     free(pl->adj);
@@ -89,10 +88,11 @@ static bool scheduled(const world *w)
     return w->sched.heap != NULL && !w->sched_dirty && w->sched.nobj == w->n;
 }
 
-/* A pair of a and b with no memory. */
-static pair fresh_pair(int a, int b, bool near)
+/* A pair of a and b with no memory, in slot k of pl. */
+static pair fresh_pair(pair_list *pl, long k, int a, int b, bool near)
 {
-    return (pair){.a = a, .b = b, .near = near, .toi_fa = -1, .toi_fb = -1, .toi = HUGE_VAL};
+    return (pair){.a = a, .b = b, .near = near, .toi_fa = -1, .toi_fb = -1, .toi = HUGE_VAL,
+                  .pieces = &pl->pieces[k]};
 }
 
 /* Slot k's piece pairs: every pair of its objects' pieces (none when neither
@@ -128,13 +128,14 @@ static long pair_new(world *w, int a, int b, bool near)
             if (npp) {
                 memset(npp + pl->cap, 0, (size_t)(cap - pl->cap) * sizeof *npp);
                 pl->pieces = npp;
+                for (long j = 0; j < pl->n; j++) pl->p[j].pieces = &npp[j]; /* (moved) */
             }
             if (!np || !nh || !nf || !npp) return -1;
             pl->cap = cap;
         }
         k = pl->n++;
     }
-    pl->p[k] = fresh_pair(a, b, near);
+    pl->p[k] = fresh_pair(pl, k, a, b, near);
     if (list_all(w, k) != 0 || adj_insert(&pl->adj[a], b, k) != 0) {
         pl->p[k].a = -1;
         pl->free_slots[pl->nfree++] = k;
@@ -181,7 +182,7 @@ int pair_near(world *w, int a, int b)
     if (k >= 0) {
         if (pl->p[k].near) return 0;
         /* (heap off) near again: afresh, as the pair the heap would make now */
-        pl->p[k] = fresh_pair(a, b, true);
+        pl->p[k] = fresh_pair(pl, k, a, b, true);
         if (list_all(w, k) != 0) return -1;
         if (scheduled(w)) sched_set(w, sched_pair_id(&w->sched, k), -HUGE_VAL);
     } else if ((k = pair_new(w, a, b, true)) < 0) {
@@ -364,7 +365,8 @@ closest_result pair_query_peek(world *w, pair *p, const body *a, const body *b)
 
 piece_pairs *pair_pieces(world *w, const pair *p)
 {
-    return &w->pairs.pieces[p - w->pairs.p];
+    (void)w;
+    return p->pieces;
 }
 
 int pair_near_pieces(world *w, int i, int j, const int *jk, int n)
@@ -375,17 +377,11 @@ int pair_near_pieces(world *w, int i, int j, const int *jk, int n)
     k = pair_index(w, i, j);
     const pair *p = &pl->p[k];
     const body *a = w->bodies[p->a], *b = w->bodies[p->b];
-    piece_pairs *now = &pl->pieces[k], *want = &pl->scratch;
-    int rc = j == p->b ? pieces_list(want, a, b, jk, n) : pieces_list_first(want, a, b, jk, n);
-    if (rc != 0) return -1;
-    bool same = want->n == now->n;
-    for (int t = 0; t < want->n && same; t++)
-        same = want->e[t].i == now->e[t].i && want->e[t].j == now->e[t].j;
-    if (same) return 0;
+    piece_pairs *now = &pl->pieces[k];
+    if (pieces_listed(now, a, b, j == p->b, jk, n)) return 0;
     /* the new list, with no memory: the pair is searched anew */
-    piece_pairs swap = *now;
-    *now = *want;
-    *want = swap;
+    int rc = j == p->b ? pieces_list(now, a, b, jk, n) : pieces_list_first(now, a, b, jk, n);
+    if (rc != 0) return -1;
     pl->p[k].toi_fa = pl->p[k].toi_fb = -1;
     if (scheduled(w)) sched_set(w, sched_pair_id(&w->sched, k), -HUGE_VAL);
     return note_fresh(pl, k);

@@ -48,6 +48,7 @@ typedef struct pair {
                            * (a search's answer holds while they fly them), */
     double toi;           /*   when it found them touching (+inf: apart through the
                            *   step's end, until next) */
+    piece_pairs *pieces;  /* its piece pairs (pair_list's pieces[slot]) */
 } pair;
 
 /* A pair's last search's contact (toi.h): the pair there and the features the
@@ -81,7 +82,6 @@ typedef struct {
     long nfree;
     pair_adj *adj;        /* per object: its pairs */
     int nadj;             /* objects adj has lists for */
-    piece_pairs scratch;  /* a list of piece pairs being made (pair_near_pieces) */
     long *fresh;          /* the slots made since pairs_take_fresh last emptied it */
     long nfresh, capfresh;
     bool dirty;           /* objects were added, deleted or changed mass */

@@ -49,15 +49,55 @@ static closest_result one_pair(const body *a, int i, const body *b, int j, close
     return r;
 }
 
-/* The least distance the pieces i of a and j of b can have: their spheres'
- * (less a rounding's worth). */
-static double lower(const body *a, int i, const body *b, int j)
+/* What bounds the distance of pairs of pieces of a and b from below: the
+ * spheres about the pieces, and, for a body of one piece against one of
+ * several, its sphere in the other's axes against each piece's box (far
+ * tighter for a room's thin slabs). */
+typedef struct {
+    const body *a, *b;
+    bool a_in_b, b_in_a; /* a's (b's) sphere in b's (a's) axes */
+    vec3 ca, cb;         /* those centres */
+    double ra, rb;       /* and radii */
+} bounds;
+
+static bounds bounds_of(const body *a, const body *b)
+{
+    bounds B = {a, b, false, false, {0, 0, 0}, {0, 0, 0}, 0, 0};
+    vec3 c;
+    if (a->shape.pieces <= 1 && b->shape.pieces > 1) {
+        piece_ball(a, 0, &c, &B.ra);
+        B.ca = q_unrotate(b->q, v3_sub(c, b->x));
+        B.a_in_b = true;
+    }
+    if (b->shape.pieces <= 1 && a->shape.pieces > 1) {
+        piece_ball(b, 0, &c, &B.rb);
+        B.cb = q_unrotate(a->q, v3_sub(c, a->x));
+        B.b_in_a = true;
+    }
+    return B;
+}
+
+/* The distance from point c to the box of piece p (its own axes). */
+static double box_gap(const shape_piece *p, vec3 c)
+{
+    double dx = d_max(d_max(p->box_lo.x - c.x, c.x - p->box_hi.x), 0);
+    double dy = d_max(d_max(p->box_lo.y - c.y, c.y - p->box_hi.y), 0);
+    double dz = d_max(d_max(p->box_lo.z - c.z, c.z - p->box_hi.z), 0);
+    return sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+/* The least distance the pieces i of a and j of b can have (less a rounding's
+ * worth). */
+static double lower(const bounds *B, int i, int j)
 {
     vec3 ca, cb;
     double ra, rb;
-    piece_ball(a, i, &ca, &ra);
-    piece_ball(b, j, &cb, &rb);
-    return v3_dist(ca, cb) - (ra + rb) * (1 + 1e-9);
+    piece_ball(B->a, i, &ca, &ra);
+    piece_ball(B->b, j, &cb, &rb);
+    double l = v3_dist(ca, cb) - (ra + rb);
+    if (B->a_in_b) l = d_max(l, box_gap(&B->b->shape.piece[j], B->ca) - B->ra);
+    if (B->b_in_a) l = d_max(l, box_gap(&B->a->shape.piece[i], B->cb) - B->rb);
+    return l - 1e-9 * (ra + rb);
 }
 
 /* Piece pair t of the query: from pp, or the t-th of all. */
@@ -85,14 +125,25 @@ static closest_cache *cache_of(piece_pairs *pp, int t, pieces_use use, closest_c
 closest_result pieces_distance(const body *a, const body *b, piece_pairs *pp, pieces_use use,
                                bool depth)
 {
-    double others;
-    return pieces_distance_others(a, b, pp, use, depth, &others);
+    return pieces_distance_near(a, b, pp, use, depth, NULL);
 }
 
-closest_result pieces_distance_others(const body *a, const body *b, piece_pairs *pp,
-                                      pieces_use use, bool depth, double *others)
+/* Notes query r (not the nearest) or bound l of a pair of pieces in near. */
+static void note(pieces_near *near, const closest_result *r, double l)
 {
-    *others = HUGE_VAL;
+    if (!near) return;
+    if (r && near->n < PIECES_NEAR) near->r[near->n++] = *r;
+    else near->others = d_min(near->others, r ? r->distance : l);
+}
+
+closest_result pieces_distance_near(const body *a, const body *b, piece_pairs *pp,
+                                    pieces_use use, bool depth, pieces_near *near)
+{
+    if (near) {
+        near->n = 0;
+        near->others = HUGE_VAL;
+    }
+    bounds B = bounds_of(a, b);
     int n = pp && pp->n > 0 ? pp->n : a->shape.pieces * b->shape.pieces;
     bool skip = use == PIECES_SEARCH && pp && pp->n > 0;
     /* the nearest bound first, then every other pair that could be nearer */
@@ -101,7 +152,7 @@ closest_result pieces_distance_others(const body *a, const body *b, piece_pairs 
     for (int t = 0; t < n; t++) {
         if (skip && pp->e[t].held) continue;
         pair_at(b, pp, t, &i, &j);
-        double l = lower(a, i, b, j);
+        double l = lower(&B, i, j);
         if (first < 0 || l < least) {
             least = l;
             first = t;
@@ -119,28 +170,31 @@ closest_result pieces_distance_others(const body *a, const body *b, piece_pairs 
         if (t == first || (skip && pp->e[t].held)) continue;
         if (!depth && best.status != CLOSEST_SEPARATED) break; /* (apart: no) */
         pair_at(b, pp, t, &i, &j);
-        double l = lower(a, i, b, j);
+        double l = lower(&B, i, j);
         if (!(l < best.distance)) {
-            *others = d_min(*others, l);
+            note(near, NULL, l);
             continue;
         }
         closest_result r = one_pair(a, i, b, j, cache_of(pp, t, use, &peek), depth);
         if (r.status == CLOSEST_INVALID || r.distance < best.distance) {
-            *others = d_min(*others, best.distance);
+            note(near, &best, 0);
             best = r;
         } else {
-            *others = d_min(*others, r.distance);
+            note(near, &r, 0);
         }
     }
     return best;
 }
 
-int pieces_touching(const body *a, const body *b, double tol, closest_result *out, int max)
+int pieces_touching(const body *a, const body *b, const piece_pairs *pp, double tol,
+                    closest_result *out, int max)
 {
-    int n = a->shape.pieces * b->shape.pieces, count = 0;
+    int n = pp && pp->n > 0 ? pp->n : a->shape.pieces * b->shape.pieces, count = 0;
+    bounds B = bounds_of(a, b);
     for (int t = 0; t < n; t++) {
-        int i = t / b->shape.pieces, j = t % b->shape.pieces;
-        if (!(lower(a, i, b, j) <= tol)) continue;
+        int i, j;
+        pair_at(b, pp, t, &i, &j);
+        if (!(lower(&B, i, j) <= tol)) continue;
         closest_result r = one_pair(a, i, b, j, NULL, true);
         if (r.status == CLOSEST_INVALID || !(r.distance <= tol)) continue;
         /* nearest first (insertion: a contact has few) */
@@ -152,6 +206,24 @@ int pieces_touching(const body *a, const body *b, double tol, closest_result *ou
         if (at < max) out[at] = r;
     }
     return count;
+}
+
+double pieces_ball_gap(const body *b, vec3 c, double r)
+{
+    closest_proxy ball = {NULL, NULL, r, v3(0, 0, 0), c, q_identity()};
+    double best = HUGE_VAL;
+    for (int k = 0; k < b->shape.pieces; k++) {
+        vec3 pc;
+        double pr;
+        piece_ball(b, k, &pc, &pr);
+        if (!(v3_dist(pc, c) - pr - r < best)) continue;
+        closest_proxy p = piece_proxy(b, k);
+        closest_result res = closest_distance_apart(&ball, &p, NULL);
+        if (res.status == CLOSEST_INVALID) return -HUGE_VAL;
+        best = d_min(best, res.status == CLOSEST_SEPARATED ? res.distance : 0);
+        if (best <= 0) break;
+    }
+    return best;
 }
 
 const body *pieces_view(const body *b, int k, body *tmp)
@@ -192,6 +264,20 @@ int pieces_list(piece_pairs *pp, const body *a, const body *b, const int *bk, in
         for (int t = 0; t < nb; t++)
             pp->e[pp->n++] = (piece_pair){.i = i, .j = bk ? bk[t] : t};
     return 0;
+}
+
+bool pieces_listed(const piece_pairs *pp, const body *a, const body *b, bool second, const int *k,
+                   int n)
+{
+    int other = second ? a->shape.pieces : b->shape.pieces;
+    if (pp->n != (long)other * n) return false;
+    int t = 0;
+    for (int x = 0; x < (second ? other : n); x++)
+        for (int y = 0; y < (second ? n : other); y++, t++) {
+            int i = second ? x : k[x], j = second ? k[y] : y;
+            if (pp->e[t].i != i || pp->e[t].j != j) return false;
+        }
+    return true;
 }
 
 int pieces_list_first(piece_pairs *pp, const body *a, const body *b, const int *ak, int na)

@@ -55,15 +55,31 @@ static inline bool body_compound(const body *b) { return b->built && b->shape.pi
 closest_result pieces_distance(const body *a, const body *b, piece_pairs *pp, pieces_use use,
                                bool depth);
 
-/* The same, with *others: no more than the distance of any other of its pairs of
- * pieces (HUGE_VAL when there is none), for bounds on when they could meet. */
-closest_result pieces_distance_others(const body *a, const body *b, piece_pairs *pp,
-                                      pieces_use use, bool depth, double *others);
+/* The pairs of pieces a query of two bodies of several pieces met besides its
+ * nearest (pieces_distance_near), for bounds on when each could meet: the
+ * first PIECES_NEAR it queried, and no more than the distance of any other. */
+#define PIECES_NEAR 8
+typedef struct {
+    closest_result r[PIECES_NEAR];
+    int n;
+    double others; /* HUGE_VAL when there is none */
+} pieces_near;
 
-/* The pairs of pieces of a and b within tol of each other (distance <= tol, with
- * the depth), nearest first: at most max written to out, the count returned.
- * No cache: for a contact's points, each pair of pieces' own. */
-int pieces_touching(const body *a, const body *b, double tol, closest_result *out, int max);
+/* pieces_distance, and those in *near (when not NULL). */
+closest_result pieces_distance_near(const body *a, const body *b, piece_pairs *pp,
+                                    pieces_use use, bool depth, pieces_near *near);
+
+/* The pairs of pieces of a and b, of pp (every pair when pp is NULL or empty),
+ * within tol of each other (distance <= tol, with the depth), nearest first: at
+ * most max written to out, the count returned.  No cache: for a contact's
+ * points, each pair of pieces' own. */
+int pieces_touching(const body *a, const body *b, const piece_pairs *pp, double tol,
+                    closest_result *out, int max);
+
+/* The distance from the ball of radius r about c to b (of any number of pieces):
+ * the least over its pieces; <= 0 when they meet.  (To place objects clear of
+ * a body of many pieces, whose outer sphere says little.) */
+double pieces_ball_gap(const body *b, vec3 c, double r);
 
 /* b seen as its piece k alone (its hull, features and box, one piece): b itself
  * when it has one piece, else *tmp made so. */
@@ -73,6 +89,11 @@ const body *pieces_view(const body *b, int k, body *tmp);
  * in bk (nb of them; every one when bk is NULL), in order.  Returns 0, or -1
  * when out of memory (pp is then empty). */
 int pieces_list(piece_pairs *pp, const body *a, const body *b, const int *bk, int nb);
+
+/* True when pp is what pieces_list (second: pieces of b in k) or
+ * pieces_list_first (else: pieces of a in k) would make of the n pieces k. */
+bool pieces_listed(const piece_pairs *pp, const body *a, const body *b, bool second, const int *k,
+                   int n);
 
 /* pp listed anew as every piece of b with the pieces of a in ak: the same with
  * the static body first. */

@@ -24,7 +24,7 @@ static inline bool retime_searched(const world *w, const pair *p)
 {
     /* (a pair of bodies of several pieces in lasting contact is searched for
      * its other pieces: toi.h) */
-    return (!p->touching || w->pairs.pieces[p - w->pairs.p].n > 0) &&
+    return (!p->touching || p->pieces->n > 0) &&
            (step_moves(w, p->a) || step_moves(w, p->b));
 }
 

@@ -199,11 +199,22 @@ static double any_way_time(const body *a, const sched_move *ma, const body *b, c
  * r) cannot close their gap down to target: the later of the schedule's bound
  * and the points' (envelope_time), looked for within T. */
 static double advance(const body *a, const sched_move *ma, const body *b, const sched_move *mb,
-                      const closest_result *r, double d, double others, double target, double T)
+                      const closest_result *r, double d, const pieces_near *near, double target,
+                      double T)
 {
     if (!(d > target)) return 0;
-    /* bodies of several pieces: r's pair of pieces as two convex bodies, the
-     * others (no nearer than `others`) whatever their direction */
+    /* bodies of several pieces: each pair of pieces the query met as two convex
+     * bodies, the others (no nearer than near->others) whatever their direction */
+    double dt_near = HUGE_VAL;
+    for (int k = 0; near && k < near->n; k++) {
+        const closest_result *q = &near->r[k];
+        body tq, tr;
+        const body *qa = pieces_view(a, q->ka, &tq), *qb = pieces_view(b, q->kb, &tr);
+        if (q->status != CLOSEST_SEPARATED || !(q->distance > target)) return 0;
+        dt_near = d_min(dt_near, sched_ca_time(qa, ma, qb, mb, q->distance, q->normal, q->pa, q->pb, target));
+    }
+    if (near && near->others < HUGE_VAL)
+        dt_near = d_min(dt_near, any_way_time(a, ma, b, mb, near->others, target));
     body ta, tb;
     a = pieces_view(a, r->ka, &ta);
     b = pieces_view(b, r->kb, &tb);
@@ -212,7 +223,7 @@ static double advance(const body *a, const sched_move *ma, const body *b, const 
      * would crawl (a twentieth of what is left to search, or less) */
     if (dt < TOI_ENVELOPE_WHEN * T)
         dt = d_max(dt, envelope_time(a, ma, b, mb, r->normal, r->pb, target, T));
-    return others < HUGE_VAL ? d_min(dt, any_way_time(a, ma, b, mb, others, target)) : dt;
+    return d_min(dt, dt_near);
 }
 
 /* A search of a pair in lasting contact (its bodies of several pieces: pieces.h)
@@ -248,8 +259,8 @@ toi_output toi_find(world *w, const toi_input *in)
     double depth0 = 0; /* how deep in the pair was when first found in (by rounding) */
     while (out.queries < TOI_MAX_QUERIES) {
         const body *a = step_flown(w, in->a, t, 0), *b = step_flown(w, in->b, t, 0);
-        double others = HUGE_VAL;
-        closest_result r = pp ? pieces_distance_others(a, b, pp, PIECES_SEARCH, false, &others)
+        pieces_near near_, *near = pp ? &near_ : NULL;
+        closest_result r = pp ? pieces_distance_near(a, b, pp, PIECES_SEARCH, false, near)
                               : body_distance_apart(a, b, &cache);
         out.queries++;
         if (r.status == CLOSEST_INVALID) return out;
@@ -258,7 +269,7 @@ toi_output toi_find(world *w, const toi_input *in)
         if (d <= touch) {
             if (r.status != CLOSEST_SEPARATED) {
                 /* the normal, with the depth */
-                r = pp ? pieces_distance_others(a, b, pp, PIECES_SEARCH, true, &others)
+                r = pp ? pieces_distance_near(a, b, pp, PIECES_SEARCH, true, near)
                        : body_distance(a, b, &cache);
                 out.queries++;
             }
@@ -277,7 +288,7 @@ toi_output toi_find(world *w, const toi_input *in)
                 depth0 = d_max(depth0, inside);
             }
         }
-        double dt = advance(a, &ma, b, &mb, &r, d, others, target, in->hi - t);
+        double dt = advance(a, &ma, b, &mb, &r, d, near, target, in->hi - t);
         if (!(t + dt > t)) {
             /* apart by less than rounding, not meeting: the time to move a contact
              * distance at their relative speed */
@@ -293,7 +304,7 @@ toi_output toi_find(world *w, const toi_input *in)
             /* apart through hi; they cannot touch before their gap could close to
              * the contact distance (not the search's half of it: that is where it
              * would look next) */
-            double key = d > touch ? t + advance(a, &ma, b, &mb, &r, d, others, touch, HUGE_VAL) : t;
+            double key = d > touch ? t + advance(a, &ma, b, &mb, &r, d, near, touch, HUGE_VAL) : t;
             out.t = d_max(key, nextafter(in->hi, HUGE_VAL));
             return out;
         }

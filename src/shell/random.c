@@ -13,6 +13,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 
+#include "core/pieces.h"
 #include "handlers.h"
 #include "shell.h"
 
@@ -202,7 +203,10 @@ cmd_status cmd_random(shell *sh, const stmt *st)
         sh_error(sh, st, "out of memory");
         goto done;
     }
-    for (int i = 0; i < w->n; i++) grid_add(&g, body_com(w->bodies[i]), w->bodies[i]->shape.r_out);
+    /* (a body of several pieces, a room of one file, is tested piece by piece:
+     * its outer sphere would fill the room) */
+    for (int i = 0; i < w->n; i++)
+        if (!body_compound(w->bodies[i])) grid_add(&g, body_com(w->bodies[i]), w->bodies[i]->shape.r_out);
     for (; made < n; made++) {
         body *b = random_body(sh, &id, err, sizeof err);
         if (!b) {
@@ -215,7 +219,10 @@ cmd_status cmd_random(shell *sh, const stmt *st)
             vec3 c = v3(rng_uniform(&sh->rng, -box.x + r, box.x - r),
                         rng_uniform(&sh->rng, -box.y + r, box.y - r),
                         rng_uniform(&sh->rng, -box.z + r, box.z - r));
-            if (grid_free_at(&g, c, r)) {
+            bool clear = grid_free_at(&g, c, r);
+            for (int i = 0; i < w->n && clear; i++)
+                if (body_compound(w->bodies[i])) clear = pieces_ball_gap(w->bodies[i], c, r) > 0;
+            if (clear) {
                 b->x = c;
                 placed = true;
             }
