@@ -216,9 +216,8 @@ static int parse(const buf *b, const char *name, mesh_file *m, char *err, size_t
     return mesh_parse((const unsigned char *)b->s, b->n, name, m, err, errlen);
 }
 
-/* The shape of a polyhedron from b (which must read), at scale k, and its source
- * (which the shape borrows from: free it after the shape). */
-static mesh_source *shape_of(const buf *b, const char *name, vec3 k, shape *s)
+/* The source of text b named name (which must read). */
+static mesh_source *source_of(const buf *b, const char *name)
 {
     mesh_file m;
     char err[512];
@@ -226,6 +225,15 @@ static mesh_source *shape_of(const buf *b, const char *name, vec3 k, shape *s)
     mesh_source *src = mesh_source_make(&m, name, err, sizeof err);
     assert_non_null(src);
     mesh_file_free(&m);
+    return src;
+}
+
+/* The shape of a polyhedron from b (which must read), at scale k, and its source
+ * (which the shape borrows from: free it after the shape). */
+static mesh_source *shape_of(const buf *b, const char *name, vec3 k, shape *s)
+{
+    char err[512];
+    mesh_source *src = source_of(b, name);
     shape_params p = shape_defaults(SHAPE_POLYHEDRON);
     p.src = &src->src;
     p.scale = k;
@@ -371,18 +379,6 @@ static void obj_box(buf *b, const char *g, vec3 lo, vec3 hi, int *nv)
     *nv += 8;
 }
 
-/* The source of text b named name (which must read). */
-static mesh_source *source_of(const buf *b, const char *name)
-{
-    mesh_file m;
-    char err[512];
-    if (parse(b, name, &m, err, sizeof err) != 0) fail_msg("%s", err);
-    mesh_source *src = mesh_source_make(&m, name, err, sizeof err);
-    assert_non_null(src);
-    mesh_file_free(&m);
-    return src;
-}
-
 /* A polyhedron named name from text b in w, of mass mass (-1: static, set before
  * its file, as a scene does), at x. */
 static body *add_file(world *w, const char *name, const buf *b, double mass, vec3 x)
@@ -390,7 +386,8 @@ static body *add_file(world *w, const char *name, const buf *b, double mass, vec
     body *p = add(w, name, SHAPE_POLYHEDRON);
     int i = w->n - 1;
     char err[512];
-    if (edit_property(w, i, offsetof(body, mass), &mass, err, sizeof err) != 0) fail_msg("%s", err);
+    double num[4] = {mass, 0, 0, 0}; /* (edit_property reads a statement's four numbers) */
+    if (edit_property(w, i, offsetof(body, mass), num, err, sizeof err) != 0) fail_msg("%s", err);
     if (edit_source(w, i, &source_of(b, name)->src, err, sizeof err) != 0) fail_msg("%s: %s", name, err);
     p->x = x;
     return p;

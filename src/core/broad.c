@@ -64,10 +64,10 @@ static double slack(const body *b, vec3 c, double reach)
     return SIM_TOUCH + SIM_ROUND_REL * b->shape.r_out + 1e-9 * (b->shape.r_out + m + reach);
 }
 
-/* The box of object b's shape where it stands (its body-axes box turned). */
-static aabb still_box(const body *b)
+/* The box from lo to hi in object b's axes, turned and placed as b stands, and
+ * widened by its slack. */
+static aabb turned_box(const body *b, vec3 lo, vec3 hi)
 {
-    vec3 lo = b->shape.box_lo, hi = b->shape.box_hi;
     vec3 mid = v3_scale(v3_add(lo, hi), 0.5), half = v3_scale(v3_sub(hi, lo), 0.5);
     mat3 r = m3_from_quat(b->q);
     vec3 c = v3_add(b->x, m3_mulv(r, mid)), e;
@@ -77,6 +77,9 @@ static aabb still_box(const body *b)
     aabb a = {v3_sub(c, e), v3_add(c, e)};
     return box_grow(a, slack(b, c, 0)); /* (|e| <= the outer radius) */
 }
+
+/* The box of object b's shape where it stands (its body-axes box turned). */
+static aabb still_box(const body *b) { return turned_box(b, b->shape.box_lo, b->shape.box_hi); }
 
 /* Where a parabola x0 + v s + a s^2 / 2 goes for s in [s0, s1]: its lowest and
  * highest. */
@@ -116,15 +119,7 @@ static aabb swept_box(const body *b, const flight *f, double t0, double t1, doub
 /* The box of piece k of static object b of several pieces, as still_box. */
 static aabb piece_box(const body *b, int k)
 {
-    const shape_piece *p = &b->shape.piece[k];
-    vec3 mid = v3_scale(v3_add(p->box_lo, p->box_hi), 0.5), half = v3_scale(v3_sub(p->box_hi, p->box_lo), 0.5);
-    mat3 r = m3_from_quat(b->q);
-    vec3 c = v3_add(b->x, m3_mulv(r, mid)), e;
-    e.x = fabs(r.m[0][0]) * half.x + fabs(r.m[0][1]) * half.y + fabs(r.m[0][2]) * half.z;
-    e.y = fabs(r.m[1][0]) * half.x + fabs(r.m[1][1]) * half.y + fabs(r.m[1][2]) * half.z;
-    e.z = fabs(r.m[2][0]) * half.x + fabs(r.m[2][1]) * half.y + fabs(r.m[2][2]) * half.z;
-    aabb a = {v3_sub(c, e), v3_add(c, e)};
-    return box_grow(a, slack(b, c, 0));
+    return turned_box(b, b->shape.piece[k].box_lo, b->shape.piece[k].box_hi);
 }
 
 /* The box a moving object's sphere needs where it stands. */
