@@ -216,8 +216,10 @@ static double advance(const body *a, const sched_move *ma, const body *b, const 
     if (near && near->others < HUGE_VAL)
         dt_near = d_min(dt_near, any_way_time(a, ma, b, mb, near->others, target));
     body ta, tb;
-    a = pieces_view(a, r->ka, &ta);
-    b = pieces_view(b, r->kb, &tb);
+    if (near) { /* (only bodies of several pieces have them) */
+        a = pieces_view(a, r->ka, &ta);
+        b = pieces_view(b, r->kb, &tb);
+    }
     double dt = sched_ca_time(a, ma, b, mb, d, r->normal, r->pa, r->pb, target);
     /* the points' bound costs a pass over their vertices: only where the surfaces'
      * would crawl (a twentieth of what is left to search, or less) */
