@@ -212,6 +212,16 @@ static void pieces_rooms_thickness_and_hulls(void **state)
     assert_non_null(strstr(g_out, "pieces = 2\n"));
     assert_int_equal(count(g_errbuf, "warning:"), 0); /* closed: its own mass, convex pieces */
     assert_int_equal(run("pieces = 2\n"), CMD_OK);
+    /* distance names the piece: a ball over the upper box's top, and beside the
+     * lower box's end */
+    assert_int_equal(run("sphere s1\ntranslate = (0.5, 0.5, 2.5)\nradius = 0.25\ndistance l s1\n"), CMD_OK);
+    assert_non_null(strstr(g_out, "distance = 0.25\n"));
+    assert_non_null(strstr(g_out, "piece_A = 2\n"));
+    assert_null(strstr(g_out, "piece_B"));
+    assert_int_equal(run("s1.translate = (2.5, 0.5, 0.5)\ndistance s1 l\n"), CMD_OK);
+    assert_non_null(strstr(g_out, "distance = 0.25\n"));
+    assert_non_null(strstr(g_out, "piece_B = 1\n"));
+    assert_int_equal(run("delete s1\npolyhedron l\n"), CMD_OK);
     assert_int_equal(run("pieces = 1\n"), CMD_ERROR);
     assert_non_null(strstr(g_errbuf, "'l' collides as 2 convex pieces (got 1)"));
     /* open groups on a moving object: one warning, overlaps counted twice */
