@@ -285,7 +285,11 @@ static void pump(shell *sh, viewer *v)
             v->x = e.x;
             v->y = e.y;
             v->known = true;
-            v->dirty = true;
+            /* the picture changes with the head, or with the hand where it takes
+             * the mouse at once; while time runs the next frame shows the hand
+             * (and drawing more often would only delay the frames) */
+            if (v->orbiting || (has_hand(sh, v) && (!sh->running || !(sh->w.set.time_step > 0))))
+                v->dirty = true;
             break;
         case WIN_BUTTON:
             v->x = e.x;

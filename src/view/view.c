@@ -158,7 +158,9 @@ static int view_eyes(const world *w, const view_settings *s, view_eye eye[2], ch
  * OSMesaDestroyContext never frees (its st manager and each context's last
  * framebuffer).  Under LeakSanitizer that would fail every program that draws, so a
  * sanitizer build tells LSan to ignore allocations made inside libOSMesa (LSan calls
- * this hook at start-up; it exists only in sanitizer builds). */
+ * this hook at start-up; it exists only in sanitizer builds).  So too libdbus's:
+ * SDL2 (the window, window.h) opens D-Bus for the screen saver and input methods,
+ * and the SDL of Debian 12 (2.26) cannot be told to shut it down at SDL_Quit. */
 #if defined(__SANITIZE_ADDRESS__)
 #define VIEW_LSAN_HOOK 1
 #elif defined(__has_feature)
@@ -168,7 +170,7 @@ static int view_eyes(const world *w, const view_settings *s, view_eye eye[2], ch
 #endif
 #ifdef VIEW_LSAN_HOOK
 const char *__lsan_default_suppressions(void);
-const char *__lsan_default_suppressions(void) { return "leak:libOSMesa.so\n"; }
+const char *__lsan_default_suppressions(void) { return "leak:libOSMesa.so\nleak:libdbus-1.so\n"; }
 #endif
 
 /* Fixed state: lights, material, depth test, culling, arrays.  The lights are given
