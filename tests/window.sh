@@ -15,12 +15,11 @@
 #    (SDL2 is not even loaded).
 . "$(dirname "$0")/lib.sh"
 tmux_ready || exit 0
-for c in Xvfb xdotool xwd ffmpeg; do
+for c in xdotool xwd ffmpeg; do
     if ! command -v $c >/dev/null 2>&1; then notok "$c is installed (make deps installs it)"; exit 0; fi
 done
 SES=vrocwin$$
-XPID=
-trap 'tmux kill-server 2>/dev/null; [ -n "$XPID" ] && kill $XPID 2>/dev/null; rm -rf "$TMP"' EXIT
+trap 'tmux kill-server 2>/dev/null; xvfb_stop; rm -rf "$TMP"' EXIT
 
 # ---- no display: an error; batch runs unchanged ----
 expect "without a display, window = on is an error that says so" 1 \
@@ -28,12 +27,7 @@ expect "without a display, window = on is an error that says so" 1 \
     env -u DISPLAY -u WAYLAND_DISPLAY "$VROC" -b -c 'window = on'
 
 # ---- the X server ----
-Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp 3>"$TMP/display" 2>"$TMP/xvfb.log" &
-XPID=$!
-i=0
-while [ ! -s "$TMP/display" ] && [ $i -lt 100 ]; do sleep 0.1; i=$((i + 1)); done
-if [ ! -s "$TMP/display" ]; then notok "Xvfb starts" "$(cat "$TMP/xvfb.log")"; exit 0; fi
-export DISPLAY=":$(cat "$TMP/display")"
+xvfb_start || exit 0
 
 S=$(cd "$(dirname "$0")/../scenes" && pwd)
 ( cd "$TMP" && env -u DISPLAY "$VROC" -b "$S/simple.vroc" -c "trace = a.csv; run 20; show window; hash" > a.out 2>&1 )

@@ -1,7 +1,7 @@
 /* window.c: the window on the screen, with SDL2 loaded when first opened (window.h).
  *
- * Each SDL function used is a pointer of the function's own type (sdl_api),
- * filled from the library with dlsym, as gl_load.c does for OSMesa.  The picture
+ * Each SDL function used is a pointer of the function's own type, bound by dl.h
+ * as gl_load.c binds OSMesa's.  The picture
  * goes through the window's surface (SDL_GetWindowSurface), not a renderer: a
  * software blit with no filtering, so that at the window's own size the screen
  * holds the picture's very pixels, and no OpenGL of the display's beside the
@@ -9,8 +9,9 @@
  */
 #include "window.h"
 
+#include "dl.h"
+
 #include <SDL.h>
-#include <dlfcn.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -38,26 +39,13 @@ static int sdl_load(char *err, size_t errlen)
 {
     static bool loaded;
     if (loaded) return 0;
-    void *lib = NULL;
-    for (size_t k = 0; k < sizeof sdl_names / sizeof *sdl_names && !lib; k++)
-        lib = dlopen(sdl_names[k], RTLD_NOW | RTLD_LOCAL);
-    if (!lib) {
-        snprintf(err, errlen, "cannot load SDL2, which draws the window (%s; Debian's libsdl2-2.0-0): %s",
-                 sdl_names[0], dlerror());
-        return -1;
-    }
-    /* (it stays loaded to the end, as OSMesa does) */
-#define SDL_ONE(name)                                                                          \
-    {                                                                                          \
-        void *f = dlsym(lib, #name);                                                           \
-        if (!f) {                                                                              \
-            snprintf(err, errlen, "cannot load SDL2: %s has no %s", sdl_names[0], #name);      \
-            return -1;                                                                         \
-        }                                                                                      \
-        memcpy(&sdl.name, &f, sizeof f);                                                       \
-    }
-    SDL_FUNCS(SDL_ONE)
+#define SDL_ONE(name) {#name, &sdl.name},
+    static const dl_symbol syms[] = {SDL_FUNCS(SDL_ONE)};
 #undef SDL_ONE
+    if (dl_load(sdl_names, sizeof sdl_names / sizeof *sdl_names,
+                "SDL2, which draws the window", syms, sizeof syms / sizeof *syms, err,
+                errlen) != 0)
+        return -1;
     loaded = true;
     return 0;
 }
