@@ -5,8 +5,10 @@
 # and through xdotool as a person uses the window:
 #  - the window's pixels (xwd) are those of the PNG files refresh writes, for a
 #    pair (its two halves), an anaglyph and mono, with the hand and the panel;
-#  - keys start, stop and step time;
+#  - keys start, stop and step time, and refresh;
 #  - a drag turns the head about look_at, and show head agrees with the picture;
+#    the wheel takes it nearer; while a tracker file plays, the mouse turns the
+#    head even in select mode, and the hand stays the file's;
 #  - a drag with the button held grabs and throws a ball: its release velocity is
 #    the derivative of hand_log's last rows, within 20% of the drag's speed, and
 #    the log replayed as a tracker file gives the same hash and trace;
@@ -99,6 +101,10 @@ t2=$(screen | sed -n 's/^time = //p' | tail -1)
 if awk -v a="$t1" -v b="$t2" 'BEGIN { exit !(a > 0 && (b - a - 0.1)^2 < 1e-18) }'; then
     ok ". steps one frame ($t1 to $t2)"
 else notok ". steps one frame" "stopped at $t1, then time = $t2"; fi
+xdotool key r
+sleep 0.5
+ls "$TMP"/frames/frame-*-left.png > /dev/null 2>&1 && ok "r refreshes: the frame's PNG is written" ||
+    notok "r refreshes" "$(ls "$TMP")"
 
 # ---- the mouse as the head ----
 type_ "restart; output = fr; image_size = (160, 128); stereo = mono; sphere ball; radius = 0.2; translate = (0, 2, 0)" Enter
@@ -124,6 +130,32 @@ raw "$TMP/fr/frame-000000-left.png" "$TMP/h.rgb"
 cmp -s "$TMP/wh.rgb" "$TMP/h.rgb" && ! cmp -s "$TMP/wh.rgb" "$TMP/l.rgb" &&
     ok "the picture after the drag is the view from that head (refresh's PNG)" ||
     notok "the picture after the drag is the view from show's head" "$(cmp "$TMP/wh.rgb" "$TMP/h.rgb" 2>&1)"
+
+# the wheel turned away from the user takes the head nearer look_at, by 1.1
+xdotool mousemove $((WX + 80)) $((WY + 64)) click 4
+sleep 0.5
+type_ "show head" Enter
+sleep 0.5
+h2=$(screen | sed -n 's/^head = (\(.*\))$/\1/p' | tail -1)
+if printf '%s %s\n' "$head" "$h2" | awk -F'[ ,]+' '{ d = sqrt($4^2 + ($5 - 2)^2 + $6^2)
+        exit !((d - 2 / 1.1)^2 < 1e-18 && ($4 / $1 - 1 / 1.1)^2 < 1e-18) }'; then
+    ok "the wheel takes the head nearer look_at, 2/1.1 m away, on the same line"
+else notok "the wheel takes the head nearer" "($head) then ($h2)"; fi
+
+# a playing tracker file has the hand: in select mode the mouse drives the head
+printf 'time,x,y,z,qw,qx,qy,qz,trigger,button\n0,0.1,1,0,1,0,0,0,0,0\n100,0.1,1,0,1,0,0,0,0,0\n' > "$TMP/still.csv"
+type_ "select on; head = (0, 0, 0); tracker = still.csv; time" Enter
+sleep 0.5
+xdotool mousemove $((WX + 40)) $((WY + 60)) mousedown 1 sleep 0.1 mousemove $((WX + 70)) $((WY + 60)) \
+    sleep 0.1 mouseup 1
+sleep 0.5
+type_ "show head; show hand" Enter
+sleep 0.5
+h3=$(screen | sed -n 's/^head = (\(.*\))$/\1/p' | tail -1)
+hd=$(screen | sed -n 's/^hand = (\(.*\))$/\1/p' | tail -1)
+if [ "$hd" = "0.1, 1, 0" ] && printf '%s\n' "$h3" | awk -F', ' '{ exit !($1 < -0.1 && (sqrt($1^2 + ($2 - 2)^2 + $3^2) - 2)^2 < 1e-18) }'; then
+    ok "while a tracker file plays, a drag in select mode turns the head, and the hand stays the file's"
+else notok "a playing tracker file keeps the hand; the mouse turns the head" "head = ($h3), hand = ($hd)"; fi
 
 # ---- the mouse as the hand: grab, carry and throw while time runs ----
 # The head at the origin looks along +y; the ball's near side is 0.9 m away.
@@ -198,7 +230,8 @@ xdotool mousemove $(px -0.16) click 1
 check_screen "a click on its Stop stops it" "stopped at time = "
 
 # ---- Escape closes the window; the prompt goes on ----
-xdotool key --window "$(winid)" Escape 2>/dev/null || xdotool key Escape
+xdotool windowfocus --sync "$(winid)"
+xdotool key Escape
 sleep 0.5
 type_ "show window" Enter
 check_screen "Escape closes the window" "window = off"
