@@ -190,6 +190,9 @@ cmd_status cmd_stats(shell *sh, const stmt *st)
     fprintf(sh->out, "render_time = %.6f\n", sh->view_st.render_time);
     fprintf(sh->out, "files_written = %ld\n", sh->view_st.frames_written);
     fprintf(sh->out, "existing_pairs = %ld\n", w->pairs.live);
+    fprintf(sh->out, "unsolved = %ld\n", w->st.unsolved);
+    fprintf(sh->out, "overflows = %ld\n", w->st.overflows);
+    fprintf(sh->out, "speed_cuts = %ld\n", w->st.speed_cuts);
     return CMD_OK;
 }
 

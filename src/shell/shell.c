@@ -315,6 +315,20 @@ static cmd_status write_frame(shell *sh, const stmt *st)
     return r;
 }
 
+/* The world's first collision whose result a speed limit cut (sim.h) warns,
+ * naming the object and the limit to raise: each such cut loses energy. */
+static void warn_speed_cut(shell *sh, const stmt *st)
+{
+    const sim_cut *c = &sh->w.st.first_cut;
+    const char *limit = c->angular ? "max_angular" : "max_linear";
+    const char *name = c->object >= 0 && c->object < sh->w.n ? sh->w.bodies[c->object]->name : "?";
+    sh_warn(sh, st,
+            "%s = %g cut the %s a collision gave '%s' (%.3g %s): each such cut loses energy, and "
+            "stats counts them (speed_cuts); raise %s to keep it",
+            limit, c->limit, c->angular ? "spin" : "speed", name, c->speed, c->angular ? "rad/s" : "m/s",
+            limit);
+}
+
 /* shell_advance, with a status line when show (progress.h). */
 static cmd_status advance(shell *sh, const stmt *st, long n, bool show)
 {
@@ -330,6 +344,7 @@ static cmd_status advance(shell *sh, const stmt *st, long n, bool show)
         progress_begin(&prog, sh->err, n, t0);
         sh->progress = &prog;
     }
+    long cuts = sh->w.st.speed_cuts; /* (the first of a world's warns) */
     for (long k = 0; k < n && r == CMD_OK; k++) {
         if (shell_interrupted) {
             shell_interrupted = 0;
@@ -345,6 +360,8 @@ static cmd_status advance(shell *sh, const stmt *st, long n, bool show)
         int status = sim_frame_hooked(&sh->w, &hook, err, sizeof err);
         viewer_sample(sh);
         hand_frame_end(&sh->hand, &sh->w);
+        if (cuts == 0 && sh->w.st.speed_cuts > 0) warn_speed_cut(sh, st);
+        cuts = sh->w.st.speed_cuts;
         if (status != 0) {
             sh_error(sh, st, "%s", err);
             r = CMD_ERROR;
