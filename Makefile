@@ -32,10 +32,11 @@ SCENEDIR = $(PREFIX)/share/vroc/scenes
 
 VERSION  = 0.1.0
 CORE_PKGS = qhull_r
-PKGS     = readline osmesa libpng qhull_r sndfile samplerate libpulse-simple libpulse nettle
+PKGS     = readline osmesa libpng qhull_r sndfile samplerate libpulse-simple libpulse nettle sdl2
 # linked: all but OSMesa, which the views load with dlopen when they first draw
-# (src/view/gl_load.h), so that a run that draws nothing never maps it; nettle
-# gives the SHA-256 that save writes of a polyhedron's file
+# (src/view/gl_load.h), so that a run that draws nothing never maps it, and SDL2,
+# loaded the same way when the live window first opens (src/view/window.h);
+# nettle gives the SHA-256 that save writes of a polyhedron's file
 LINK_PKGS = readline libpng qhull_r sndfile samplerate libpulse-simple libpulse nettle
 CC      ?= cc
 WARN     = -Wall -Wextra -Wpedantic -Werror -Wshadow -Wmissing-prototypes
