@@ -338,7 +338,9 @@ static int parse_value(stmt *st, const token *t, int nt, const where *at)
         if (get_tuple(t, nt, &i, n, c, st->num, at) != 0) return -1;
         char what[96];
         snprintf(what, sizeof what, "%s components", c->name);
-        for (int k = 0; k < n; k++)
+        /* (a quaternion's length is its check: a unit one the simulation made may
+         * have a component a rounding above 1) */
+        for (int k = 0; k < n && c->arg != VAL_QUAT; k++)
             if (check_range_of(what, c->range, c->lo, c->hi, st->num[k], at) != 0) return -1;
         if (c->arg == VAL_QUAT) {
             double n2 = 0;
