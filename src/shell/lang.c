@@ -22,6 +22,7 @@
 #include "lex.h"
 #include "fmt.h"
 #include "core/grow.h"
+#include "sound/synth.h"
 
 /* Files larger than this are refused (a scene is a few kilobytes). */
 #define LANG_MAX_FILE (64L * 1024 * 1024)
@@ -537,7 +538,16 @@ static int load_sub(stmt *st, const lang_paths *paths, int depth, const char **s
     return st->sub ? 0 : -1;
 }
 
-/* A file the statement reads (a tracker file) is found as read finds its file:
+/* True when statement st names a file it reads: a tracker file, or a sound file
+ * (not off or a built-in sound). */
+static bool names_file(const stmt *st)
+{
+    const char *n = st->cmd->name;
+    if (strcmp(n, "tracker") == 0) return st->n == 0;
+    return strcmp(n, "collision_sound") == 0 && strcmp(st->word, "off") != 0 && synth_find(st->word) < 0;
+}
+
+/* A file the statement reads (a tracker or sound file) is found as read finds its file:
  * st->word becomes the path found, or stays as written when there is none (its
  * handler then says so).  Returns 0, or -1 when out of memory. */
 static int resolve_word(stmt *st, const lang_paths *paths)
@@ -587,7 +597,7 @@ program *lang_parse(const char *text, size_t len, const char *name, int first_li
                     goto fail;
                 }
                 st.file = prog->path;
-                if (strcmp(st.cmd->name, "tracker") == 0 && st.n == 0 && resolve_word(&st, paths) != 0) {
+                if (names_file(&st) && resolve_word(&st, paths) != 0) {
                     stmt_clear(&st);
                     goto oom;
                 }

@@ -3,6 +3,7 @@
 
 #include "fmt.h"
 
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -10,7 +11,9 @@
 #include "core/world.h"
 #include "handlers.h"
 #include "media.h"
+#include "savepath.h"
 #include "shell.h"
+#include "sound/synth.h"
 
 void writer_vec(FILE *out, vec3 v)
 {
@@ -18,8 +21,66 @@ void writer_vec(FILE *out, vec3 v)
     fprintf(out, "(%s, %s, %s)", fmt_num(a, v.x), fmt_num(b, v.y), fmt_num(c, v.z));
 }
 
-static void write_setting(FILE *out, const shell *sh, const command *c, int for_save)
+/* The hand's exact state (hand.h), each setting by name; true when c is one of
+ * them (and was written, unless there is nothing to write). */
+static bool write_hand_exact(FILE *out, const shell *sh, const char *n)
 {
+    const hand *h = &sh->hand;
+    char a[32], b[32], c[32], d[32];
+    if (strcmp(n, "tracker_clock") == 0) {
+        double clock, start;
+        hand_clock_of(h, &clock, &start);
+        fprintf(out, "tracker_clock = (%s, %s)\n", fmt_num(a, clock), fmt_num(b, start));
+    } else if (strcmp(n, "tracker_row") == 0) {
+        fprintf(out, "tracker_row = %d\n", hand_row(h));
+    } else if (strcmp(n, "hand_orientation") == 0) {
+        fprintf(out, "hand_orientation = (%s, %s, %s, %s)\n", fmt_num(a, h->q.w), fmt_num(b, h->q.x),
+                fmt_num(c, h->q.y), fmt_num(d, h->q.z));
+    } else if (strcmp(n, "hand_velocity") == 0) {
+        fprintf(out, "hand_velocity = ");
+        writer_vec(out, h->sv);
+        fprintf(out, " %s\n", fmt_num(a, h->stmt_time));
+    } else if (strcmp(n, "hand_spin") == 0) {
+        fprintf(out, "hand_spin = ");
+        writer_vec(out, h->sw);
+        fputc('\n', out);
+    } else if (strcmp(n, "grip_at") == 0 || strcmp(n, "grip_orientation") == 0) {
+        vec3 x;
+        quat q;
+        hand_grip_pose(h, &x, &q);
+        if (n[5] == 'a') {
+            fprintf(out, "grip_at = ");
+            writer_vec(out, x);
+            fputc('\n', out);
+        } else {
+            fprintf(out, "grip_orientation = (%s, %s, %s, %s)\n", fmt_num(a, q.w), fmt_num(b, q.x),
+                    fmt_num(c, q.y), fmt_num(d, q.z));
+        }
+    } else if (strcmp(n, "last_held") == 0) {
+        fprintf(out, "last_held = %s\n", h->last_held >= 0 && h->last_held < sh->w.n
+                                               ? sh->w.bodies[h->last_held]->name : "none");
+    } else {
+        return false;
+    }
+    return true;
+}
+
+/* The settings save leaves to hand_write: the hand's, after the objects it may
+ * hold. */
+static bool hand_later(const char *n)
+{
+    static const char *const later[] = {"hand", "hand_rotate", "trigger", "tracker", "tracker_time",
+                                        "grip", "tracker_clock", "tracker_row", "hand_orientation",
+                                        "hand_velocity", "hand_spin", "grip_at", "grip_orientation",
+                                        "last_held"};
+    for (size_t k = 0; k < sizeof later / sizeof *later; k++)
+        if (strcmp(n, later[k]) == 0) return true;
+    return false;
+}
+
+static void write_setting(FILE *out, const shell *sh, const command *c, const char *save_path)
+{
+    int for_save = save_path != NULL;
     const shell_settings *s = &sh->set;
     const view_settings *vs = &sh->view_set;
     char a[32];
@@ -39,10 +100,16 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
         return;
     }
     /* what the hand does, after the objects it may hold (hand_write) */
-    bool after = strcmp(n, "tracker") == 0 || strcmp(n, "tracker_time") == 0 ||
-                 strcmp(n, "grip") == 0 || strcmp(n, "trigger") == 0;
-    if (for_save && (after || (!sh->hand.used && (strcmp(n, "hand") == 0 || strcmp(n, "hand_rotate") == 0))))
+    /* (the clock runs whether or not the hand was used) */
+    if (for_save && hand_later(n) && (sh->hand.used || strcmp(n, "tracker_clock") != 0)) return;
+    if (write_hand_exact(out, sh, n)) return;
+    if (strcmp(n, "collision_sound") == 0 && for_save) {
+        char rel[PATH_MAX];
+        const char *snd = sh->sound_set.collision_sound;
+        bool file = strcmp(snd, "off") != 0 && synth_find(snd) < 0;
+        fprintf(out, "collision_sound = \"%s\"\n", file ? savepath(snd, save_path, rel, sizeof rel) : snd);
         return;
+    }
     if (strcmp(n, "tracker") == 0) {
         if (hs->tracker[0]) fprintf(out, "tracker = \"%s\"\n", hs->tracker);
         else fprintf(out, "tracker = off\n");
@@ -69,7 +136,15 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
         return;
     }
     if (strcmp(n, "clock") == 0) {
-        fprintf(out, "clock = (%s, %ld)\n", fmt_num(a, sh->w.time_base), sh->w.base_frames);
+        /* the clock counts frames of the time_step it had when they ran; one
+         * changed since (a slider of the panel, at a frame's end) counts from the
+         * next frame on (with no frames counted, the step does not matter) */
+        const world *w = &sh->w;
+        bool changed = w->base_frames > 0 && memcmp(&w->base_step, &w->set.time_step, sizeof w->base_step) != 0;
+        char b[32];
+        if (changed) fprintf(out, "time_step = %s\n", fmt_num(b, w->base_step));
+        fprintf(out, "clock = (%s, %ld)\n", fmt_num(a, w->time_base), w->base_frames);
+        if (changed) fprintf(out, "time_step = %s\n", fmt_num(b, w->set.time_step));
         return;
     }
     if (strcmp(n, "frame") == 0) {
@@ -119,29 +194,59 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
     fputc('\n', out);
 }
 
-void settings_write(FILE *out, const shell *sh, int for_save)
+void settings_write(FILE *out, const shell *sh, const char *save_path)
 {
     for (int i = 0; i < command_count; i++) {
         const command *c = &command_table[i];
-        if (c->form == FORM_SETTING) write_setting(out, sh, c, for_save);
+        if (c->form == FORM_SETTING) write_setting(out, sh, c, save_path);
         else if (c->run == cmd_select) /* the hand's select mode is a setting too */
             fprintf(out, "select %s\n", sh->hand.set.select_mode ? "on" : "off");
     }
 }
 
-void hand_write(FILE *out, const shell *sh)
+void hand_write(FILE *out, const shell *sh, const char *save_path)
 {
     const hand *h = &sh->hand;
-    char a[32];
+    char a[32], rel[PATH_MAX];
     if (!h->used) return;
-    fprintf(out, "# the hand\n");
+    fprintf(out, "# the hand: its tracker and the place in it, its pose, what it holds\n");
     if (h->playing) {
-        fprintf(out, "tracker = \"%s\"\ntracker_time = %s\n", h->set.tracker,
+        fprintf(out, "tracker = \"%s\"\ntracker_time = %s\n", savepath(h->set.tracker, save_path, rel, sizeof rel),
                 fmt_num(a, hand_tracker_time(h)));
     } else if (h->set.tracker[0]) {
         fprintf(out, "# tracker = \"%s\" (a live feed: not opened again)\n", h->set.tracker);
     }
+    write_hand_exact(out, sh, "tracker_clock");
+    if (h->playing) write_hand_exact(out, sh, "tracker_row");
+    fprintf(out, "hand = ");
+    writer_vec(out, h->p);
+    fprintf(out, "\nhand_rotate = ");
+    writer_vec(out, h->set.hand_rotate.dir);
+    fprintf(out, " %s\n", fmt_num(a, h->set.hand_rotate.amount));
+    write_hand_exact(out, sh, "hand_orientation");
+    write_hand_exact(out, sh, "hand_velocity");
+    write_hand_exact(out, sh, "hand_spin");
     fprintf(out, "grip = %s\n", hand_grip_word(h, &sh->w));
+    if (h->grip == GRIP_OBJECT || h->grip == GRIP_PANEL) {
+        write_hand_exact(out, sh, "grip_at");
+        write_hand_exact(out, sh, "grip_orientation");
+    }
+    if (h->grip == GRIP_OBJECT && h->held >= 0 && h->held < sh->w.n) {
+        /* the held object's motion as it was: the grip above gave it the hand's */
+        const body *b = sh->w.bodies[h->held];
+        fprintf(out, "%s.velocity = ", b->name);
+        writer_vec(out, b->v);
+        fprintf(out, "\n%s.angular_vel = ", b->name);
+        writer_vec(out, b->w);
+        fprintf(out, "\n%s.angular_momentum = ", b->name);
+        writer_vec(out, b->L);
+        fprintf(out, "\n%s.hold_pivot = ", b->name);
+        writer_vec(out, b->hold_pivot);
+        fprintf(out, "\n%s.hold_velocity = ", b->name);
+        writer_vec(out, b->hold_v);
+        fputc('\n', out);
+    }
+    write_hand_exact(out, sh, "last_held");
 }
 
 void body_write(FILE *out, const body *b)

@@ -15,15 +15,18 @@ struct world;
 void writer_vec(FILE *out, vec3 v);
 
 /* Writes every setting as statements of the language, in the command table's
- * order; for `save` the log files (trace, events, hand_log) are written as
- * comments, since reading them back would truncate the logs, the hand's pose only
- * when the hand has been used, and what the hand holds is left to hand_write. */
-void settings_write(FILE *out, const struct shell *sh, int for_save);
+ * order: for show (save_path NULL), or for a world saved to save_path, where the
+ * log files (trace, events, hand_log) are written as comments, since reading
+ * them back would truncate the logs, a sound file's path is written as savepath.h
+ * says, and the hand is left to hand_write. */
+void settings_write(FILE *out, const struct shell *sh, const char *save_path);
 
-/* For `save`, after the objects and their contact state: the tracker, its place
- * in its file, and what the trigger holds (grip), which read back without
- * pressing or grabbing anything. */
-void hand_write(FILE *out, const struct shell *sh);
+/* For a world saved to save_path, after the objects and their contact state:
+ * the hand's exact state (when it has been used): the tracker file (savepath.h)
+ * and the place in it, the pose, the velocity its statements gave it, what the
+ * trigger holds (grip) and how, the held object's motion, and the object the
+ * re-select button takes; all read back without pressing or grabbing anything. */
+void hand_write(FILE *out, const struct shell *sh, const char *save_path);
 
 /* Writes body b as statements that recreate it (its creation line first): as
  * typed (rotate, linear_vel, angular_vel), then exactly (orientation, velocity,
