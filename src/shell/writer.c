@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/grow.h"
 #include "core/pairs.h"
 #include "core/world.h"
 #include "handlers.h"
@@ -297,6 +298,12 @@ void body_write(FILE *out, const body *b)
     fputc('\n', out);
 }
 
+static int cmp_int(const void *x, const void *y)
+{
+    int a = *(const int *)x, b = *(const int *)y;
+    return (a > b) - (a < b);
+}
+
 void contact_write(FILE *out, const world *w, int i, int only_later)
 {
     static const char *modes[] = {"free", "slide", "general"};
@@ -306,10 +313,20 @@ void contact_write(FILE *out, const world *w, int i, int only_later)
                 b->slide_face);
     fprintf(out, "mode = %s\n", body_is_static(b) ? "free" : modes[b->mode]);
     if (!body_is_static(b)) fprintf(out, "resting = %s\n", b->state == STATE_RESTING ? "on" : "off");
+    /* in the order of the other objects, whatever the order the pairs were made
+     * in: a world saved, read back and saved again gives the same file */
+    int *other = NULL, n = 0, cap = 0;
     for (long k = 0; k < w->pairs.n; k++) {
         const pair *p = &w->pairs.p[k];
         if (!p->touching || (p->a != i && p->b != i)) continue;
         int o = p->a == i ? p->b : p->a;
-        if (!only_later || o < i) fprintf(out, "touching = %s\n", w->bodies[o]->name);
+        if (only_later && o > i) continue;
+        int *more = grow_for_one(other, n, &cap, sizeof *other, 8);
+        if (!more) break; /* (out of memory: the contacts found so far) */
+        other = more;
+        other[n++] = o;
     }
+    if (n > 1) qsort(other, (size_t)n, sizeof *other, cmp_int);
+    for (int k = 0; k < n; k++) fprintf(out, "touching = %s\n", w->bodies[other[k]]->name);
+    free(other);
 }
