@@ -19,11 +19,10 @@
 #     printed one: after each of its frames but those a button added).
 # And the unbroken run, saved and hashed after every frame, gives the trace of
 # the same run in one go (a save and a hash change nothing).
-# Prints one ok or not ok line per world; SWEEP_FAILED counts the failed worlds.
+# Prints two ok or not ok lines.  (The body runs in a subshell: its variables
+# are its own, and leave the caller's loops alone.)
 
-SWEEP_FAILED=0
-
-sweep() {
+sweep() (
     name=$1 setup=$2 frames=$3 on=$4
     last=$(printf '%s\n' $frames | tail -1)
     total=$((last + on))
@@ -50,7 +49,6 @@ sweep() {
     fi
     if [ $st -ne 0 ]; then
         notok "$name: the unbroken run saved after each frame" "$(head -3 "$d/a.txt")"
-        SWEEP_FAILED=$((SWEEP_FAILED + 1))
         return
     fi
     if cmp -s "$d/a.csv" "$d/r.csv"; then
@@ -58,7 +56,6 @@ sweep() {
     else
         notok "$name: saving and hashing after each frame leaves the run as it was" \
             "$(cmp "$d/a.csv" "$d/r.csv" 2>&1)"
-        SWEEP_FAILED=$((SWEEP_FAILED + 1))
     fi
     # time -> hash of the unbroken run, as "T H" lines
     awk '/^time = /{t=$3} /^hash = /{print t, $3}' "$d/a.txt" > "$d/hashes"
@@ -113,7 +110,6 @@ sweep() {
         printf '%s\n' "$bad" | sed 1d | head -8
         nb=$(printf '%s\n' "$bad" | sed 1d | wc -l)
         [ "$nb" -gt 8 ] && echo "#   and $((nb - 8)) frames more"
-        SWEEP_FAILED=$((SWEEP_FAILED + 1))
     fi
     [ -n "${SWEEP_KEEP:-}" ] || rm -rf "$d"
-}
+)

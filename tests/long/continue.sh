@@ -1,0 +1,58 @@
+#!/bin/sh
+# long/continue.sh: the long sweep of exact state (make check-long; issue 31).
+# Every shipped scene saved after every 10th frame from 0 to 300, and 50 random
+# worlds of 20 to 200 objects (a walled room under gravity, the objects falling
+# into piles on its floor, a ball the hand grabs and throws by a tracker file,
+# the first two with the collision heap off) saved after every 10th frame from 0
+# to 40, while they fall, pile and are thrown at: each saved world must read back
+# to the bit and run on 20 frames to the unbroken run's trace and hash
+# (tests/sweep.sh says what is checked).
+. "$(dirname "$0")/../lib.sh"
+. "$(dirname "$0")/../sweep.sh"
+S=$(cd "$(dirname "$0")/../../scenes" && pwd)
+cd "$TMP" || exit 1
+
+for f in "$S"/*.vroc; do
+    sweep "$(basename "$f" .vroc)" "$f" "$(seq 0 10 300)" 20
+done
+
+# world K: N objects from 20 to 200, random places, sizes, speeds and spins
+# (seed K) in a room 4 m wide, 2.7 m tall, over a floor at z = -1.25; a ball
+# above them that the hand holds from time 0 and throws between 0.4 and 0.9 s
+# (direction, speed and spin drawn from K); heap off for K = 0 and 5 (the heap
+# off checks every pair every step: 20 and 38 objects)
+world() { # K: writes world-K.vroc and world-K.csv
+    awk -v k="$1" -v dir="$TMP" 'BEGIN {
+        srand(1000 + k)
+        n = 20 + int(k * 180 / 49)
+        f = dir "/world-" k ".vroc"
+        print "gravity" > f
+        print "cube floor; mass = -1; size = (2, 2, 0.1); translate = (0, 0, -1.35); elasticity = 0.5" > f
+        print "cube wall-n; mass = -1; size = (2.2, 0.1, 1.4); translate = (0, 2.1, 0)" > f
+        print "cube wall-s; mass = -1; size = (2.2, 0.1, 1.4); translate = (0, -2.1, 0)" > f
+        print "cube wall-e; mass = -1; size = (0.1, 2, 1.4); translate = (2.1, 0, 0)" > f
+        print "cube wall-w; mass = -1; size = (0.1, 2, 1.4); translate = (-2.1, 0, 0)" > f
+        print "sphere ball; radius = 0.1; mass = 0.4; elasticity = 0.7; translate = (0, 0, 1.1)" > f
+        printf "seed = %d; random_box = (1.95, 1.95, 0.95)\nrandom %d\n", k + 1, n > f
+        if (k == 0 || k == 5) print "collision_heap = off" > f
+        printf "select on\ntracker = \"world-%d.csv\"\n", k > f
+        close(f)
+        c = dir "/world-" k ".csv"
+        print "time,x,y,z,qw,qx,qy,qz,trigger,button" > c
+        t1 = 0.4 + 0.5 * rand()                      # the throw ends, and the hand lets go
+        a = 6.2832 * rand(); s = 1 + 3 * rand(); w = 4 * rand()
+        vx = s * cos(a); vy = s * sin(a); vz = 1 + 2 * rand()
+        printf "0,0,0,1.1,1,0,0,0,1,0\n0.2,0,0,1.1,1,0,0,0,1,0\n" > c
+        # from 0.2 s to t1 the hand goes at (vx, vy, vz), turning about z by w (t1 - 0.2)
+        d = t1 - 0.2; h = w * d / 2
+        printf "%.6f,%.6f,%.6f,%.6f,%.9f,0,0,%.9f,1,0\n", t1, vx * d, vy * d, 1.1 + vz * d, cos(h), sin(h) > c
+        printf "%.6f,%.6f,%.6f,%.6f,%.9f,0,0,%.9f,0,0\n", t1 + 0.1, vx * d, vy * d, 1.1 + vz * d, cos(h), sin(h) > c
+        close(c)
+    }'
+}
+k=0
+while [ $k -lt 50 ]; do
+    world $k
+    sweep "random-world-$k" "$TMP/world-$k.vroc" "$(seq 0 10 40)" 20
+    k=$((k + 1))
+done
