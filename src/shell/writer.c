@@ -7,7 +7,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/grow.h"
 #include "core/pairs.h"
 #include "core/world.h"
 #include "handlers.h"
@@ -304,6 +303,16 @@ static int cmp_int(const void *x, const void *y)
     return (a > b) - (a < b);
 }
 
+/* The other object of pair k when it is a lasting contact of object i (and the
+ * other comes before i, when only_later), else -1. */
+static int contact_other(const world *w, long k, int i, int only_later)
+{
+    const pair *p = &w->pairs.p[k];
+    if (!p->touching || (p->a != i && p->b != i)) return -1;
+    int o = p->a == i ? p->b : p->a;
+    return only_later && o > i ? -1 : o;
+}
+
 void contact_write(FILE *out, const world *w, int i, int only_later)
 {
     static const char *modes[] = {"free", "slide", "general"};
@@ -314,19 +323,18 @@ void contact_write(FILE *out, const world *w, int i, int only_later)
     fprintf(out, "mode = %s\n", body_is_static(b) ? "free" : modes[b->mode]);
     if (!body_is_static(b)) fprintf(out, "resting = %s\n", b->state == STATE_RESTING ? "on" : "off");
     /* in the order of the other objects, whatever the order the pairs were made
-     * in: a world saved, read back and saved again gives the same file */
-    int *other = NULL, n = 0, cap = 0;
+     * in: a world saved, read back and saved again gives the same file (in the
+     * pairs' order when there is no memory to sort them: the same contacts) */
+    int m = 0;
+    for (long k = 0; k < w->pairs.n; k++) m += contact_other(w, k, i, only_later) >= 0;
+    int local[32], *other = m <= 32 ? local : malloc((size_t)m * sizeof *other), n = 0;
     for (long k = 0; k < w->pairs.n; k++) {
-        const pair *p = &w->pairs.p[k];
-        if (!p->touching || (p->a != i && p->b != i)) continue;
-        int o = p->a == i ? p->b : p->a;
-        if (only_later && o > i) continue;
-        int *more = grow_for_one(other, n, &cap, sizeof *other, 8);
-        if (!more) break; /* (out of memory: the contacts found so far) */
-        other = more;
-        other[n++] = o;
+        int o = contact_other(w, k, i, only_later);
+        if (o < 0) continue;
+        if (other) other[n++] = o;
+        else fprintf(out, "touching = %s\n", w->bodies[o]->name);
     }
     if (n > 1) qsort(other, (size_t)n, sizeof *other, cmp_int);
     for (int k = 0; k < n; k++) fprintf(out, "touching = %s\n", w->bodies[other[k]]->name);
-    free(other);
+    if (other != local) free(other);
 }
