@@ -157,9 +157,9 @@ void edit_delete(world *w, int i)
 void edit_exact_orientation(world *w, int i, quat q)
 {
     body *b = w->bodies[i];
-    q = q_as_unit(q);
     if (memcmp(&b->q, &q, sizeof q) == 0)
         return; /* as it stands (an orientation typed with rotate, saved and read back) */
+    q = q_as_unit(q);
     disturb(w, i, true);
     b->q = q;
     b->rot_given = false;
