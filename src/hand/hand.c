@@ -680,8 +680,8 @@ int hand_set_last_held(hand *h, const world *w, const char *name, char *err, siz
 {
     int i = strcmp(name, "none") == 0 ? -1 : world_find(w, name);
     if (strcmp(name, "none") != 0 && (i < 0 || body_is_static(w->bodies[i]))) {
-        snprintf(err, errlen, i < 0 ? "no object named '%s'" : "'%s' is static: the hand holds only dynamic objects",
-                 name);
+        snprintf(err, errlen,
+                 i < 0 ? "no object named '%s'" : "'%s' is static: the hand holds only dynamic objects", name);
         return -1;
     }
     h->last_held = i;

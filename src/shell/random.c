@@ -220,7 +220,8 @@ cmd_status cmd_random(shell *sh, const stmt *st)
         sh_error(sh, st, "out of memory");
         goto done;
     }
-    for (int i = 0; i < w->n; i++) grid_add(&g, body_com(w->bodies[i]), w->bodies[i]->shape.r_out, w->bodies[i]);
+    for (int i = 0; i < w->n; i++)
+        grid_add(&g, body_com(w->bodies[i]), w->bodies[i]->shape.r_out, w->bodies[i]);
     for (; made < n; made++) {
         body *b = random_body(sh, &id, err, sizeof err);
         if (!b) {

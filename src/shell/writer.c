@@ -140,7 +140,8 @@ static void write_setting(FILE *out, const shell *sh, const command *c, const ch
          * changed since (a slider of the panel, at a frame's end) counts from the
          * next frame on (with no frames counted, the step does not matter) */
         const world *w = &sh->w;
-        bool changed = w->base_frames > 0 && memcmp(&w->base_step, &w->set.time_step, sizeof w->base_step) != 0;
+        bool changed =
+            w->base_frames > 0 && memcmp(&w->base_step, &w->set.time_step, sizeof w->base_step) != 0;
         char b[32];
         if (changed) fprintf(out, "time_step = %s\n", fmt_num(b, w->base_step));
         fprintf(out, "clock = (%s, %ld)\n", fmt_num(a, w->time_base), w->base_frames);
@@ -211,8 +212,8 @@ void hand_write(FILE *out, const shell *sh, const char *save_path)
     if (!h->used) return;
     fprintf(out, "# the hand: its tracker and the place in it, its pose, what it holds\n");
     if (h->playing) {
-        fprintf(out, "tracker = \"%s\"\ntracker_time = %s\n", savepath(h->set.tracker, save_path, rel, sizeof rel),
-                fmt_num(a, hand_tracker_time(h)));
+        fprintf(out, "tracker = \"%s\"\ntracker_time = %s\n",
+                savepath(h->set.tracker, save_path, rel, sizeof rel), fmt_num(a, hand_tracker_time(h)));
     } else if (h->set.tracker[0]) {
         fprintf(out, "# tracker = \"%s\" (a live feed: not opened again)\n", h->set.tracker);
     }
