@@ -8,6 +8,9 @@ export HOME="$TMP"   # no history file of the user's is touched
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
 
 ok() { echo "ok - $1"; }
+# its input without the speed limits' warning (the first collision result a
+# limit cut: commands/max_angular), for checks of what else a run says
+no_cut_warning() { grep -v ": each such cut loses energy, and stats counts them (speed_cuts); raise "; }
 notok() { echo "not ok - $1"; shift; for l in "$@"; do echo "#   $l"; done; }
 
 # expect TEXT STATUS PATTERN CMD...: CMD exits with STATUS and its output
@@ -38,6 +41,12 @@ tmux_ready() {
         return 1
     fi
     export TMUX_TMPDIR="$TMP"
+}
+# start_session ARGS: the session $SES, 120x40, running vroc ARGS (shell words,
+# as typed) in $TMP with HOME there; EXIT=N shows its exit status after it
+start_session() {
+    tmux -f /dev/null new-session -d -s "$SES" -x 120 -y 40 \
+        "cd '$TMP' && HOME='$TMP' ASAN_OPTIONS='$ASAN_OPTIONS' '$VROC' $*; echo EXIT=\$?; sleep 30"
 }
 screen() { tmux capture-pane -p -t "$SES" -S -80; }
 type_() { tmux send-keys -t "$SES" "$@"; }

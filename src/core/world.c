@@ -34,6 +34,7 @@ void world_init(world *w)
     broad_init(&w->broad);
     sched_init(&w->sched);
     step_init(&w->step);
+    answer_init(&w->answer);
 }
 
 void world_free(world *w)
@@ -55,6 +56,7 @@ void world_free(world *w)
     broad_free(&w->broad);
     sched_free(&w->sched);
     step_free(&w->step);
+    answer_free(&w->answer);
 }
 
 void world_event(world *w, const sim_event *e)

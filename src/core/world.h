@@ -7,7 +7,8 @@
  * collision heap).  sim_settings_defaults gives every start-up value in one place.
  * It also holds the state the simulation keeps between frames, each part owned
  * by its own module, which initialises and frees it: the pairs (pairs.h), the
- * schedule (schedule.h) and the internal step's scratch (step.h).  The world knows
+ * schedule (schedule.h), the flights of the internal step (step.h) and the
+ * scratch its events are answered in (answer.h).  The world knows
  * nothing of text, prompts, files or pixels: the shell and the views read it, and
  * read the frame's collisions from `events` (as Box2D's contact events).
  */
@@ -16,6 +17,7 @@
 
 #include <stdbool.h>
 
+#include "answer.h"
 #include "body.h"
 #include "broad.h"
 #include "force.h"
@@ -35,13 +37,33 @@ typedef struct {
     bool collision_heap;    /* the schedule (on), or every pair every step (off) */
 } sim_settings;
 
+/* A collision's result that a speed limit cut (sim.h): the object, the limit,
+ * and the speed it would have had. */
+typedef struct {
+    int object;           /* its index then */
+    bool angular;         /* max_angular cut its spin (rad/s); else max_linear its
+                           * speed (m/s) */
+    double speed;         /* what it would have had */
+    double limit;         /* the limit it was cut to */
+} sim_cut;
+
 /* The simulation's counters since the world was made. */
 typedef struct {
     long frames;          /* frames advanced */
     long subframes;       /* internal steps taken */
     long pair_checks;     /* pair distance queries */
     long collisions;      /* collisions answered */
-    long restarts;        /* closest-feature walks redone from scratch */
+    long restarts;        /* closest-feature walks redone from scratch (closest.h:
+                           * never expected) */
+    long unsolved;        /* contact problems with no solution (a collision's, a
+                           * cluster's kicks): the impulses are not applied; never
+                           * expected but for a held body, which stops instead */
+    long overflows;       /* internal steps cut short after SIM_MAX_EVENTS_PER_STEP
+                           * events (a guard against a fault; never expected) */
+    long speed_cuts;      /* collisions whose result max_linear or max_angular cut:
+                           * each loses energy (elasticity 1 keeps it only within
+                           * the limits) */
+    sim_cut first_cut;    /* the first of them (when speed_cuts > 0) */
     long heap_pops;       /* pairs taken from the schedule to be checked */
     long events_lost;     /* collisions not reported in events (out of memory) */
     long late_pairs;      /* (heap off) contacts found of pairs the broad phase did
@@ -78,6 +100,7 @@ typedef struct world {
     broad_phase broad;    /* broad.h */
     schedule sched;       /* schedule.h */
     step_state step;      /* step.h */
+    answer_scratch answer; /* answer.h */
     bool sched_dirty;     /* something changed other than by the simulation: every
                            * pair is due, and the simulation copies its bodies
                            * afresh (edit.h sets it) */

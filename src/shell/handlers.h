@@ -2,8 +2,8 @@
  * (commands.h).  Each either applies its statement whole or changes nothing and
  * reports an error.  They live by concern: cmd_object.c (objects and their
  * properties), cmd_setting.c (settings), cmd_time.c (time and files),
- * cmd_console.c (what a console tool adds), cmd_hand.c (the hand and the tool
- * panel), cmd_sound.c (sound and movies), random.c (random objects). */
+ * cmd_console.c (what a console tool adds), cmd_plot.c (plot), cmd_hand.c (the
+ * hand and the tool panel), cmd_sound.c (sound and movies), random.c (random objects). */
 #ifndef VROC_HANDLERS_H
 #define VROC_HANDLERS_H
 
@@ -16,6 +16,9 @@ cmd_status cmd_create(struct shell *sh, const stmt *st);
 cmd_status cmd_delete(struct shell *sh, const stmt *st);
 cmd_status cmd_property(struct shell *sh, const stmt *st);
 cmd_status cmd_exact(struct shell *sh, const stmt *st);
+cmd_status cmd_file(struct shell *sh, const stmt *st);
+cmd_status cmd_pieces(struct shell *sh, const stmt *st);
+cmd_status cmd_sha256(struct shell *sh, const stmt *st);
 
 cmd_status cmd_setting(struct shell *sh, const stmt *st);
 cmd_status cmd_random_box(struct shell *sh, const stmt *st);
@@ -57,6 +60,8 @@ cmd_status cmd_hash(struct shell *sh, const stmt *st);
 cmd_status cmd_random_draws(struct shell *sh, const stmt *st);
 cmd_status cmd_distance(struct shell *sh, const stmt *st);
 cmd_status cmd_stats(struct shell *sh, const stmt *st);
+cmd_status cmd_energy(struct shell *sh, const stmt *st);
+cmd_status cmd_plot(struct shell *sh, const stmt *st);
 cmd_status cmd_quit(struct shell *sh, const stmt *st);
 cmd_status cmd_help(struct shell *sh, const stmt *st);
 

@@ -31,8 +31,11 @@ shell_settings shell_settings_defaults(void)
     s.random_size[0] = 0.08;
     s.random_size[1] = 0.2;
     s.seed = 1;
+    s.precision = FMT_SHORT;
     return s;
 }
+
+fmt_style shell_shown(const shell *sh) { return (fmt_style)sh->set.precision; }
 
 double shell_clock(void)
 {
@@ -71,6 +74,7 @@ void shell_init(shell *sh, FILE *out, FILE *err)
     sh->out = out;
     sh->err = err;
     hand_init(&sh->hand, shell_hand_say, sh);
+    figures_init(&sh->figs, FIGURES_MAX_FRAMES, FIGURES_MAX_HEIGHTS);
 }
 
 cmd_status shell_close_logs(shell *sh, const stmt *st)
@@ -106,6 +110,7 @@ void shell_free(shell *sh)
     view_free(sh->view);
     sh->view = NULL;
     hand_free(&sh->hand);
+    figures_free(&sh->figs);
 }
 
 /* ------------------------------------------------------------ messages */
@@ -122,6 +127,7 @@ static void break_line(shell *sh)
 
 static void vmsg(shell *sh, const stmt *st, const char *kind, const char *fmt, va_list ap)
 {
+    if (sh->progress) progress_hide(sh->progress);
     break_line(sh);
     fflush(sh->out);
     if (st && st->file) fprintf(sh->err, "%s:%d: %s: ", st->file, st->line, kind);
@@ -150,6 +156,7 @@ void sh_warn(shell *sh, const stmt *st, const char *fmt, ...)
 void sh_info(shell *sh, const char *fmt, ...)
 {
     if (sh->quiet) return;
+    if (sh->progress) progress_hide(sh->progress);
     break_line(sh);
     va_list ap;
     va_start(ap, fmt);
@@ -232,6 +239,7 @@ cmd_status shell_run_file(shell *sh, const char *path)
 {
     char err[1024];
     lang_paths paths = paths_of(sh);
+    figures_clear(&sh->figs); /* a new run, as read starts one */
     /* level 1, as a file read at the prompt: one nesting limit for both */
     program *p = lang_parse_file(path, &paths, 1, NULL, 0, NULL, 0, err, sizeof err);
     return run_parsed(sh, p, err);
@@ -305,7 +313,22 @@ static cmd_status write_frame(shell *sh, const stmt *st)
     return r;
 }
 
-cmd_status shell_advance(shell *sh, const stmt *st, long n)
+/* The world's first collision whose result a speed limit cut (sim.h) warns,
+ * naming the object and the limit to raise: each such cut loses energy. */
+static void warn_speed_cut(shell *sh, const stmt *st)
+{
+    const sim_cut *c = &sh->w.st.first_cut;
+    const char *limit = c->angular ? "max_angular" : "max_linear";
+    const char *name = c->object >= 0 && c->object < sh->w.n ? sh->w.bodies[c->object]->name : "?";
+    sh_warn(sh, st,
+            "%s = %g cut the %s a collision gave '%s' (%.3g %s): each such cut loses energy, and "
+            "stats counts them (speed_cuts); raise %s to keep it",
+            limit, c->limit, c->angular ? "spin" : "speed", name, c->speed, c->angular ? "rad/s" : "m/s",
+            limit);
+}
+
+/* shell_advance, with a status line when show (progress.h). */
+static cmd_status advance(shell *sh, const stmt *st, long n, bool show)
 {
     char err[1024];
     if (n > 0 && !sh->found_apart && shell_check_start(sh, st) != CMD_OK) return CMD_ERROR;
@@ -313,29 +336,52 @@ cmd_status shell_advance(shell *sh, const stmt *st, long n)
     cmd_status r = CMD_OK;
     sim_hook hook = {hand_hook_next, hand_hook_at, &sh->hand};
     sh->hand_failed = false;
+    if (n > 0 && sh->figs.n == 0) figures_record(&sh->figs, &sh->w); /* where the run starts */
+    progress prog;
+    if (show) {
+        progress_begin(&prog, sh->err, n, t0);
+        sh->progress = &prog;
+    }
+    long cuts = sh->w.st.speed_cuts; /* (the first of a world's warns) */
     for (long k = 0; k < n && r == CMD_OK; k++) {
         if (shell_interrupted) {
             shell_interrupted = 0;
             char a[32];
-            sh_info(sh, "interrupted at time = %s", fmt_num(a, sh->w.time));
+            sh_info(sh, "interrupted at time = %s", fmt_shown(a, sh->w.time, shell_shown(sh)));
             break;
         }
+        media_frame_begin(sh); /* a movie's pictures within the frame start here */
         /* the hand acts at its rows' instants within the frame (hand.h) */
         hand_frame_begin(&sh->hand, &sh->w);
         int status = sim_frame_hooked(&sh->w, &hook, err, sizeof err);
         hand_frame_end(&sh->hand, &sh->w);
+        if (cuts == 0 && sh->w.st.speed_cuts > 0) warn_speed_cut(sh, st);
+        cuts = sh->w.st.speed_cuts;
         if (status != 0) {
             sh_error(sh, st, "%s", err);
             r = CMD_ERROR;
             break;
         }
+        figures_record(&sh->figs, &sh->w);
         r = write_frame(sh, st);
         /* the panel's buttons pressed in the frame act at its end */
         if (r == CMD_OK && (shell_after_hand(sh) != CMD_OK || (sh->hand_failed && sh->stop_on_error)))
             r = CMD_ERROR;
+        if (show) progress_tick(&prog, k + 1, sh->w.time, shell_clock());
+    }
+    if (show) {
+        progress_hide(&prog);
+        sh->progress = NULL;
     }
     sh->wall_time += shell_clock() - t0;
     return r;
+}
+
+cmd_status shell_advance(shell *sh, const stmt *st, long n) { return advance(sh, st, n, false); }
+
+cmd_status shell_run_frames(shell *sh, const stmt *st, long n)
+{
+    return advance(sh, st, n, sh->interactive || sh->verbose);
 }
 
 void *shell_setting_field(shell *sh, const command *c)

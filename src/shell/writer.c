@@ -6,62 +6,77 @@
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
+
+#include "mesh/meshfile.h"
 
 #include "core/pairs.h"
 #include "core/world.h"
 #include "handlers.h"
 #include "media.h"
-#include "savepath.h"
 #include "shell.h"
 #include "sound/synth.h"
 
-void writer_vec(FILE *out, vec3 v)
+/* n numbers as "(a, b, ...)" in style s. */
+static void write_tuple(FILE *out, const double *v, int n, fmt_style s)
 {
-    char a[32], b[32], c[32];
-    fprintf(out, "(%s, %s, %s)", fmt_num(a, v.x), fmt_num(b, v.y), fmt_num(c, v.z));
+    char t[4][32];
+    fmt_shown_vec(t, v, n, s);
+    fputc('(', out);
+    for (int k = 0; k < n; k++) fprintf(out, "%s%s", k ? ", " : "", t[k]);
+    fputc(')', out);
 }
 
-/* The hand's exact state (hand.h), each setting by name; true when c is one of
- * them (and was written, unless there is nothing to write). */
-static bool write_hand_exact(FILE *out, const shell *sh, const char *n)
+void writer_vec(FILE *out, vec3 v, fmt_style s)
+{
+    write_tuple(out, (const double[3]){v.x, v.y, v.z}, 3, s);
+}
+
+static void write_quat(FILE *out, quat q, fmt_style s)
+{
+    write_tuple(out, (const double[4]){q.w, q.x, q.y, q.z}, 4, s);
+}
+
+/* The k-th word of choices ("a|b|c"). */
+static void write_choice(FILE *out, const char *choices, int k)
+{
+    const char *p = choices;
+    for (; k > 0 && *p; k--) p += strcspn(p, "|") + (p[strcspn(p, "|")] ? 1 : 0);
+    fprintf(out, "%.*s", (int)strcspn(p, "|"), p);
+}
+
+/* The hand's exact state (hand.h), the setting named n, in style num; false when
+ * n is none of them. */
+static bool write_hand_exact(FILE *out, const shell *sh, const char *n, fmt_style num)
 {
     const hand *h = &sh->hand;
-    char a[32], b[32], c[32], d[32];
+    char a[32], b[32];
+    vec3 x;
+    quat q;
+    hand_grip_pose(h, &x, &q);
     if (strcmp(n, "tracker_clock") == 0) {
         double clock, start;
         hand_clock_of(h, &clock, &start);
-        fprintf(out, "tracker_clock = (%s, %s)\n", fmt_num(a, clock), fmt_num(b, start));
-    } else if (strcmp(n, "tracker_row") == 0) {
+        fprintf(out, "tracker_clock = (%s, %s)\n", fmt_shown(a, clock, num), fmt_shown(b, start, num));
+        return true;
+    }
+    if (strcmp(n, "tracker_row") == 0) {
         fprintf(out, "tracker_row = %d\n", hand_row(h));
-    } else if (strcmp(n, "hand_orientation") == 0) {
-        fprintf(out, "hand_orientation = (%s, %s, %s, %s)\n", fmt_num(a, h->q.w), fmt_num(b, h->q.x),
-                fmt_num(c, h->q.y), fmt_num(d, h->q.z));
-    } else if (strcmp(n, "hand_velocity") == 0) {
-        fprintf(out, "hand_velocity = ");
-        writer_vec(out, h->sv);
-        fprintf(out, " %s\n", fmt_num(a, h->stmt_time));
-    } else if (strcmp(n, "hand_spin") == 0) {
-        fprintf(out, "hand_spin = ");
-        writer_vec(out, h->sw);
-        fputc('\n', out);
-    } else if (strcmp(n, "grip_at") == 0 || strcmp(n, "grip_orientation") == 0) {
-        vec3 x;
-        quat q;
-        hand_grip_pose(h, &x, &q);
-        if (n[5] == 'a') {
-            fprintf(out, "grip_at = ");
-            writer_vec(out, x);
-            fputc('\n', out);
-        } else {
-            fprintf(out, "grip_orientation = (%s, %s, %s, %s)\n", fmt_num(a, q.w), fmt_num(b, q.x),
-                    fmt_num(c, q.y), fmt_num(d, q.z));
-        }
-    } else if (strcmp(n, "last_held") == 0) {
+        return true;
+    }
+    if (strcmp(n, "last_held") == 0) {
         fprintf(out, "last_held = %s\n", h->last_held >= 0 && h->last_held < sh->w.n
                                                ? sh->w.bodies[h->last_held]->name : "none");
-    } else {
-        return false;
+        return true;
     }
+    bool quat_ = strcmp(n, "hand_orientation") == 0 || strcmp(n, "grip_orientation") == 0;
+    bool vec = strcmp(n, "hand_velocity") == 0 || strcmp(n, "hand_spin") == 0 || strcmp(n, "grip_at") == 0;
+    if (!quat_ && !vec) return false;
+    fprintf(out, "%s = ", n);
+    if (quat_) write_quat(out, n[0] == 'h' ? h->q : q, num);
+    else writer_vec(out, n[0] == 'g' ? x : n[5] == 'v' ? h->sv : h->sw, num);
+    if (strcmp(n, "hand_velocity") == 0) fprintf(out, " %s", fmt_shown(a, h->stmt_time, num));
+    fputc('\n', out);
     return true;
 }
 
@@ -83,6 +98,7 @@ static void write_setting(FILE *out, const shell *sh, const command *c, const ch
     int for_save = save_path != NULL;
     const shell_settings *s = &sh->set;
     const view_settings *vs = &sh->view_set;
+    fmt_style num = for_save ? FMT_EXACT : shell_shown(sh);
     char a[32];
     const char *n = c->name;
     const hand_settings *hs = &sh->hand.set;
@@ -99,15 +115,18 @@ static void write_setting(FILE *out, const shell *sh, const command *c, const ch
                 path[0] ? path : "off", path[0] ? "\"" : "");
         return;
     }
+    /* how numbers are shown is the console's, not the world's */
+    if (for_save && strcmp(n, "precision") == 0) return;
     /* what the hand does, after the objects it may hold (hand_write) */
     /* (the clock runs whether or not the hand was used) */
     if (for_save && hand_later(n) && (sh->hand.used || strcmp(n, "tracker_clock") != 0)) return;
-    if (write_hand_exact(out, sh, n)) return;
+    if (write_hand_exact(out, sh, n, num)) return;
     if (strcmp(n, "collision_sound") == 0 && for_save) {
         char rel[PATH_MAX];
         const char *snd = sh->sound_set.collision_sound;
         bool file = strcmp(snd, "off") != 0 && synth_find(snd) < 0;
-        fprintf(out, "collision_sound = \"%s\"\n", file ? savepath(snd, save_path, rel, sizeof rel) : snd);
+        if (file) writer_path(snd, save_path, rel, sizeof rel);
+        fprintf(out, "collision_sound = \"%s\"\n", file ? rel : snd);
         return;
     }
     if (strcmp(n, "tracker") == 0) {
@@ -120,7 +139,7 @@ static void write_setting(FILE *out, const shell *sh, const command *c, const ch
         return;
     }
     if (strcmp(n, "tracker_time") == 0) {
-        fprintf(out, "tracker_time = %s\n", fmt_num(a, hand_tracker_time(&sh->hand)));
+        fprintf(out, "tracker_time = %s\n", fmt_shown(a, hand_tracker_time(&sh->hand), num));
         return;
     }
     if (strcmp(n, "grip") == 0) {
@@ -143,9 +162,9 @@ static void write_setting(FILE *out, const shell *sh, const command *c, const ch
         bool changed =
             w->base_frames > 0 && memcmp(&w->base_step, &w->set.time_step, sizeof w->base_step) != 0;
         char b[32];
-        if (changed) fprintf(out, "time_step = %s\n", fmt_num(b, w->base_step));
-        fprintf(out, "clock = (%s, %ld)\n", fmt_num(a, w->time_base), w->base_frames);
-        if (changed) fprintf(out, "time_step = %s\n", fmt_num(b, w->set.time_step));
+        if (changed) fprintf(out, "time_step = %s\n", fmt_shown(b, w->base_step, num));
+        fprintf(out, "clock = (%s, %ld)\n", fmt_shown(a, w->time_base, num), w->base_frames);
+        if (changed) fprintf(out, "time_step = %s\n", fmt_shown(b, w->set.time_step, num));
         return;
     }
     if (strcmp(n, "frame") == 0) {
@@ -169,18 +188,13 @@ static void write_setting(FILE *out, const shell *sh, const command *c, const ch
     const char *field = shell_setting_value(sh, c);
     fprintf(out, "%s = ", n);
     switch (c->arg) {
-    case VAL_NUMBER: fprintf(out, "%s", fmt_num(a, *(const double *)field)); break;
-    case VAL_VECTOR: writer_vec(out, *(const vec3 *)field); break;
-    case VAL_RANGE2: {
-        const double *d = (const double *)field;
-        char b[32];
-        fprintf(out, "(%s, %s)", fmt_num(a, d[0]), fmt_num(b, d[1]));
-        break;
-    }
+    case VAL_NUMBER: fprintf(out, "%s", fmt_shown(a, *(const double *)field, num)); break;
+    case VAL_VECTOR: writer_vec(out, *(const vec3 *)field, num); break;
+    case VAL_RANGE2: write_tuple(out, (const double *)field, 2, num); break;
     case VAL_VECTOR_ANGLE: {
         const dir_amount *d = (const dir_amount *)field;
-        writer_vec(out, d->dir);
-        fprintf(out, " %s", fmt_num(a, d->amount));
+        writer_vec(out, d->dir, num);
+        fprintf(out, " %s", fmt_shown(a, d->amount, num));
         break;
     }
     case VAL_COLOR: {
@@ -190,9 +204,16 @@ static void write_setting(FILE *out, const shell *sh, const command *c, const ch
     }
     case VAL_ONOFF: fprintf(out, "%s", *(const bool *)field ? "on" : "off"); break;
     case VAL_FILE: fprintf(out, "\"%s\"", field); break;
+    case VAL_CHOICE: write_choice(out, c->choices, *(const int *)field); break;
     default: break;
     }
     fputc('\n', out);
+}
+
+void setting_write(FILE *out, const shell *sh, const command *c)
+{
+    if (c->run == cmd_select) fprintf(out, "select %s\n", sh->hand.set.select_mode ? "on" : "off");
+    else write_setting(out, sh, c, NULL);
 }
 
 void settings_write(FILE *out, const shell *sh, const char *save_path)
@@ -201,100 +222,227 @@ void settings_write(FILE *out, const shell *sh, const char *save_path)
         const command *c = &command_table[i];
         if (c->form == FORM_SETTING) write_setting(out, sh, c, save_path);
         else if (c->run == cmd_select) /* the hand's select mode is a setting too */
-            fprintf(out, "select %s\n", sh->hand.set.select_mode ? "on" : "off");
+            setting_write(out, sh, c);
     }
 }
 
 void hand_write(FILE *out, const shell *sh, const char *save_path)
 {
     const hand *h = &sh->hand;
+    const fmt_style x = FMT_EXACT;
     char a[32], rel[PATH_MAX];
     if (!h->used) return;
     fprintf(out, "# the hand: its tracker and the place in it, its pose, what it holds\n");
     if (h->playing) {
-        fprintf(out, "tracker = \"%s\"\ntracker_time = %s\n",
-                savepath(h->set.tracker, save_path, rel, sizeof rel), fmt_num(a, hand_tracker_time(h)));
+        writer_path(h->set.tracker, save_path, rel, sizeof rel);
+        fprintf(out, "tracker = \"%s\"\ntracker_time = %s\n", rel, fmt_shown(a, hand_tracker_time(h), x));
     } else if (h->set.tracker[0]) {
         fprintf(out, "# tracker = \"%s\" (a live feed: not opened again)\n", h->set.tracker);
     }
-    write_hand_exact(out, sh, "tracker_clock");
-    if (h->playing) write_hand_exact(out, sh, "tracker_row");
+    write_hand_exact(out, sh, "tracker_clock", x);
+    if (h->playing) write_hand_exact(out, sh, "tracker_row", x);
     fprintf(out, "hand = ");
-    writer_vec(out, h->p);
+    writer_vec(out, h->p, x);
     fprintf(out, "\nhand_rotate = ");
-    writer_vec(out, h->set.hand_rotate.dir);
-    fprintf(out, " %s\n", fmt_num(a, h->set.hand_rotate.amount));
-    write_hand_exact(out, sh, "hand_orientation");
-    write_hand_exact(out, sh, "hand_velocity");
-    write_hand_exact(out, sh, "hand_spin");
+    writer_vec(out, h->set.hand_rotate.dir, x);
+    fprintf(out, " %s\n", fmt_shown(a, h->set.hand_rotate.amount, x));
+    write_hand_exact(out, sh, "hand_orientation", x);
+    write_hand_exact(out, sh, "hand_velocity", x);
+    write_hand_exact(out, sh, "hand_spin", x);
     fprintf(out, "grip = %s\n", hand_grip_word(h, &sh->w));
     if (h->grip == GRIP_OBJECT || h->grip == GRIP_PANEL) {
-        write_hand_exact(out, sh, "grip_at");
-        write_hand_exact(out, sh, "grip_orientation");
+        write_hand_exact(out, sh, "grip_at", x);
+        write_hand_exact(out, sh, "grip_orientation", x);
     }
     if (h->grip == GRIP_OBJECT && h->held >= 0 && h->held < sh->w.n) {
         /* the held object's motion as it was: the grip above gave it the hand's */
         const body *b = sh->w.bodies[h->held];
-        fprintf(out, "%s.velocity = ", b->name);
-        writer_vec(out, b->v);
-        fprintf(out, "\n%s.angular_vel = ", b->name);
-        writer_vec(out, b->w);
-        fprintf(out, "\n%s.angular_momentum = ", b->name);
-        writer_vec(out, b->L);
-        fprintf(out, "\n%s.hold_pivot = ", b->name);
-        writer_vec(out, b->hold_pivot);
-        fprintf(out, "\n%s.hold_velocity = ", b->name);
-        writer_vec(out, b->hold_v);
-        fputc('\n', out);
+        const char *what[] = {"velocity", "angular_vel", "angular_momentum", "hold_pivot", "hold_velocity"};
+        const vec3 value[] = {b->v, b->w, b->L, b->hold_pivot, b->hold_v};
+        for (int k = 0; k < 5; k++) {
+            fprintf(out, "%s.%s = ", b->name, what[k]);
+            writer_vec(out, value[k], x);
+            fputc('\n', out);
+        }
     }
-    write_hand_exact(out, sh, "last_held");
+    write_hand_exact(out, sh, "last_held", x);
 }
 
-void body_write(FILE *out, const body *b)
+void writer_path(const char *path, const char *save_path, char *out, size_t outlen)
+{
+    char real[PATH_MAX], dir[PATH_MAX], cwd[PATH_MAX];
+    if (!realpath(path, real)) { /* (a file gone since: its path from here) */
+        bool joined = path[0] != '/' && getcwd(cwd, sizeof cwd) &&
+                      snprintf(real, sizeof real, "%s/%s", cwd, path) < (int)sizeof real;
+        if (!joined) snprintf(real, sizeof real, "%s", path);
+    }
+    snprintf(dir, sizeof dir, "%s", save_path);
+    char *slash = strrchr(dir, '/');
+    if (!slash) snprintf(dir, sizeof dir, ".");
+    else if (slash == dir) dir[1] = '\0';
+    else *slash = '\0';
+    char real_dir[PATH_MAX];
+    size_t n = realpath(dir, real_dir) ? strlen(real_dir) : 0;
+    if (n > 0 && strncmp(real, real_dir, n) == 0 && (real[n] == '/' || real_dir[n - 1] == '/'))
+        snprintf(out, outlen, "%s", real + n + (real[n] == '/'));
+    else
+        snprintf(out, outlen, "%s", real);
+}
+
+/* A polyhedron's shape: its file (with its SHA-256; for save, its path from the
+ * saved file's folder) and its scale; for print, the pieces it collides as and its
+ * centre of mass. */
+static void polyhedron_write(FILE *out, const body *b, write_style st)
+{
+    char a[32], c[32], d[32];
+    const char *save_path = st.save_path;
+    fmt_style s = st.num;
+    const mesh_source *src = mesh_source_of(b->sp.src);
+    if (src) {
+        char path[PATH_MAX];
+        if (save_path) writer_path(src->path, save_path, path, sizeof path);
+        else snprintf(path, sizeof path, "%s", src->path);
+        fprintf(out, "file = \"%s\"\nsha256 = \"", path);
+        for (int k = 0; k < (int)sizeof src->sha256; k++) fprintf(out, "%02x", src->sha256[k]);
+        fprintf(out, "\"\n");
+    }
+    vec3 k = b->sp.scale;
+    if (k.x == k.y && k.y == k.z) {
+        fprintf(out, "scale = %s\n", fmt_shown(a, k.x, s));
+    } else {
+        fprintf(out, "scale = ");
+        writer_vec(out, k, s);
+        fputc('\n', out);
+    }
+    if (save_path || !b->built) return;
+    vec3 com = b->shape.mass.com;
+    if (s == FMT_SHORT) { /* rounding dust of the volume integrals, against the size */
+        double dust = 1e-12 * b->shape.r_out;
+        if (fabs(com.x) < dust) com.x = 0;
+        if (fabs(com.y) < dust) com.y = 0;
+        if (fabs(com.z) < dust) com.z = 0;
+    }
+    fprintf(out, "pieces = %d\n# centre of mass, in its own axes: (%s, %s, %s)\n",
+            b->shape.pieces, fmt_shown(a, com.x, s), fmt_shown(c, com.y, s), fmt_shown(d, com.z, s));
+}
+
+/* The orientation as an axis and an angle: as typed while it holds, else from q. */
+static void body_axis_angle(const body *b, vec3 *axis, double *angle)
+{
+    *axis = b->rot_axis;
+    *angle = b->rot_angle;
+    if (!b->rot_given) q_to_axis_angle(b->q, axis, angle);
+}
+
+void body_write(FILE *out, const body *b, write_style st)
 {
     char a[32];
+    fmt_style s = st.num;
     const shape_params *p = &b->sp;
     fprintf(out, "%s %s\n", body_type_name(p->kind), b->name);
-    fprintf(out, "mass = %s\n", fmt_num(a, b->mass));
-    fprintf(out, "elasticity = %s\n", fmt_num(a, b->elasticity));
-    fprintf(out, "volume = %s\n", fmt_num(a, b->volume));
+    fprintf(out, "mass = %s\n", fmt_shown(a, b->mass, s));
+    fprintf(out, "elasticity = %s\n", fmt_shown(a, b->elasticity, s));
+    fprintf(out, "volume = %s\n", fmt_shown(a, b->volume, s));
     fprintf(out, "color = (%d, %d, %d)\n", b->color[0], b->color[1], b->color[2]);
     switch (p->kind) {
     case SHAPE_SPHERE:
-        fprintf(out, "radius = %s\n", fmt_num(a, p->radius));
+        fprintf(out, "radius = %s\n", fmt_shown(a, p->radius, s));
         fprintf(out, "ures = %d\nvres = %d\n", p->ures, p->vres);
         break;
     case SHAPE_CUBE:
         fprintf(out, "size = ");
-        writer_vec(out, p->size);
+        writer_vec(out, p->size, s);
         fputc('\n', out);
         break;
     case SHAPE_SUPERQUADRIC:
-        fprintf(out, "exp1 = %s\n", fmt_num(a, p->exp1));
-        fprintf(out, "exp2 = %s\n", fmt_num(a, p->exp2));
-        fprintf(out, "a1 = %s\n", fmt_num(a, p->a1));
-        fprintf(out, "a2 = %s\n", fmt_num(a, p->a2));
-        fprintf(out, "a3 = %s\n", fmt_num(a, p->a3));
+        fprintf(out, "exp1 = %s\n", fmt_shown(a, p->exp1, s));
+        fprintf(out, "exp2 = %s\n", fmt_shown(a, p->exp2, s));
+        fprintf(out, "a1 = %s\n", fmt_shown(a, p->a1, s));
+        fprintf(out, "a2 = %s\n", fmt_shown(a, p->a2, s));
+        fprintf(out, "a3 = %s\n", fmt_shown(a, p->a3, s));
         fprintf(out, "ures = %d\nvres = %d\n", p->ures, p->vres);
         break;
+    case SHAPE_POLYHEDRON: polyhedron_write(out, b, st); break;
     }
     fprintf(out, "translate = ");
-    writer_vec(out, b->x);
-    vec3 axis = b->rot_axis;
-    double angle = b->rot_angle;
-    if (!b->rot_given) q_to_axis_angle(b->q, &axis, &angle);
-    fprintf(out, "\nrotate = ");
-    writer_vec(out, axis);
-    fprintf(out, " %s\nlinear_vel = ", fmt_num(a, angle));
-    writer_vec(out, b->v);
+    writer_vec(out, b->x, s);
+    fputc('\n', out);
+    if (!st.once) {
+        vec3 axis;
+        double angle;
+        body_axis_angle(b, &axis, &angle);
+        fprintf(out, "rotate = ");
+        writer_vec(out, axis, s);
+        fprintf(out, " %s\n", fmt_shown(a, angle, s));
+    }
+    fprintf(out, "linear_vel = ");
+    writer_vec(out, b->v, s);
     fprintf(out, "\nangular_vel = ");
-    writer_vec(out, b->w);
-    char c[32], d[32], e[32];
-    fprintf(out, "\norientation = (%s, %s, %s, %s)\nvelocity = ", fmt_num(a, b->q.w),
-            fmt_num(c, b->q.x), fmt_num(d, b->q.y), fmt_num(e, b->q.z));
-    writer_vec(out, b->v);
+    writer_vec(out, b->w, s);
+    fprintf(out, "\norientation = ");
+    write_quat(out, b->q, s);
+    if (!st.once) {
+        fprintf(out, "\nvelocity = ");
+        writer_vec(out, b->v, s);
+    }
     fprintf(out, "\nangular_momentum = ");
-    writer_vec(out, b->L);
+    writer_vec(out, b->L, s);
+    fputc('\n', out);
+}
+
+void property_write(FILE *out, const world *w, int i, const command *c, fmt_style s)
+{
+    static const char *modes[] = {"free", "slide", "general"};
+    const body *b = w->bodies[i];
+    const char *field = (const char *)b + c->off;
+    const char *n = c->name;
+    char a[32];
+    if (strcmp(n, "touching") == 0) {
+        bool any = false;
+        for (long k = 0; k < w->pairs.n; k++) {
+            const pair *p = &w->pairs.p[k];
+            if (!p->touching || (p->a != i && p->b != i)) continue;
+            fprintf(out, "%s.touching = %s\n", b->name, w->bodies[p->a == i ? p->b : p->a]->name);
+            any = true;
+        }
+        if (!any) fprintf(out, "# %s touches nothing lasting\n", b->name);
+        return;
+    }
+    bool slide = b->mode == MODE_SLIDE && b->slide_on >= 0 && b->slide_on < w->n;
+    if ((strcmp(n, "slide_on") == 0 || strcmp(n, "slide_face") == 0) && !slide) {
+        fprintf(out, "# %s slides on nothing (mode = %s)\n", b->name,
+                body_is_static(b) ? "free" : modes[b->mode]);
+        return;
+    }
+    fprintf(out, "%s.%s = ", b->name, n);
+    if (strcmp(n, "slide_on") == 0) {
+        fprintf(out, "%s", w->bodies[b->slide_on]->name);
+    } else if (strcmp(n, "mode") == 0) {
+        fprintf(out, "%s", body_is_static(b) ? "free" : modes[b->mode]);
+    } else if (strcmp(n, "resting") == 0) {
+        fprintf(out, "%s", b->state == STATE_RESTING ? "on" : "off");
+    } else {
+        switch (c->arg) {
+        case VAL_NUMBER: fprintf(out, "%s", fmt_shown(a, *(const double *)field, s)); break;
+        case VAL_INTEGER: fprintf(out, "%d", *(const int *)field); break;
+        case VAL_VECTOR: writer_vec(out, *(const vec3 *)field, s); break;
+        case VAL_COLOR: {
+            const int *k = (const int *)field;
+            fprintf(out, "(%d, %d, %d)", k[0], k[1], k[2]);
+            break;
+        }
+        case VAL_QUAT: write_quat(out, *(const quat *)field, s); break;
+        case VAL_VECTOR_ANGLE: {
+            vec3 axis;
+            double angle;
+            body_axis_angle(b, &axis, &angle);
+            writer_vec(out, axis, s);
+            fprintf(out, " %s", fmt_shown(a, angle, s));
+            break;
+        }
+        default: break;
+        }
+    }
     fputc('\n', out);
 }
 
