@@ -106,8 +106,8 @@ mkdir -p "$TMP/pd"
 pd() { # NAME STATEMENTS: panel-demo at 160x128, one eye, with STATEMENTS
     "$VROC" -b -q "$S/panel-demo.vroc" -c "image_size = (160, 128); stereo = mono; $2; run 6" 2>/dev/null
 }
-pd on "movie = $TMP/pd/on.mp4"
-pd off "panel = off; movie = $TMP/pd/off.mp4"
+pd on "movie_rate = 10; movie = $TMP/pd/on.mp4"
+pd off "panel = off; movie_rate = 10; movie = $TMP/pd/off.mp4"
 pd rec "output = $TMP/pd; record = on"
 buttons() { # the light grey pixels (the panel's buttons) of frame 4 of movie $1,
     # which mad then compares

@@ -93,11 +93,11 @@ done
 # a unit quaternion the simulation made (a component a rounding above 1) reads
 # back as it is; one off by more than 1e-15 is normalised; one off by more than
 # 1e-6 is refused
-out=$("$VROC" -b -q -c "cube c; orientation = (1.0000000000000002, 0, 0, 0); print c" 2>&1)
+out=$("$VROC" -b -q -c "precision = exact; cube c; orientation = (1.0000000000000002, 0, 0, 0); print c" 2>&1)
 printf '%s\n' "$out" | grep -qx 'orientation = (1.0000000000000002, 0, 0, 0)' &&
     ok "orientation = (1.0000000000000002, 0, 0, 0) is taken as it is" ||
     notok "orientation = (1.0000000000000002, 0, 0, 0) is taken as it is" "$out"
-out=$("$VROC" -b -q -c "cube c; orientation = (1.00000000000001, 0, 0, 0); print c" 2>&1)
+out=$("$VROC" -b -q -c "precision = exact; cube c; orientation = (1.00000000000001, 0, 0, 0); print c" 2>&1)
 printf '%s\n' "$out" | grep -qx 'orientation = (1, 0, 0, 0)' &&
     ok "a quaternion 1e-14 off unit length is normalised" ||
     notok "a quaternion 1e-14 off unit length is normalised" "$out"
