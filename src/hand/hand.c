@@ -62,7 +62,7 @@ void hand_init(hand *h, hand_say say, void *ctx)
     memset(h, 0, sizeof *h);
     h->set = hand_settings_defaults();
     h->p = h->set.hand;
-    h->q = q_identity();
+    h->q = h->grip_q = q_identity();
     feed_init(&h->feed);
     h->held = h->last_held = h->make_current = -1;
     h->slider = PANEL_OFF;
@@ -670,6 +670,71 @@ const char *hand_grip_word(const hand *h, const world *w)
     case GRIP_SLIDER: return panel_control_of(h->slider)->name;
     default: return grip_words[h->grip];
     }
+}
+
+void hand_set_clock(hand *h, double clock, double start)
+{
+    h->clock = h->pose_clock = clock;
+    h->start = start;
+}
+
+void hand_clock_of(const hand *h, double *clock, double *start)
+{
+    *clock = h->clock;
+    *start = h->playing ? h->start : 0;
+}
+
+int hand_set_row(hand *h, int n, char *err, size_t errlen)
+{
+    if (!h->playing) {
+        if (n == 0) return 0; /* as show writes it */
+        snprintf(err, errlen, "no tracker file plays (tracker = FILE names one)");
+        return -1;
+    }
+    h->next = n = n < h->path.n ? n : h->path.n;
+    tracker_segment_rates(&h->path, n - 1, &h->mv, &h->mw);
+    if (n > 0) h->button = h->path.rows[n - 1].button;
+    return 0;
+}
+
+int hand_row(const hand *h)
+{
+    return h->playing ? h->next : 0;
+}
+
+void hand_set_velocity(hand *h, vec3 v, double t)
+{
+    h->sv = v;
+    h->stmt_time = t;
+}
+
+void hand_set_spin(hand *h, vec3 wv)
+{
+    h->sw = wv;
+}
+
+void hand_set_grip_pose(hand *h, const vec3 *x, const quat *q)
+{
+    if (x) h->grip_x = *x;
+    if (q) h->grip_q = *q;
+}
+
+void hand_grip_pose(const hand *h, vec3 *x, quat *q)
+{
+    *x = h->grip_x;
+    *q = h->grip_q;
+}
+
+int hand_set_last_held(hand *h, const world *w, const char *name, char *err, size_t errlen)
+{
+    int i = strcmp(name, "none") == 0 ? -1 : world_find(w, name);
+    if (strcmp(name, "none") != 0 && (i < 0 || body_is_static(w->bodies[i]))) {
+        snprintf(err, errlen,
+                 i < 0 ? "no object named '%s'" : "'%s' is static: the hand holds only dynamic objects", name);
+        return -1;
+    }
+    h->last_held = i;
+    return 0;
 }
 
 void hand_object_deleted(hand *h, int i)

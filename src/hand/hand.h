@@ -174,6 +174,37 @@ int hand_set_grip(hand *h, world *w, const char *what, char *err, size_t errlen)
 /* The word grip = would take for the hand now (an object's name points into w). */
 const char *hand_grip_word(const hand *h, const world *w);
 
+/* ---- the hand's exact state (save writes it after the tracker's place; each
+ * sets what it names as it was, pressing, grabbing and moving nothing) ---- */
+
+/* tracker_clock = (clock, start): the tracker clock, and its reading at the
+ * playing file's time 0 (tracker_time is their difference). */
+void hand_set_clock(hand *h, double clock, double start);
+/* The clock and that reading, as hand_set_clock takes them. */
+void hand_clock_of(const hand *h, double *clock, double *start);
+
+/* tracker_row = n: the file's first n rows (all, when it has fewer) have acted:
+ * the hand moves on from row n - 1 to row n, and its button is as row n - 1 says.
+ * Returns 0, or -1 with a message when no file plays (but for n = 0). */
+int hand_set_row(hand *h, int n, char *err, size_t errlen);
+/* The rows that have acted (0 without a file). */
+int hand_row(const hand *h);
+
+/* hand_velocity = v t, hand_spin = wv: the velocity and angular velocity the
+ * hand's statements gave it, the last of them at simulated time t. */
+void hand_set_velocity(hand *h, vec3 v, double t);
+void hand_set_spin(hand *h, vec3 wv);
+
+/* grip_at = x, grip_orientation = q (either may be NULL): where what the hand
+ * holds (an object or the panel) is in the hand's own axes; the next grab makes
+ * them anew.  hand_grip_pose gives them. */
+void hand_set_grip_pose(hand *h, const vec3 *x, const quat *q);
+void hand_grip_pose(const hand *h, vec3 *x, quat *q);
+
+/* last_held = NAME or none: the object the re-select button takes.  Returns 0, or
+ * -1 with a message (no such dynamic object). */
+int hand_set_last_held(hand *h, const world *w, const char *name, char *err, size_t errlen);
+
 /* Object i was deleted: indices above it move down. */
 void hand_object_deleted(hand *h, int i);
 

@@ -38,6 +38,7 @@ cmd_status cmd_tracker(struct shell *sh, const stmt *st);
 cmd_status cmd_tracker_time(struct shell *sh, const stmt *st);
 cmd_status cmd_hand_log(struct shell *sh, const stmt *st);
 cmd_status cmd_grip(struct shell *sh, const stmt *st);
+cmd_status cmd_hand_exact(struct shell *sh, const stmt *st);
 
 cmd_status cmd_step(struct shell *sh, const stmt *st);
 cmd_status cmd_run(struct shell *sh, const stmt *st);

@@ -304,7 +304,8 @@ static cmd_status write_frame(shell *sh, const stmt *st)
         log_trace_close(&sh->logs, ignored, sizeof ignored);
         r = shell_output_failed(sh, st, "trace", err);
     }
-    if (r == CMD_OK && sh->view_set.record) shell_overlay(sh);
+    /* the hand and the panel, for whatever draws the frame: record, the movie */
+    if (r == CMD_OK) shell_overlay(sh);
     if (r == CMD_OK && sh->view_set.record &&
         view_refresh(&sh->view, &sh->w, &sh->view_set, sh->w.frame, &sh->view_st, err,
                      sizeof err) != 0) {
