@@ -186,6 +186,18 @@ closest_result pieces_distance_near(const body *a, const body *b, piece_pairs *p
     return best;
 }
 
+void pieces_hold(const body *a, const body *b, piece_pairs *pp, double tol)
+{
+    bounds B = bounds_of(a, b);
+    for (int t = 0; t < pp->n; t++) {
+        piece_pair *e = &pp->e[t];
+        e->held = false;
+        if (!(lower(&B, e->i, e->j) <= tol)) continue;
+        closest_result r = one_pair(a, e->i, b, e->j, &e->found, false);
+        e->held = r.status != CLOSEST_SEPARATED || r.distance <= tol;
+    }
+}
+
 int pieces_touching(const body *a, const body *b, const piece_pairs *pp, double tol,
                     closest_result *out, int max)
 {

@@ -69,6 +69,11 @@ typedef struct {
 closest_result pieces_distance_near(const body *a, const body *b, piece_pairs *pp,
                                     pieces_use use, bool depth, pieces_near *near);
 
+/* Marks held the piece pairs of pp (listed) within tol of each other (or in,
+ * or not known), from their found caches: those whose bounds are further apart
+ * are not queried. */
+void pieces_hold(const body *a, const body *b, piece_pairs *pp, double tol);
+
 /* The pairs of pieces of a and b, of pp (every pair when pp is NULL or empty),
  * within tol of each other (distance <= tol, with the depth), nearest first: at
  * most max written to out, the count returned.  No cache: for a contact's

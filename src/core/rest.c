@@ -73,6 +73,41 @@ void rest_wake(world *w, int i)
  * SIM_CONTACT_TOL), and from on the face. */
 #define REST_LEVEL_DEPTH 1e-4
 
+/* A slide goes on across a seam, onto a face of another static object, when the
+ * two faces are coplanar within this angle (rad) and this offset (m); a centre of
+ * mass on the seam that is short of the new face by no more than REST_SEAM_GAP
+ * and moves onto it is over it. */
+#define REST_SEAM_ANGLE 1e-9
+#define REST_SEAM_GAP 1e-9
+
+/* A point's height inside one edge of a face, in the face's plane, as it moves:
+ * g0 + g1 tau + g2 tau^2 at tau from now. */
+typedef struct {
+    double g0, g1, g2;
+} edge_gap;
+
+/* The height of point c inside edge k of face F of hull h of static s (n the
+ * face's normal), for a point moving at v with acceleration a.  (Inlined: a
+ * slide's exit is asked for at every internal step.) */
+static inline __attribute__((always_inline)) edge_gap gap_to_edge(const body *s, const poly *h,
+                                                                  const poly_face *F, int k,
+                                                                  vec3 n, vec3 c, vec3 v, vec3 a)
+{
+    vec3 p0 = v3_add(s->x, q_rotate(s->q, h->v[h->face_vert[F->first + k]]));
+    vec3 p1 = v3_add(s->x, q_rotate(s->q, h->v[h->face_vert[F->first + (k + 1) % F->count]]));
+    vec3 in = v3_norm(v3_cross(n, v3_sub(p1, p0))); /* into the face, across this edge */
+    return (edge_gap){v3_dot(in, v3_sub(c, p0)), v3_dot(in, v), 0.5 * v3_dot(in, a)};
+}
+
+/* True when a point at g is past its edge: outside it, and not coming onto the
+ * face across it from within REST_SEAM_GAP (a seam's other side). */
+static bool past_edge(edge_gap g)
+{
+    if (g.g0 > 0) return false;
+    bool entering = g.g1 > 0 || (g.g1 == 0 && g.g2 > 0);
+    return !(entering && g.g0 >= -REST_SEAM_GAP);
+}
+
 /* Makes m slide on face `face` of static s, if that face holds it (see rest.h):
  * true when it did.  p the pair. */
 static bool try_slide(world *w, int mi, int si, pair *p)
@@ -95,6 +130,12 @@ static bool try_slide(world *w, int mi, int si, pair *p)
     vec3 n = v3_norm(q_rotate(s->q, hf->f[local].n));
     /* pressed onto the face, moving along it, turning about its normal only */
     if (!(v3_dot(world_accel(w), n) < -tol_accel(m, s))) return false;
+    /* its centre of mass over the face, as rest_slide_exit sees it: else the
+     * slide would end where it begins, and begin again (on a seam of two pieces
+     * of one body, a centre of mass on the edge of the face the contact names) */
+    const poly_face *F = &hf->f[local];
+    for (int k = 0; k < F->count; k++)
+        if (past_edge(gap_to_edge(s, hf, F, k, n, body_com(m), m->v, world_accel(w)))) return false;
     /* a lossy contact ends a rocking too slow to see as a rebound would (impulse's
      * SIM_BOUNCE_SPEED): it lands flat */
     double tol = e < 1 ? SIM_BOUNCE_SPEED : 1e3 * tol_speed(m, s);
@@ -152,41 +193,6 @@ void rest_classify(world *w, const int *list, int n)
             work[nw++] = o;
         }
     }
-}
-
-/* A slide goes on across a seam, onto a face of another static object, when the
- * two faces are coplanar within this angle (rad) and this offset (m); a centre of
- * mass on the seam that is short of the new face by no more than REST_SEAM_GAP
- * and moves onto it is over it. */
-#define REST_SEAM_ANGLE 1e-9
-#define REST_SEAM_GAP 1e-9
-
-/* A point's height inside one edge of a face, in the face's plane, as it moves:
- * g0 + g1 tau + g2 tau^2 at tau from now. */
-typedef struct {
-    double g0, g1, g2;
-} edge_gap;
-
-/* The height of point c inside edge k of face F of hull h of static s (n the
- * face's normal), for a point moving at v with acceleration a.  (Inlined: a
- * slide's exit is asked for at every internal step.) */
-static inline __attribute__((always_inline)) edge_gap gap_to_edge(const body *s, const poly *h,
-                                                                  const poly_face *F, int k,
-                                                                  vec3 n, vec3 c, vec3 v, vec3 a)
-{
-    vec3 p0 = v3_add(s->x, q_rotate(s->q, h->v[h->face_vert[F->first + k]]));
-    vec3 p1 = v3_add(s->x, q_rotate(s->q, h->v[h->face_vert[F->first + (k + 1) % F->count]]));
-    vec3 in = v3_norm(v3_cross(n, v3_sub(p1, p0))); /* into the face, across this edge */
-    return (edge_gap){v3_dot(in, v3_sub(c, p0)), v3_dot(in, v), 0.5 * v3_dot(in, a)};
-}
-
-/* True when a point at g is past its edge: outside it, and not coming onto the
- * face across it from within REST_SEAM_GAP (a seam's other side). */
-static bool past_edge(edge_gap g)
-{
-    if (g.g0 > 0) return false;
-    bool entering = g.g1 > 0 || (g.g1 == 0 && g.g2 > 0);
-    return !(entering && g.g0 >= -REST_SEAM_GAP);
 }
 
 /* The first tau > 0 at which g0 + g1 tau + g2 tau^2 (g0 >= 0) turns negative, or

@@ -236,15 +236,12 @@ static void held_pieces(world *w, const toi_input *in, piece_pairs *pp, double t
 {
     long k = pair_index(w, in->a, in->b);
     bool lasting = k >= 0 && w->pairs.p[k].touching;
-    const body *a = step_flown(w, in->a, in->lo, 0), *b = step_flown(w, in->b, in->lo, 0);
-    for (int t = 0; t < pp->n; t++) {
-        piece_pair *e = &pp->e[t];
-        e->held = false;
-        if (!lasting) continue;
-        piece_pairs one = {e, 1, 1};
-        closest_result r = pieces_distance(a, b, &one, PIECES_SEARCH, false);
-        e->held = r.status != CLOSEST_SEPARATED || r.distance <= d_max(touch, tol_contact(a, b));
+    if (lasting) {
+        const body *a = step_flown(w, in->a, in->lo, 0), *b = step_flown(w, in->b, in->lo, 0);
+        pieces_hold(a, b, pp, d_max(touch, tol_contact(a, b)));
+        return;
     }
+    for (int t = 0; t < pp->n; t++) pp->e[t].held = false;
 }
 
 toi_output toi_find(world *w, const toi_input *in)
