@@ -503,30 +503,107 @@ static void l_block_has_its_own_mass_as_one_mesh_or_two_pieces(void **state)
     free(open.s);
 }
 
-/* Formats without groups: each connected component of the faces is one piece
- * (two boxes in an OFF, apart or sharing a corner). */
-static void components_are_pieces(void **state)
+/* Two boxes, the second shifted dx along x (1: they share a face; 3: apart), as
+ * a file of form: 0 OBJ with an o for each, 1 OBJ of one group, 2 ASCII STL of a
+ * solid for each, 3 binary STL, 4 OFF, 5 ASCII PLY, 6 binary PLY. */
+static void two_boxes(buf *b, int form, double dx)
+{
+    vec3 v[16];
+    for (int k = 0; k < 16; k++) v[k] = v3_add(corner(k % 8), v3(k < 8 ? 0 : dx, 0, 0));
+    int tri[12][3];
+    box_triangles(tri);
+    if (form <= 1) {
+        for (int box = 0; box < 2; box++) {
+            if (form == 0 || box == 0) putf(b, "o box%d\n", box + 1);
+            for (int k = 8 * box; k < 8 * box + 8; k++) putf(b, "v %.9g %.9g %.9g\n", v[k].x, v[k].y, v[k].z);
+            for (int f = 0; f < 6; f++)
+                putf(b, "f %d %d %d %d\n", QUADS[f][0] + 8 * box + 1, QUADS[f][1] + 8 * box + 1,
+                     QUADS[f][2] + 8 * box + 1, QUADS[f][3] + 8 * box + 1);
+        }
+    } else if (form == 2) {
+        for (int box = 0; box < 2; box++) {
+            putf(b, "solid box%d\n", box + 1);
+            for (int t = 0; t < 12; t++) {
+                putf(b, "facet normal 0 0 0\nouter loop\n");
+                for (int k = 0; k < 3; k++) {
+                    vec3 c = v[8 * box + tri[t][k]];
+                    putf(b, "vertex %.9g %.9g %.9g\n", c.x, c.y, c.z);
+                }
+                putf(b, "endloop\nendfacet\n");
+            }
+            putf(b, "endsolid box%d\n", box + 1);
+        }
+    } else if (form == 3) {
+        char h[80] = "two boxes";
+        put(b, h, 80);
+        put_u32(b, 24, false);
+        for (int t = 0; t < 24; t++) {
+            for (int k = 0; k < 3; k++) put_f32(b, 0, false);
+            for (int k = 0; k < 3; k++) {
+                vec3 c = v[8 * (t / 12) + tri[t % 12][k]];
+                put_f32(b, c.x, false);
+                put_f32(b, c.y, false);
+                put_f32(b, c.z, false);
+            }
+            put(b, "\0\0", 2);
+        }
+    } else {
+        if (form == 4) putf(b, "OFF\n16 12 0\n");
+        else
+            putf(b, "ply\nformat %s 1.0\nelement vertex 16\nproperty float x\nproperty float y\n"
+                    "property float z\nelement face 12\nproperty list uchar int vertex_indices\n"
+                    "end_header\n", form == 5 ? "ascii" : "binary_little_endian");
+        for (int k = 0; k < 16; k++) {
+            if (form == 6) {
+                put_f32(b, v[k].x, false);
+                put_f32(b, v[k].y, false);
+                put_f32(b, v[k].z, false);
+            } else {
+                putf(b, "%.9g %.9g %.9g\n", v[k].x, v[k].y, v[k].z);
+            }
+        }
+        for (int f = 0; f < 12; f++) {
+            if (form == 6) put(b, "\4", 1);
+            else putf(b, "4");
+            for (int k = 0; k < 4; k++) {
+                int i = QUADS[f % 6][k] + 8 * (f / 6);
+                if (form == 6) put_u32(b, (uint32_t)i, false);
+                else putf(b, " %d", i);
+            }
+            if (form != 6) putf(b, "\n");
+        }
+    }
+}
+
+/* Pieces: each OBJ group and each ASCII STL solid is one; in formats without
+ * groups (binary STL, OFF, PLY, or an OBJ of one group) each connected
+ * component of the faces, after welding, is one.  Two boxes apart are two
+ * pieces in every format; sharing a face, they are still two groups, but one
+ * component.  Either way the volume is the two boxes' and the centre of mass
+ * their middle. */
+static void pieces_are_groups_or_components(void **state)
 {
     (void)state;
-    for (int touch = 0; touch < 2; touch++) {
-        buf b = {0};
-        putf(&b, "OFF\n16 12 0\n");
-        for (int box = 0; box < 2; box++)
-            for (int k = 0; k < 8; k++)
-                putf(&b, "%d %d %d\n", (k & 1) + box * (touch ? 1 : 3), (k & 2) / 2 + box * (touch ? 1 : 0),
-                     (k & 4) / 4 + box * (touch ? 1 : 0));
-        for (int box = 0; box < 2; box++)
-            for (int f = 0; f < 6; f++)
-                putf(&b, "4 %d %d %d %d\n", QUADS[f][0] + 8 * box, QUADS[f][1] + 8 * box,
-                     QUADS[f][2] + 8 * box, QUADS[f][3] + 8 * box);
-        shape s;
-        mesh_source *src = shape_of(&b, "two.off", v3(1, 1, 1), &s);
-        /* boxes apart: two pieces; sharing a corner, welded: one component */
-        assert_int_equal(s.pieces, touch ? 1 : 2);
-        assert_rel(s.mass.volume, 2, 1e-15);
-        free_shape(&s, src);
-        free(b.s);
-    }
+    static const char *names[7] = {"two.obj", "one-group.obj", "two.stl", "two-binary.stl",
+                                   "two.off", "two.ply", "two-binary.ply"};
+    static const bool groups[7] = {true, false, true, false, false, false, false};
+    for (int form = 0; form < 7; form++)
+        for (int touch = 0; touch < 2; touch++) {
+            double dx = touch ? 2 * H.x : 3;
+            buf b = {0};
+            two_boxes(&b, form, dx);
+            shape s;
+            mesh_source *src = shape_of(&b, names[form], v3(1, 1, 1), &s);
+            int want = groups[form] || !touch ? 2 : 1;
+            if (s.pieces != want)
+                fail_msg("%s, dx = %g: %d pieces, not %d", names[form], dx, s.pieces, want);
+            double vol = 2 * 8 * H.x * H.y * H.z;
+            assert_rel(s.mass.volume, vol, 1e-12);
+            vec3 com = v3_add(C, v3(dx / 2, 0, 0));
+            assert_true(v3_dist(s.mass.com, com) <= 1e-12 * v3_len(com));
+            free_shape(&s, src);
+            free(b.s);
+        }
 }
 
 /* A cup: a base (a prism of 2n sides) and n wall pieces, inner radius ri, outer
@@ -1132,7 +1209,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(one_box_in_every_format_gives_one_hull),
         cmocka_unit_test(l_block_has_its_own_mass_as_one_mesh_or_two_pieces),
-        cmocka_unit_test(components_are_pieces),
+        cmocka_unit_test(pieces_are_groups_or_components),
         cmocka_unit_test(a_ball_dropped_into_a_cup_rests_on_its_base),
         cmocka_unit_test(a_ball_beside_a_cup_bounces_off_its_outside),
         cmocka_unit_test(an_l_thrown_along_the_hook_of_an_l_keeps_its_energy),
