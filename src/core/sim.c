@@ -149,6 +149,7 @@ static bool limit_speeds(world *w, body *b)
         body_update_w(b);
         cut = true;
     }
+    if (cut) world_cut(w, b, vl, wl, false);
     return cut;
 }
 

@@ -9,6 +9,7 @@
 #include <assert.h>
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -104,6 +105,16 @@ static int names_rebuild(world *w, int cap)
     w->ncap = ncap;
     for (int i = 0; i < w->n; i++) name_put(w, i);
     return 0;
+}
+
+void world_cut(world *w, const body *b, double linear, double angular, bool tell)
+{
+    w->st.speed_cuts++;
+    if (!tell || w->cut.pending) return;
+    w->cut.pending = true;
+    snprintf(w->cut.name, sizeof w->cut.name, "%s", b->name);
+    w->cut.linear = linear;
+    w->cut.angular = angular;
 }
 
 int world_find(const world *w, const char *name)

@@ -46,7 +46,19 @@ typedef struct {
     long events_lost;     /* collisions not reported in events (out of memory) */
     long late_pairs;      /* (heap off) contacts found of pairs the broad phase did
                            * not hold near: it was late; never expected */
+    long speed_cuts;      /* speeds max_linear or max_angular cut where a collision
+                           * or a throw set them (world_cut) */
 } sim_stats;
+
+/* The first throw the speed limits cut since the caller last took it (world_cut):
+ * whom it cut, and the speeds asked, so that the caller can name the limit to
+ * raise.  (Collisions are only counted: the thesis's max_angular of 4 rad/s cuts
+ * spins in most of its scenes.) */
+typedef struct {
+    bool pending;         /* one was made since the caller cleared this */
+    char name[BODY_NAME_MAX];
+    double linear, angular; /* the speeds asked, m/s and rad/s (before the cut) */
+} sim_cut;
 
 /* One collision answered: at time t, bodies a and b (indices) at point p, with
  * normal n (unit, from b towards a), impulse magnitude j (N s) and closing speed
@@ -82,6 +94,7 @@ typedef struct world {
                            * pair is due, and the simulation copies its bodies
                            * afresh (edit.h sets it) */
     bool out_of_memory;   /* a frame ran out of memory on the way (sim_frame says so) */
+    sim_cut cut;          /* the first speed cut the caller has not yet seen */
 } world;
 
 /* The start-up values of Table A.5 (time_step 0.1, collision_dist 0.25,
@@ -113,6 +126,11 @@ long world_pairs(const world *w);
 /* Appends a collision to the frame's events; counts it in st.events_lost when
  * there is no memory for it. */
 void world_event(world *w, const sim_event *e);
+
+/* The speed limits cut body b's velocities where a collision or a throw set them:
+ * counted in st.speed_cuts; a throw's (tell) is kept in cut when it is the first
+ * the caller has not seen (linear and angular: the speeds asked). */
+void world_cut(world *w, const body *b, double linear, double angular, bool tell);
 
 /* The global acceleration (force.h). */
 static inline vec3 world_accel(const world *w) { return force_accel(w->set.force); }
