@@ -130,7 +130,7 @@ static cmd_status try_value(const command *c, const char *set)
     char text[600];
     if (c->form == FORM_ACTION) {
         char err[512];
-        lang_paths paths = {NULL, NULL};
+        lang_paths paths = {NULL, NULL, NULL};
         program *p = lang_parse(set, strlen(set), NULL, 1, &paths, 0, NULL, 0, err, sizeof err);
         fflush(g_sh.err);
         rewind(g_sh.err);

@@ -25,6 +25,7 @@
 
 #include "core/closest.h"
 #include "core/hold.h"
+#include "core/limits.h"
 #include "shell/outfile.h"
 
 /* A held object this near the hand's place for it (m, and radians) is carried by
@@ -255,7 +256,9 @@ static void panel_follow(hand *h)
         double angle;
         held_place(h, h->p, h->q, &x, &q);
         q_to_axis_angle(q, &axis, &angle);
-        h->set.panel_at = x;
+        /* within the limits of a position, as panel_at must be (core/limits.h) */
+        const double m = LIM_POSITION_MAX;
+        h->set.panel_at = v3(d_max(-m, d_min(m, x.x)), d_max(-m, d_min(m, x.y)), d_max(-m, d_min(m, x.z)));
         h->set.panel_rotate = (dir_amount){axis, angle};
     }
     if (h->grip == GRIP_SLIDER) {
@@ -582,16 +585,26 @@ int hand_reselect(hand *h, world *w, char *err, size_t errlen)
 
 static const char *const grip_words[] = {"off", "none", "fly", NULL, "panel", NULL};
 
-int hand_set_grip(hand *h, world *w, const char *what, char *err, size_t errlen)
+/* The grip a word of grip's names, with its slider; GRIP_OBJECT for any other
+ * word (an object's name). */
+static grip_kind grip_of_word(const char *what, panel_part *slider)
 {
-    int i = -1;
     grip_kind g = GRIP_OBJECT;
-    panel_part slider = PANEL_OFF;
+    *slider = PANEL_OFF;
     for (int k = 0; k < 6; k++)
         if (grip_words[k] && strcmp(what, grip_words[k]) == 0) g = (grip_kind)k;
-    if (strcmp(what, "time_step") == 0) slider = PANEL_TIME_STEP;
-    if (strcmp(what, "collision_dist") == 0) slider = PANEL_COLLISION_DIST;
-    if (slider != PANEL_OFF) g = GRIP_SLIDER;
+    if (strcmp(what, "time_step") == 0) *slider = PANEL_TIME_STEP;
+    if (strcmp(what, "collision_dist") == 0) *slider = PANEL_COLLISION_DIST;
+    if (*slider != PANEL_OFF) g = GRIP_SLIDER;
+    return g;
+}
+
+int hand_set_grip(hand *h, world *w, const char *what, bool quoted, char *err, size_t errlen)
+{
+    int i = -1;
+    panel_part slider;
+    grip_kind g = quoted ? GRIP_OBJECT : grip_of_word(what, &slider);
+    if (quoted) slider = PANEL_OFF;
     if (g == GRIP_OBJECT) {
         i = world_find(w, what);
         if (i < 0) {
@@ -614,13 +627,24 @@ int hand_set_grip(hand *h, world *w, const char *what, char *err, size_t errlen)
     return 0;
 }
 
-const char *hand_grip_word(const hand *h, const world *w)
+const char *hand_grip_word(const hand *h, const world *w, char buf[HAND_GRIP_TEXT])
 {
+    panel_part slider;
     switch (h->grip) {
-    case GRIP_OBJECT: return h->held >= 0 && h->held < w->n ? w->bodies[h->held]->name : "none";
+    case GRIP_OBJECT:
+        if (!(h->held >= 0 && h->held < w->n)) return "none";
+        snprintf(buf, HAND_GRIP_TEXT, "%s", w->bodies[h->held]->name);
+        if (grip_of_word(buf, &slider) != GRIP_OBJECT)
+            snprintf(buf, HAND_GRIP_TEXT, "\"%s\"", w->bodies[h->held]->name);
+        return buf;
     case GRIP_SLIDER: return panel_control_of(h->slider)->name;
     default: return grip_words[h->grip];
     }
+}
+
+void hand_let_go(hand *h, world *w, int i)
+{
+    if (h->grip == GRIP_OBJECT && h->held == i) drop(h, w);
 }
 
 void hand_object_deleted(hand *h, int i)

@@ -151,6 +151,7 @@ cmd_status cmd_stats(shell *sh, const stmt *st)
     fprintf(sh->out, "internal_steps = %ld\n", w->st.subframes);
     fprintf(sh->out, "heap_pops = %ld\n", w->st.heap_pops);
     fprintf(sh->out, "restarts = %ld\n", w->st.restarts);
+    fprintf(sh->out, "speed_cuts = %ld\n", w->st.speed_cuts);
     double nf = w->st.frames > 0 ? (double)w->st.frames : 1;
     fprintf(sh->out, "pair_checks_per_frame = %.6g\n", (double)w->st.pair_checks / nf);
     fprintf(sh->out, "heap_pops_per_frame = %.6g\n", (double)w->st.heap_pops / nf);

@@ -14,6 +14,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "fmt.h"
 #include "outfile.h"
 #include "shell.h"
 
@@ -99,7 +100,10 @@ int main(int argc, char **argv)
                     else cmds[ncmds++] = val;
                     break;
                 } else {
-                    fprintf(stderr, "vroc: unknown option -%c\n", *p);
+                    char opt[3] = {'-', *p, '\0'};
+                    fprintf(stderr, "vroc: unknown option ");
+                    fmt_escaped(stderr, opt); /* (a byte of the command line) */
+                    fputc('\n', stderr);
                     usage(stderr);
                     free(cmds);
                     free(files);
@@ -120,8 +124,21 @@ int main(int argc, char **argv)
     sh.interactive = !batch && tty;
     sh.stop_on_error = batch || !isatty(STDIN_FILENO);
     char why[1200];
+    /* -o is the output setting: what `output =` would refuse, it refuses (show and
+     * save write it back as a statement) */
+    if (outdir && (!*outdir || strlen(outdir) >= sizeof sh.view_set.output || strchr(outdir, '\n'))) {
+        fprintf(stderr, "vroc: -o: %s\n", !*outdir ? "the folder name is empty"
+                                         : strchr(outdir, '\n') ? "a folder name has no newline"
+                                                                 : "the folder name is too long");
+        free(cmds);
+        free(files);
+        shell_free(&sh);
+        return 2;
+    }
     if (outdir && outfile_allowed(outdir, why, sizeof why) != 0) {
-        fprintf(stderr, "vroc: -o: %s\n", why);
+        fprintf(stderr, "vroc: -o: ");
+        fmt_escaped(stderr, why);
+        fputc('\n', stderr);
         free(cmds);
         free(files);
         shell_free(&sh);

@@ -71,6 +71,9 @@ typedef struct shell {
     bool line_broken;
     bool found_apart;      /* shell_check_start found no overlap since the last
                             * statement began: time may run on unchecked */
+    bool cut_told;         /* a throw's speed cut was warned of since the input (a
+                            * line, a file, -c) began: shell_tell_cut */
+    bool fly_told;         /* flying was stopped at the limits, and said so */
 } shell;
 
 /* Set by the SIGINT handler; long operations (run, start) stop when it is set. */
@@ -116,6 +119,11 @@ cmd_status shell_close_outputs(shell *sh);
  * end of the program and restart (st) do; the movie and soundtrack go on.
  * Returns CMD_ERROR (after saying why) when one failed. */
 cmd_status shell_close_logs(shell *sh, const stmt *st);
+
+/* The first throw the speed limits cut since the input began (world_cut), as one
+ * warning naming the object and the limit to raise; later ones, and collisions',
+ * are only counted (stats: speed_cuts). */
+void shell_tell_cut(shell *sh, const stmt *st);
 
 /* Messages about statement st (NULL: no location). */
 void sh_error(shell *sh, const stmt *st, const char *fmt, ...)

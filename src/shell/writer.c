@@ -18,6 +18,16 @@ void writer_vec(FILE *out, vec3 v)
     fprintf(out, "(%s, %s, %s)", fmt_num(a, v.x), fmt_num(b, v.y), fmt_num(c, v.z));
 }
 
+void writer_path(FILE *out, const char *path)
+{
+    fputc('"', out);
+    for (const char *p = path; *p; p++) {
+        if (*p == '"' || *p == '\\') fputc('\\', out);
+        fputc(*p, out);
+    }
+    fputc('"', out);
+}
+
 static void write_setting(FILE *out, const shell *sh, const command *c, int for_save)
 {
     const shell_settings *s = &sh->set;
@@ -44,8 +54,10 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
     if (for_save && (after || (!sh->hand.used && (strcmp(n, "hand") == 0 || strcmp(n, "hand_rotate") == 0))))
         return;
     if (strcmp(n, "tracker") == 0) {
-        if (hs->tracker[0]) fprintf(out, "tracker = \"%s\"\n", hs->tracker);
-        else fprintf(out, "tracker = off\n");
+        fprintf(out, "tracker = ");
+        if (hs->tracker[0]) writer_path(out, hs->tracker);
+        else fprintf(out, "off");
+        fputc('\n', out);
         return;
     }
     if (strcmp(n, "sound") == 0) {
@@ -57,7 +69,8 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
         return;
     }
     if (strcmp(n, "grip") == 0) {
-        fprintf(out, "grip = %s\n", hand_grip_word(&sh->hand, &sh->w));
+        char g[HAND_GRIP_TEXT];
+        fprintf(out, "grip = %s\n", hand_grip_word(&sh->hand, &sh->w, g));
         return;
     }
     if (strcmp(n, "seed") == 0) {
@@ -113,7 +126,7 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
         break;
     }
     case VAL_ONOFF: fprintf(out, "%s", *(const bool *)field ? "on" : "off"); break;
-    case VAL_FILE: fprintf(out, "\"%s\"", field); break;
+    case VAL_FILE: writer_path(out, field); break;
     default: break;
     }
     fputc('\n', out);
@@ -136,12 +149,14 @@ void hand_write(FILE *out, const shell *sh)
     if (!h->used) return;
     fprintf(out, "# the hand\n");
     if (h->playing) {
-        fprintf(out, "tracker = \"%s\"\ntracker_time = %s\n", h->set.tracker,
-                fmt_num(a, hand_tracker_time(h)));
+        fprintf(out, "tracker = ");
+        writer_path(out, h->set.tracker);
+        fprintf(out, "\ntracker_time = %s\n", fmt_num(a, hand_tracker_time(h)));
     } else if (h->set.tracker[0]) {
         fprintf(out, "# tracker = \"%s\" (a live feed: not opened again)\n", h->set.tracker);
     }
-    fprintf(out, "grip = %s\n", hand_grip_word(h, &sh->w));
+    char g[HAND_GRIP_TEXT];
+    fprintf(out, "grip = %s\n", hand_grip_word(h, &sh->w, g));
 }
 
 void body_write(FILE *out, const body *b)

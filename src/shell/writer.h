@@ -14,6 +14,10 @@ struct world;
 /* Writes v as "(x, y, z)", each number by fmt_num. */
 void writer_vec(FILE *out, vec3 v);
 
+/* Writes path as a quoted string of the language, a backslash before each '"'
+ * and '\\' in it, so that it reads back as it is. */
+void writer_path(FILE *out, const char *path);
+
 /* Writes every setting as statements of the language, in the command table's
  * order; for `save` the log files (trace, events, hand_log) are written as
  * comments, since reading them back would truncate the logs, the hand's pose only

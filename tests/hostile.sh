@@ -1,0 +1,154 @@
+#!/bin/sh
+# hostile.sh: input as an attacker would give it (issue 32), each finding a test.
+# Values that escape the limits (tracker rows, throws, the simulation's own
+# states, names, -o), input that would hang or eat memory (devices, named pipes,
+# reads nested in reads), and messages that would echo raw bytes.  Where a limit is
+# involved, just inside and just outside it.  Timeouts are shortened with
+# VROC_TIMEOUT; memory is bounded with ulimit -v in the normal build (the
+# sanitizers reserve terabytes of address space).
+. "$(dirname "$0")/lib.sh"
+cd "$TMP" || exit 1
+H=time,x,y,z,qw,qx,qy,qz,trigger,button
+san=false
+[ "${BUILD:-build}" = build-san ] && san=true
+
+# is TEXT GOT WANT
+is() { [ "$2" = "$3" ] && ok "$1" || notok "$1" "got:  $2" "want: $3"; }
+# has TEXT OUTPUT LINE: OUTPUT holds LINE (the sanitizer build may add lines)
+has() { printf '%s\n' "$2" | grep -qxF -- "$3" && ok "$1" || notok "$1" "want: $3" "got: $(printf '%s' "$2" | head -5)"; }
+# bounded KB CMD...: CMD with at most KB kilobytes of memory (normal build only)
+bounded() {
+    kb=$1
+    shift
+    if $san; then "$@"; else (ulimit -v "$kb" && "$@"); fi
+}
+
+# ---- tracker rows within the limits of a statement ----
+printf '%s\n0,0,0,1.5,1,0,0,0,0,0\n1,1e308,0,1.5,1,0,0,0,0,0\n' "$H" > far.csv
+expect "a tracker row at x = 1e308 is refused with file:line" 1 \
+    "far.csv:3: x must be between -1e+06 and 1e+06 (got 1e+308)" "$VROC" -b -c "tracker = far.csv"
+printf '%s\n0,0,0,1.5,1,0,0,0,0,0\n1,-1e6,1e6,1.5,1,0,0,0,0,0\n' "$H" > edge.csv
+expect "a tracker row at the edge, x = -1e6 and y = 1e6, is taken" 0 "hand = (-1000000, 1000000, 1.5)" \
+    "$VROC" -b -c "tracker = edge.csv; run 11; show"
+printf '%s\n0,0,0,1.5,1,0,0,0,1,0\n1e-300,1,0,1.5,1,0,0,0,0,0\n' "$H" > near.csv
+expect "tracker rows 1e-300 s apart are refused (they would throw at 1e300 m/s)" 1 \
+    "near.csv:3: time 1e-300 is 1e-300 s after the row before: rows are at the same time, or at least 1e-06 s apart" \
+    "$VROC" -b -c "tracker = near.csv"
+printf '%s\n0,0,0,1.5,1,0,0,0,1,0\n1e-6,0.001,0,1.5,1,0,0,0,0,0\n' "$H" > apart.csv
+expect "tracker rows 1e-6 s apart are taken" 0 "tracker = " "$VROC" -b -c "tracker = apart.csv; show"
+
+# ---- a throw within max_linear, and counted ----
+out=$("$VROC" -b -c 'sphere ball; radius=0.1; translate=(0,0,1.5); select on; hand=(0,0,1.5); trigger=on; time_step=1e-6; step; hand=(1e6,0,1.5); trigger=off; print ball; stats' 2>&1)
+has "a throw from statements is cut to max_linear (the issue's: 1e12 m/s)" "$out" "linear_vel = (8, 0, 0)"
+has "and counted among the speed cuts" "$out" "speed_cuts = 1"
+has "and the cut warns, naming the limit to raise" "$out" \
+    "warning: the speed limit cut the throw of 'ball' from 1000000000000 to max_linear = 8 m/s: raise max_linear to let it go faster; stats counts such cuts (speed_cuts)"
+out=$("$VROC" -b -c 'sphere ball; radius=0.1; translate=(0,0,1.5); select on; hand=(0,0,1.5); trigger=on; time_step=0.5; step; hand=(4,0,1.5); trigger=off; print ball; stats' 2>&1)
+has "a throw at max_linear exactly is not cut" "$out" "linear_vel = (8, 0, 0)"
+has "nor counted" "$out" "speed_cuts = 0"
+printf '%s\n0,0,0,1.5,1,0,0,0,1,0\n0.1,0,0,1.5,1,0,0,0,1,0\n0.2,0,0,1.5,0.70710678118654757,0,0,0.70710678118654757,0,0\n' "$H" > spin.csv
+out=$("$VROC" -b -c 'sphere ball; radius=0.1; translate=(0,0,1.5); select on; tracker = spin.csv; run 3; print ball; stats' 2>&1)
+has "a tracker's spinning throw (7.9 rad/s) is cut to max_angular" "$out" "angular_vel = (0, 0, 4)"
+
+# ---- the simulation's own states read back ----
+out=$("$VROC" -b -c 'sphere ball; gravity; run 5000; save fall.vroc' 2>&1)
+has "a ball that falls for 500 s rests where it leaves the limits, with one warning naming it" "$out" \
+    "warning: 'ball' left the limits of a state at time = 451.8 (a coordinate beyond 1000000 m: translate = (0, 0, -1000203.8760009465)): it rests where it left them, at translate = (0, 0, -1000000)"
+out=$("$VROC" -b fall.vroc -c 'run 10; print ball' 2>&1)
+has "its saved state reads back, and it stays at rest" "$out" "translate = (0, 0, -1000000)"
+out=$("$VROC" -b -c 'sphere ball; gravity; run 4517; print ball' 2>&1)
+has "a fall of 451.7 s, just inside, goes on falling" "$out" "resting = off"
+out=$("$VROC" -b -c 'sphere ball; force = (0, 0, -1) 10000; run 20; save fast.vroc' 2>&1)
+has "a ball faster than the limits of a velocity (1000 g for 1.1 s) rests too" "$out" \
+    "warning: 'ball' left the limits of a state at time = 1.1 (a velocity beyond 10000 m/s, or a spin beyond what the limits give): it rests where it left them, at translate = (0, 0, -6049.999999999977)"
+expect "and reads back" 0 "velocity = (0, 0, 0)" "$VROC" -b fast.vroc -c 'print ball'
+expect "the clock runs to its limit, 1e12 s" 0 "time = 1000000000000" \
+    "$VROC" -b -c 'time_step = 1000; clock = (999999998000, 0); run 2; time'
+expect "and no further" 1 "error: time cannot run past 1000000000000 s" \
+    "$VROC" -b -c 'time_step = 1000; clock = (999999998000, 0); run 3'
+
+# ---- names: an object named like one of grip's words reads back held ----
+for n in none off fly panel time_step collision_dist; do
+    "$VROC" -b -q -c "sphere $n; select on; trigger = on; save g-$n.vroc" 2>&1
+    got=$(grep '^grip' g-$n.vroc)
+    back=$("$VROC" -b -q g-$n.vroc -c "show" 2>&1 | grep '^grip')
+    [ "$got" = "grip = \"$n\"" ] && [ "$back" = "$got" ] && ok "an object named $n is held as \"$n\" in save, and reads back so" ||
+        notok "an object named $n is held as \"$n\" in save, and reads back so" "saved: $got" "read back: $back"
+done
+expect "grip = panel, unquoted, is the panel" 0 "grip = panel" "$VROC" -b -q -c 'sphere panel; select on; grip = panel; show'
+
+# ---- -o ----
+expect "-o \"\" is refused (output = \"\" would not read back)" 2 "vroc: -o: the folder name is empty" \
+    "$VROC" -b -o "" -c show
+"$VROC" -b -q -o 'a"b\c' -c 'save o.vroc'
+expect "a folder name with a quote and a backslash is saved so that it reads back" 0 'output = "a\"b\\c"' \
+    "$VROC" -b -q o.vroc -c show
+
+# ---- messages never echo raw bytes ----
+printf 'sphere a\n\377\376x = 1\n' > bin.vroc
+has "bytes that are not printable are escaped in messages" "$("$VROC" -b bin.vroc 2>&1)" \
+    "bin.vroc:2: error: unknown command '\\xff\\xfex' (help lists the commands)"
+printf 'read "a\001\033[2J\302\233b"\n' > ctl.vroc
+has "control characters too (C0, C1)" "$("$VROC" -b ctl.vroc 2>&1)" \
+    "ctl.vroc:1: error: cannot read 'a\\x01\\x1b[2J\\xc2\\x9bb': No such file or directory"
+printf 'sphere caf\303\251\n' > utf.vroc
+expect "printable UTF-8 is left as it is" 1 "'café' is not a valid object name" "$VROC" -b utf.vroc
+printf '%s\n0,\033[2J,0,0,1,0,0,0,0,0\n' "$H" > esc.csv
+expect "a tracker row's bytes are escaped too" 1 "esc.csv:2: x is not a number (got '\\x1b[2J')" \
+    "$VROC" -b -c 'tracker = esc.csv'
+
+# ---- input that would hang or eat memory ----
+expect "tracker = /dev/zero stops at the size cap, in bounded memory" 1 \
+    "error: tracker: cannot read '/dev/zero': it is larger than 67108864 bytes" \
+    bounded 600000 "$VROC" -b -c 'tracker = /dev/zero'
+expect "read /dev/zero too" 1 "cannot read '/dev/zero': it is larger than 67108864 bytes" \
+    bounded 600000 "$VROC" -b -c 'read /dev/zero'
+# a row padded to n bytes
+padded() { awk -v h="$H" -v n="$1" 'BEGIN { print h; r = "10,0,0,0,1,0,0,0,0,0"; printf "%s", r;
+    for (i = length(r); i < n; i++) printf " "; print "" }'; }
+padded 1024 > line1024.csv
+padded 1025 > line1025.csv
+expect "a tracker line of 1024 bytes is taken" 0 "tracker = " "$VROC" -b -c 'tracker = line1024.csv; show'
+expect "one of 1025 bytes is refused" 1 "line1025.csv:2: a line longer than 1024 bytes" \
+    "$VROC" -b -c 'tracker = line1025.csv'
+mkfifo fifo
+expect "read of a named pipe no program writes to times out" 1 \
+    "cannot read 'fifo': nothing came through it for 1 s (a pipe no program writes to?)" \
+    env VROC_TIMEOUT=1 "$VROC" -b -c 'read fifo'
+expect "collision_sound of such a pipe too" 1 \
+    "error: collision_sound: cannot read 'fifo': nothing came through it for 1 s" \
+    env VROC_TIMEOUT=1 "$VROC" -b -c 'collision_sound = fifo'
+(printf 'sphere piped\n' > fifo) &
+expect "a named pipe that a program writes to is read" 0 "piped" "$VROC" -b -c 'read fifo; list'
+wait
+# reads nested in reads: ten files that each read the next ten times
+for d in 0 1 2 3 4 5 6; do
+    : > "f$d.vroc"
+    for k in 1 2 3 4 5 6 7 8 9 10; do echo "read f$((d + 1)).vroc" >> "f$d.vroc"; done
+done
+echo "sphere leaf" > f7.vroc
+expect "reads nested seven deep, ten each (1e7 reads), stop at the cap in bounded memory" 1 \
+    "cannot read 'f7.vroc': more than 10000 files read in all (files that read others many times over?)" \
+    bounded 300000 "$VROC" -b f0.vroc
+awk 'BEGIN { for (i = 0; i < 9999; i++) print "read f7.vroc" }' > r9999.vroc
+awk 'BEGIN { for (i = 0; i < 10000; i++) print "read f7.vroc" }' > r10000.vroc
+expect "10000 files read in all are read" 0 "leaf" "$VROC" -b r9999.vroc -c list
+expect "10001 are not" 1 "r10000.vroc:10000: error: cannot read 'f7.vroc': more than 10000 files read" \
+    "$VROC" -b r10000.vroc
+
+# ---- sound files hold finite samples ----
+# a mono 32-bit float WAV at 48 kHz of four samples (0.5, X, 0.5, 0)
+float_wav() { # FILE X (X as the octal escapes of its four little-endian bytes)
+    printf 'RIFF\064\000\000\000WAVEfmt \020\000\000\000\003\000\001\000\200\273\000\000\000\356\002\000\004\000\040\000data\020\000\000\000' > "$1"
+    printf "\\000\\000\\000\\077$2\\000\\000\\000\\077\\000\\000\\000\\000" >> "$1"
+}
+float_wav nan.wav '\000\000\300\177'
+float_wav inf.wav '\000\000\200\177'
+float_wav ok.wav '\000\000\200\076'
+expect "a float WAV holding NaN is refused" 1 "holds a sample that is not a finite number (nan, at frame 1)" \
+    "$VROC" -b -c 'collision_sound = nan.wav'
+expect "one holding infinity too" 1 "holds a sample that is not a finite number (inf, at frame 1)" \
+    "$VROC" -b -c 'collision_sound = inf.wav'
+expect "one of finite samples is taken" 0 "collision_sound = \"ok.wav\"" \
+    "$VROC" -b -c 'collision_sound = ok.wav; show'
+exit 0
