@@ -151,4 +151,141 @@ expect "one holding infinity too" 1 "holds a sample that is not a finite number 
     "$VROC" -b -c 'collision_sound = inf.wav'
 expect "one of finite samples is taken" 0 "collision_sound = \"ok.wav\"" \
     "$VROC" -b -c 'collision_sound = ok.wav; show'
+
+# ---- writes that never destroy what was there ----
+limited() { # BLOCKS CMD...: CMD with the file size limit, SIGXFSZ ignored (outputs.sh)
+    blocks=$1
+    shift
+    (trap '' XFSZ; ulimit -f "$blocks" && "$@")
+}
+noparts() { # TEXT [FOLDER]: no part file is left in FOLDER (here)
+    left=$(ls -A "${2:-.}" | grep vroc-part)
+    [ -z "$left" ] && ok "$1" || notok "$1" "$left"
+}
+"$VROC" -b -q -c 'sphere old; save w.vroc'
+cp w.vroc w-before.vroc
+out=$(limited 8 "$VROC" -b -q -c 'random_box = (9, 9, 9); random 60; save w.vroc' 2>&1); status=$?
+has "a save that outgrows the file size limit fails, saying why" "$out" "error: save: cannot write 'w.vroc': File too large"
+same "and leaves the old file whole" w-before.vroc w.vroc
+noparts "and no part file"
+limited 400 "$VROC" -b -q -c 'random_box = (9, 9, 9); random 60; save w.vroc'
+grep -q '^sphere random1$\|^cube random1$\|^superquadric random1$' w.vroc && ok "under a wider limit the same save replaces it" ||
+    notok "under a wider limit the same save replaces it" "$(head -3 w.vroc)"
+chmod 640 w.vroc
+"$VROC" -b -q -c 'sphere again; save w.vroc'
+is "a saved file keeps the mode the old one had" "$(stat -c %a w.vroc)" 640
+"$VROC" -b -q -c 'sphere new; save fresh.vroc'
+is "a new one gets 0666 less the umask" "$(stat -c %a fresh.vroc)" "$(printf '%o' $((0666 & ~$(umask))))"
+ln -s w.vroc link.vroc
+"$VROC" -b -q -c 'sphere through; save link.vroc'
+[ -L link.vroc ] && grep -q '^sphere through$' w.vroc && ok "a save through a link replaces the file it names, and the link stays" ||
+    notok "a save through a link replaces the file it names, and the link stays" "$(ls -l link.vroc w.vroc)"
+# the logs start beside too: a trace whose first rows cannot be written leaves the old one
+printf 'old trace\n' > t.csv
+out=$(limited 2 "$VROC" -b -q -c 'random_box = (9, 9, 9); random 60; trace = t.csv' 2>&1)
+has "a trace that cannot start fails, saying why" "$out" "error: trace: cannot write 't.csv': File too large"
+is "and the old trace is whole" "$(cat t.csv)" "old trace"
+noparts "and no part file is left"
+printf 'old hand log\n' > h.csv
+out=$(limited 0 "$VROC" -b -q -c 'hand_log = h.csv' 2>&1)
+has "a hand log likewise" "$out" "error: hand_log: cannot write 'h.csv': File too large"
+is "and the old one is whole" "$(cat h.csv)" "old hand log"
+printf 'old events\n' > e.csv
+out=$(limited 0 "$VROC" -b -q -c 'events = e.csv' 2>&1)
+has "an events log likewise" "$out" "error: events: cannot write 'e.csv': File too large"
+is "and the old one is whole" "$(cat e.csv)" "old events"
+noparts "and no part files are left"
+
+# named pipes: one no program reads is refused at once; one a program reads is written
+mkfifo out.fifo
+for w in "save out.fifo" "trace = out.fifo" "events = out.fifo" "hand_log = out.fifo"; do
+    expect "$w, a named pipe no program reads, is refused at once" 1 "cannot write 'out.fifo': no program reads the named pipe" \
+        timeout 10 "$VROC" -b -c "sphere a; $w"
+done
+expect "soundtrack = out.fifo is refused (a soundtrack is rewritten as it grows)" 1 \
+    "error: soundtrack: cannot write 'out.fifo': a named pipe (the file is rewritten as it grows)" \
+    timeout 10 "$VROC" -b -c "soundtrack = out.fifo"
+expect "movie = out.fifo is refused" 1 "error: movie: cannot write 'out.fifo': not a regular file" \
+    timeout 10 "$VROC" -b -c "movie = out.fifo.mp4; movie = off; movie = out.fifo"
+exec 3<> out.fifo # (a reader, and a writer that keeps it from ending)
+timeout 10 "$VROC" -b -q -c 'sphere a; save out.fifo'
+is "a named pipe a program reads is written in place" "$(head -n 1 <&3 | cut -c 1-6)" "# vroc"
+exec 3<&-
+[ -p out.fifo ] && ok "and stays a named pipe" || notok "and stays a named pipe"
+
+# VROC_SANDBOX resolves paths: a link on the way must not lead out
+mkdir -p box/sub outside
+ln -s "$TMP/outside" box/out
+ln -s sub box/in
+ln -s "$TMP/outside/x.vroc" box/x.vroc
+ln -s "$TMP/outside/nothing.vroc" box/dangling.vroc
+echo "outside" > outside/x.vroc
+out=$(cd box && VROC_SANDBOX=1 "$VROC" -b -c 'sphere a; save out/x.vroc' 2>&1)
+has "VROC_SANDBOX: a save through a link to a folder outside is refused" "$out" \
+    "error: save: 'out/x.vroc' leads outside the current folder through a link, and VROC_SANDBOX allows writing only below it"
+out=$(cd box && VROC_SANDBOX=1 "$VROC" -b -c 'sphere a; save x.vroc' 2>&1)
+has "and one to a link that names a file outside" "$out" \
+    "error: save: 'x.vroc' leads outside the current folder through a link, and VROC_SANDBOX allows writing only below it"
+out=$(cd box && VROC_SANDBOX=1 "$VROC" -b -c 'output = out' 2>&1)
+has "and an output folder that is such a link" "$out" \
+    "error: output: 'out' leads outside the current folder through a link, and VROC_SANDBOX allows writing only below it"
+(cd box && VROC_SANDBOX=1 "$VROC" -b -q -c 'sphere a; save dangling.vroc')
+[ -f box/dangling.vroc ] && [ ! -L box/dangling.vroc ] && ok "a link to nothing is replaced by the file, not followed" ||
+    notok "a link to nothing is replaced by the file, not followed" "$(ls -l box)"
+[ "$(ls -A outside)" = x.vroc ] && [ "$(cat outside/x.vroc)" = outside ] && ok "nothing was written outside" ||
+    notok "nothing was written outside" "$(ls -A outside)"
+(cd box && VROC_SANDBOX=1 "$VROC" -b -q -c 'sphere a; save in/y.vroc')
+[ -f box/sub/y.vroc ] && ok "a link that stays inside is followed" || notok "a link that stays inside is followed" "$(ls -lR box)"
+
+# ---- movies: ffmpeg's failures are seen, and the old movie kept ----
+if command -v ffmpeg >/dev/null 2>&1 && command -v ffprobe >/dev/null 2>&1; then
+    real=$(command -v ffmpeg)
+    mkdir -p fake/stall fake/nospace
+    # an ffmpeg that never reads its input (nor works)
+    printf '#!/bin/sh\nexec sleep 1000\n' > fake/stall/ffmpeg
+    # one that encodes, but whose mux finds the disk full: it leaves a broken file
+    # and says why on its standard error, as ffmpeg does
+    cat > fake/nospace/ffmpeg <<FAKE
+#!/bin/sh
+case " \$* " in *" -map "*)
+    for a; do out=\$a; done
+    printf 'half a movie' > "\$out"
+    echo "[mp4 @ 0x5555] av_interleaved_write_frame(): No space left on device" >&2
+    exit 1 ;;
+esac
+exec "$real" "\$@"
+FAKE
+    chmod +x fake/stall/ffmpeg fake/nospace/ffmpeg
+    "$VROC" -b -q -c 'sphere a; translate = (0, 3, 0); image_size = (16, 16); movie = old.mp4; run 3'
+    cp old.mp4 old-before.mp4
+    out=$(PATH="$TMP/fake/stall:$PATH" VROC_TIMEOUT=1 timeout 60 "$VROC" -b -c 'sphere a; translate = (0, 3, 0); image_size = (160, 120); movie = old.mp4; run 20' 2>&1); status=$?
+    has "an ffmpeg that never reads times out with an error" "$out" \
+        "error: movie: ffmpeg took no frame and did no work for 1 s: it is stopped (VROC_TIMEOUT sets how long vroc waits); movie is now off, time stopped"
+    is "and the batch run exits 1" "$status" 1
+    same "and the old movie is whole" old-before.mp4 old.mp4
+    noparts "and no part file is left"
+    pgrep -f "sleep 1000" >/dev/null && notok "and the stalled ffmpeg is stopped" "$(pgrep -af 'sleep 1000')" ||
+        ok "and the stalled ffmpeg is stopped"
+    out=$(PATH="$TMP/fake/nospace:$PATH" "$VROC" -b -c 'sphere a; translate = (0, 3, 0); image_size = (16, 16); soundtrack = s.wav; movie = old.mp4; run 5' 2>&1); status=$?
+    has "a movie whose sound cannot be muxed in (a full disk) is reported as failed" "$out" \
+        "error: movie: cannot write 'old.mp4': No space left on device"
+    has "and says the old file is kept" "$out" "error: movie: 'old.mp4' is not written, and what was there is kept"
+    is "and the batch run exits 1" "$status" 1
+    same "and the old movie is whole" old-before.mp4 old.mp4
+    noparts "and no part file (the video, the sound, the muxed file) is left"
+    [ -f s.wav ] && ok "the soundtrack itself is written" || notok "the soundtrack itself is written" "$(ls -A)"
+    # a time_step grown from 1e-6 to 1000 wants 1e9 pictures of one frame
+    out=$("$VROC" -b -c 'sphere a; image_size = (16, 16); time_step = 1e-6; movie = rep.mp4; step; time_step = 1000; step; movie = off' 2>&1)
+    has "a frame that wants 1e9 pictures gets 1000, and the movie says so" "$out" \
+        "warning: movie: a frame of time_step = 1000 s would be 1000000000 pictures at 1000000 a second; it gets 1000, and the movie skips the rest (its sound goes on, out of step from there)"
+    frames() { ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 "$1"; }
+    is "the movie holds the first frame and the 1000" "$(frames rep.mp4)" 1001
+    out=$("$VROC" -b -c 'sphere a; image_size = (16, 16); time_step = 0.001; movie = rep2.mp4; step; time_step = 1; step; movie = off' 2>&1)
+    printf '%s' "$out" | grep -q warning && notok "1000 pictures of a frame, just inside, are no news" "$out" ||
+        ok "1000 pictures of a frame, just inside, are no news"
+    is "and all are in the movie" "$(frames rep2.mp4)" 1001
+    noparts "no part file is left"
+else
+    notok "ffmpeg and ffprobe are installed (make deps installs them)"
+fi
 exit 0

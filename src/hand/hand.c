@@ -416,21 +416,19 @@ static void log_row(hand *h, bool always)
 
 int hand_log_open(hand *h, const char *path, char *err, size_t errlen)
 {
-    if (outfile_allowed(path, err, errlen) != 0) return -1;
-    FILE *f = fopen(path, "w");
-    if (!f) {
-        snprintf(err, errlen, "cannot write '%s': %s", path, strerror(errno));
-        return -1;
-    }
-    /* the header and the hand now, checked before the old log is let go */
+    outfile o;
+    if (outfile_begin(&o, path, OUTFILE_STREAM, err, errlen) != 0) return -1;
+    /* the header and the hand now, checked (and the file put in its place) before
+     * the old log is let go */
     tracker_row r = {0, h->p, h->q, h->set.trigger, h->button};
-    int rc = fprintf(f, "%s\n", TRACKER_HEADER) < 0 || tracker_write_row(f, &r) < 0
+    int rc = fprintf(o.f, "%s\n", TRACKER_HEADER) < 0 || tracker_write_row(o.f, &r) < 0
                  ? outfile_failed(path, errno, err, errlen)
-                 : outfile_flush(f, path, err, errlen);
+                 : outfile_place(&o, err, errlen);
     if (rc != 0) {
-        fclose(f);
+        outfile_abort(&o);
         return -1;
     }
+    FILE *f = o.f;
     rc = outfile_close(h->log, h->set.hand_log, err, errlen);
     h->log = f;
     h->log_start = h->pose_clock;

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fmt.h"
 #include "shell.h"
 #include "sound/sound.h"
 #include "view/movie.h"
@@ -15,6 +16,7 @@ struct media {
     double elapsed;     /* simulated seconds of the frames advanced since it was made */
     movie *mov;
     double mov_start;   /* elapsed time when the movie started */
+    long mov_skipped;   /* pictures the movie left out (MOVIE_MAX_COPIES, Ctrl-C) */
     sound_hit *hits;    /* the frame's collisions, as the engine hears them */
     long cap;
 };
@@ -89,7 +91,7 @@ static int media_movie_close(shell *sh, media *m, const stmt *st)
     const char *wav = NULL;
     int rc = 0;
     if (sound_track_path(m->snd) && movie_frames(mov) > 0) {
-        double t1 = m->mov_start + (double)movie_frames(mov) * movie_period(mov);
+        double t1 = m->mov_start + (double)(movie_frames(mov) + m->mov_skipped) * movie_period(mov);
         if (sound_flush(m->snd, m->elapsed, err, sizeof err) != 0) {
             sh_error(sh, st, "soundtrack: %s; soundtrack is now off", err);
             rc = -1;
@@ -97,36 +99,58 @@ static int media_movie_close(shell *sh, media *m, const stmt *st)
                                        sizeof err) == 0) {
             wav = movie_sound_path(mov);
         } else {
-            sh_error(sh, st, "movie: %s; '%s' is written without its sound", err,
-                     movie_path(mov));
+            sh_error(sh, st, "movie: %s", err);
             rc = -1;
         }
     }
-    if (movie_close(mov, wav, err, sizeof err) != 0) {
+    /* a movie is its video and its sound, or nothing: the old file stays whole */
+    char path[VIEW_PATH_MAX];
+    snprintf(path, sizeof path, "%s", movie_path(mov));
+    if (rc != 0) movie_abort(mov);
+    else if (movie_close(mov, wav, err, sizeof err) != 0) {
         sh_error(sh, st, "movie: %s", err);
         rc = -1;
     }
+    if (rc != 0) sh_error(sh, st, "movie: '%s' is not written, and what was there is kept", path);
     return rc;
 }
 
 /* The frame's view to the movie: as many copies as keep video time with simulated
- * time (none when time_step is shorter than the movie's frame). */
+ * time (none when time_step is shorter than the movie's frame), up to
+ * MOVIE_MAX_COPIES, and fewer when Ctrl-C comes: the pictures left out are
+ * skipped, so that later frames keep step (and one warning says so). */
 static cmd_status media_movie_frame(shell *sh, media *m, const stmt *st, double t1)
 {
-    long want = llround((t1 - m->mov_start) / movie_period(m->mov));
+    long want = llround((t1 - m->mov_start) / movie_period(m->mov)) - m->mov_skipped;
     long copies = want - movie_frames(m->mov);
     if (copies <= 0) return CMD_OK;
+    if (copies > MOVIE_MAX_COPIES) {
+        char a[32], b[32];
+        sh_warn(sh, st, "movie: a frame of time_step = %s s would be %ld pictures at %s a second; "
+                "it gets %d, and the movie skips the rest (its sound goes on, out of step from "
+                "there)", fmt_num(a, sh->w.set.time_step), copies,
+                fmt_num(b, 1 / movie_period(m->mov)), MOVIE_MAX_COPIES);
+        m->mov_skipped += copies - MOVIE_MAX_COPIES;
+        copies = MOVIE_MAX_COPIES;
+    }
     char err[2048];
     /* record has drawn this frame already, unless an eye the movie needs is missing */
     bool drawn = sh->view_set.record && view_pixels(sh->view, 0, NULL, NULL) &&
                  (!movie_needs_right(m->mov) || view_pixels(sh->view, 1, NULL, NULL));
-    if ((drawn || view_render(&sh->view, &sh->w, &sh->view_set, err, sizeof err) == 0) &&
-        movie_add(m->mov, sh->view, copies, err, sizeof err) == 0)
-        return CMD_OK;
+    bool ok = drawn || view_render(&sh->view, &sh->w, &sh->view_set, err, sizeof err) == 0;
+    /* in runs of a second's worth, so that Ctrl-C stops a long one */
+    long run = (long)fmax(1, 1 / movie_period(m->mov));
+    for (long done = 0; ok && done < copies; done += run) {
+        if (shell_interrupted) {
+            m->mov_skipped += copies - done;
+            break;
+        }
+        ok = movie_add(m->mov, sh->view, copies - done < run ? copies - done : run, err, sizeof err) == 0;
+    }
+    if (ok) return CMD_OK;
     /* the one rule for an output that fails (outfile.h); what finishing the
      * broken movie adds to it is no news */
-    char ignored[1024];
-    movie_close(m->mov, NULL, ignored, sizeof ignored);
+    movie_abort(m->mov);
     m->mov = NULL;
     return shell_output_failed(sh, st, "movie", err);
 }
@@ -211,6 +235,7 @@ cmd_status media_movie(shell *sh, const stmt *st, const char *path)
     int rc = m->mov ? media_movie_close(sh, m, st) : 0;
     m->mov = nm;
     m->mov_start = m->elapsed;
+    m->mov_skipped = 0;
     return rc == 0 ? CMD_OK : CMD_ERROR;
 }
 

@@ -14,24 +14,27 @@
 #include <strings.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <sys/mman.h>
 #include <time.h>
 #include <unistd.h>
+
+#include "shell/infile.h"
+#include "shell/outfile.h"
 
 extern char **environ;
 
 struct movie {
     pid_t pid;              /* the encoding ffmpeg */
-    int fd;                 /* the pipe to its standard input */
-    int log;                /* its messages (an unlinked file) */
+    int fd;                 /* the pipe to its standard input (non-blocking) */
+    int log;                /* its messages (a file in memory) */
     stereo_mode mode;
     int eye_w, eye_h;       /* one eye's pixels in the movie */
     int w, h;               /* the frame, even */
     double period;
     long frames;
-    bool existed;           /* the movie's file was there before */
     unsigned char *frame;   /* w x h RGB */
     char path[VIEW_PATH_MAX];
-    char part[VIEW_PATH_MAX + 16];  /* the video being encoded */
+    outfile video;          /* the video being encoded, beside the movie */
     char sound[VIEW_PATH_MAX + 32]; /* where the sound to mux goes */
 };
 
@@ -139,6 +142,14 @@ static int movie_failed(const movie *m, off_t from, const char *fallback, char *
     return -1;
 }
 
+/* The message of an ffmpeg that stopped working before it finished: -1. */
+static int movie_stalled(char *err, size_t errlen)
+{
+    snprintf(err, errlen, "ffmpeg did no work for %g s before it finished: it is stopped "
+             "(VROC_TIMEOUT sets how long vroc waits)", infile_timeout());
+    return -1;
+}
+
 /* How much ffmpeg has written to its log so far. */
 static off_t movie_log_size(const movie *m)
 {
@@ -146,15 +157,12 @@ static off_t movie_log_size(const movie *m)
     return fstat(m->log, &sb) == 0 ? sb.st_size : 0;
 }
 
-/* A file beside the movie for ffmpeg's messages, unlinked at once (so that,
- * like the movie's other files, it is only ever in the movie's folder), or -1. */
-static int movie_log_file(const char *path)
+/* A file in memory for ffmpeg's messages, or -1: not beside the movie, where a
+ * full disk would swallow the very message that says it is full.  (At -loglevel
+ * error ffmpeg writes a line or two, and the movie ends at its first.) */
+static int movie_log_file(void)
 {
-    char name[VIEW_PATH_MAX + 32];
-    movie_beside(name, sizeof name, path, ".vroc-part-", ".log");
-    int fd = open(name, O_RDWR | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
-    if (fd >= 0) unlink(name);
-    return fd;
+    return memfd_create("vroc-ffmpeg-log", MFD_CLOEXEC);
 }
 
 /* Runs ffmpeg with argv, its standard input from in (or /dev/null when < 0), its
@@ -178,14 +186,6 @@ static int movie_spawn(char *const argv[], int in, int log, pid_t *pid)
     return rc;
 }
 
-/* Waits for pid.  Returns its exit status, or -1 when it did not exit by itself. */
-static int movie_wait(pid_t pid)
-{
-    int st;
-    while (waitpid(pid, &st, 0) < 0)
-        if (errno != EINTR) return -1;
-    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-}
 
 /* The frame rate 1 / period as a fraction ffmpeg reads exactly when it is one with
  * a small denominator (10, 30000/1001), else to a millionth of a second. */
@@ -205,9 +205,9 @@ static void movie_rate(double period, char *out, size_t len)
 int movie_open(movie **mp, const char *path, const view_settings *vs, double period, char *err,
                size_t errlen)
 {
+    /* (what the path is, first: it is made beside it, then put in its place) */
     struct stat sb;
-    bool existed = stat(path, &sb) == 0;
-    if (existed && !S_ISREG(sb.st_mode)) { /* the movie is made beside it, then renamed */
+    if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode)) {
         snprintf(err, errlen, "cannot write '%s': not a regular file (a movie is made beside "
                  "it, then put in its place)", path);
         return -1;
@@ -226,12 +226,6 @@ int movie_open(movie **mp, const char *path, const view_settings *vs, double per
         snprintf(err, errlen, "the path '%.40s...' is too long", path);
         return -1;
     }
-    int probe = open(path, O_WRONLY | O_CREAT | O_CLOEXEC, 0666);
-    if (probe < 0) {
-        snprintf(err, errlen, "cannot write '%s': %s", path, strerror(errno));
-        return -1;
-    }
-    close(probe);
     movie *m = calloc(1, sizeof *m);
     if (m) {
         m->mode = vs->stereo;
@@ -242,14 +236,20 @@ int movie_open(movie **mp, const char *path, const view_settings *vs, double per
     }
     if (!m || !m->frame) {
         if (m) free(m);
-        if (!existed) unlink(path);
         snprintf(err, errlen, "out of memory");
         return -1;
     }
+    /* the video is encoded beside the movie (ffmpeg writes it by name), which it
+     * replaces only once finished: a path that is a device or a pipe is refused */
+    if (outfile_begin(&m->video, path, OUTFILE_REGULAR, err, errlen) != 0) {
+        free(m->frame);
+        free(m);
+        return -1;
+    }
+    close(m->video.fd);
+    m->video.fd = -1;
     m->period = period;
-    m->existed = existed;
     snprintf(m->path, sizeof m->path, "%s", path);
-    movie_beside(m->part, sizeof m->part, path, ".vroc-part-", "");
     movie_beside(m->sound, sizeof m->sound, path, ".vroc-part-", ".wav");
 
     char size[32], rate[48];
@@ -270,11 +270,11 @@ int movie_open(movie **mp, const char *path, const view_settings *vs, double per
      * known while time runs, not only when the movie closes */
     argv[a++] = "-flush_packets";
     argv[a++] = "1";
-    argv[a++] = m->part;
+    argv[a++] = outfile_now(&m->video);
     argv[a] = NULL;
 
     int pipefd[2] = {-1, -1};
-    m->log = movie_log_file(path);
+    m->log = movie_log_file();
     int rc = m->log < 0 ? errno : pipe2(pipefd, O_CLOEXEC) != 0 ? errno : 0;
     if (rc == 0) rc = movie_spawn((char *const *)argv, pipefd[0], m->log, &m->pid);
     if (pipefd[0] >= 0) close(pipefd[0]);
@@ -286,11 +286,13 @@ int movie_open(movie **mp, const char *path, const view_settings *vs, double per
             snprintf(err, errlen, "cannot run ffmpeg: %s", strerror(rc));
         if (pipefd[1] >= 0) close(pipefd[1]);
         if (m->log >= 0) close(m->log);
-        if (!existed) unlink(path);
+        outfile_abort(&m->video);
         free(m->frame);
         free(m);
         return -1;
     }
+    /* written without blocking: an ffmpeg that stalls is seen (outfile_write_all) */
+    fcntl(pipefd[1], F_SETFL, fcntl(pipefd[1], F_GETFL) | O_NONBLOCK);
     m->fd = pipefd[1];
     *mp = m;
     return 0;
@@ -329,34 +331,6 @@ static void movie_compose(movie *m, const unsigned char *eye[2], int sw, int sh)
     }
 }
 
-/* Writes all of buf to the pipe with SIGPIPE held back: a stopped ffmpeg gives
- * EPIPE, not the end of vroc. */
-static int movie_write(int fd, const unsigned char *buf, size_t n)
-{
-    sigset_t pipe_set, old;
-    sigemptyset(&pipe_set);
-    sigaddset(&pipe_set, SIGPIPE);
-    sigprocmask(SIG_BLOCK, &pipe_set, &old);
-    int rc = 0;
-    while (n > 0) {
-        ssize_t w = write(fd, buf, n);
-        if (w < 0 && errno == EINTR) continue;
-        if (w <= 0) {
-            rc = errno ? errno : EIO;
-            break;
-        }
-        buf += w;
-        n -= (size_t)w;
-    }
-    if (rc == EPIPE) { /* take the SIGPIPE raised, so it is not delivered later */
-        struct timespec zero = {0, 0};
-        while (sigtimedwait(&pipe_set, NULL, &zero) > 0) {
-        }
-    }
-    sigprocmask(SIG_SETMASK, &old, NULL);
-    return rc;
-}
-
 int movie_add(movie *m, const view *v, long copies, char *err, size_t errlen)
 {
     if (copies <= 0) return 0;
@@ -370,7 +344,12 @@ int movie_add(movie *m, const view *v, long copies, char *err, size_t errlen)
     movie_compose(m, eye, sw, sh);
     size_t bytes = (size_t)m->w * (size_t)m->h * 3;
     for (long i = 0; i < copies; i++) {
-        int rc = movie_write(m->fd, m->frame, bytes);
+        int rc = outfile_write_all(m->fd, m->frame, bytes, m->pid);
+        if (rc == ETIMEDOUT) {
+            snprintf(err, errlen, "ffmpeg took no frame and did no work for %g s: it is stopped "
+                     "(VROC_TIMEOUT sets how long vroc waits)", infile_timeout());
+            return -1;
+        }
         if (rc != 0) return movie_failed(m, 0, strerror(rc), err, errlen);
         m->frames++;
     }
@@ -380,67 +359,82 @@ int movie_add(movie *m, const view *v, long copies, char *err, size_t errlen)
     return 0;
 }
 
-/* Muxes m->part and the WAV file wav into m->path.  Returns 0, or -1 with a
- * message. */
+/* Muxes the video and the WAV file wav into a file beside the movie, which then
+ * replaces it.  Returns 0, or -1 with a message (nothing is left of the muxed
+ * file). */
 static int movie_mux(movie *m, const char *wav, char *err, size_t errlen)
 {
+    outfile muxed;
+    if (outfile_begin(&muxed, m->path, OUTFILE_REGULAR, err, errlen) != 0) return -1;
+    close(muxed.fd);
+    muxed.fd = -1;
     const char *ext = movie_ext(m->path);
     const char *argv[32];
     int a = 0;
     const char *head[] = {"ffmpeg", "-nostdin", "-hide_banner", "-loglevel", "error", "-y",
-                          "-i", m->part, "-i", wav, "-map", "0:v:0", "-map", "1:a:0",
+                          "-i", outfile_now(&m->video), "-i", wav, "-map", "0:v:0", "-map", "1:a:0",
                           "-c:v", "copy"};
     for (size_t i = 0; i < sizeof head / sizeof head[0]; i++) argv[a++] = head[i];
     if (ext && ext_is(ext, "mp4 m4v mov")) {
         const char *aac[] = {"-c:a", "aac", "-b:a", "192k", "-movflags", "+faststart"};
         for (size_t i = 0; i < sizeof aac / sizeof aac[0]; i++) argv[a++] = aac[i];
     }
-    argv[a++] = m->path;
+    argv[a++] = outfile_now(&muxed);
     argv[a] = NULL;
     off_t from = movie_log_size(m);
     pid_t pid;
     int rc = movie_spawn((char *const *)argv, -1, m->log, &pid);
     if (rc != 0) {
+        outfile_abort(&muxed);
         snprintf(err, errlen, "cannot run ffmpeg: %s", strerror(rc));
         return -1;
     }
     /* (ffmpeg may exit with 0 after a write that failed: what it logged counts) */
-    if (movie_wait(pid) != 0 || movie_log_size(m) > from)
+    int st = outfile_wait(pid);
+    if (st != 0 || movie_log_size(m) > from) {
+        outfile_abort(&muxed);
+        if (st == -2) return movie_stalled(err, errlen);
         return movie_failed(m, from, "it failed", err, errlen);
-    return 0;
+    }
+    return outfile_finish(&muxed, err, errlen);
 }
 
 int movie_close(movie *m, const char *wav, char *err, size_t errlen)
 {
     if (!m) return 0;
     close(m->fd);
-    int st = movie_wait(m->pid);
+    int st = outfile_wait(m->pid);
     int rc = 0;
     if (m->frames == 0) {
-        unlink(m->part);
-        if (!m->existed) unlink(m->path);
+        outfile_abort(&m->video);
     } else if (st != 0 || movie_log_size(m) > 0) { /* (see movie_mux) */
-        movie_failed(m, 0, "it failed", err, errlen);
-        unlink(m->part);
-        if (!m->existed) unlink(m->path);
+        if (st == -2) movie_stalled(err, errlen);
+        else movie_failed(m, 0, "it failed", err, errlen);
+        outfile_abort(&m->video);
         rc = -1;
-    } else if (wav && movie_mux(m, wav, err, errlen) == 0) {
-        unlink(m->part);
+    } else if (wav) { /* the movie is its video and its sound, or nothing */
+        rc = movie_mux(m, wav, err, errlen);
+        outfile_abort(&m->video);
     } else {
-        if (wav) { /* the video without its sound is better than nothing */
-            size_t k = strlen(err);
-            snprintf(err + k, errlen - k, "; it is written without its sound");
-            rc = -1;
-        }
-        if (rename(m->part, m->path) != 0) {
-            snprintf(err, errlen, "cannot write '%s': %s", m->path, strerror(errno));
-            unlink(m->part);
-            rc = -1;
-        }
+        rc = outfile_finish(&m->video, err, errlen);
     }
-    if (wav) unlink(wav);
+    unlink(m->sound); /* (made or not) */
     close(m->log);
     free(m->frame);
     free(m);
     return rc;
+}
+
+void movie_abort(movie *m)
+{
+    if (!m) return;
+    close(m->fd);
+    kill(-m->pid, SIGKILL); /* its process group: ffmpeg and what it runs */
+    while (waitpid(m->pid, NULL, 0) < 0 && errno == EINTR) {
+    }
+    outfile_abort(&m->video);
+    unlink(m->sound);
+    close(m->log);
+    free(m->frame);
+    free(m);
 }
