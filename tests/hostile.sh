@@ -256,7 +256,7 @@ esac
 exec "$real" "\$@"
 FAKE
     chmod +x fake/stall/ffmpeg fake/nospace/ffmpeg
-    "$VROC" -b -q -c 'sphere a; translate = (0, 3, 0); image_size = (16, 16); movie = old.mp4; run 3'
+    "$VROC" -b -q -c 'sphere a; translate = (0, 3, 0); image_size = (16, 16); movie = old.mp4; run 3' 2>/dev/null
     cp old.mp4 old-before.mp4
     out=$(PATH="$TMP/fake/stall:$PATH" VROC_TIMEOUT=1 timeout 60 "$VROC" -b -c 'sphere a; translate = (0, 3, 0); image_size = (160, 120); movie = old.mp4; run 20' 2>&1); status=$?
     has "an ffmpeg that never reads times out with an error" "$out" \
@@ -288,4 +288,60 @@ FAKE
 else
     notok "ffmpeg and ffprobe are installed (make deps installs them)"
 fi
+
+# ---- Ctrl-C stops long loops ----
+# a batch run: it stops with an error, its movie finished with the frames made
+"$VROC" -b -c 'sphere a; translate = (0, 3, 0); image_size = (16, 16); movie = int.mp4; run 1000000000' > int.out 2>&1 &
+pid=$!
+sleep 2
+kill -INT $pid
+wait $pid
+status=$?
+is "kill -INT stops a batch run of 1e9 frames with status 1" "$status" 1
+grep -q "^error: interrupted at time = " int.out && ok "saying where it stopped" || notok "saying where it stopped" "$(head -3 int.out)"
+n=$(ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 int.mp4 2>&1)
+[ "${n:-0}" -gt 0 ] 2>/dev/null && ok "and its movie is finished ($n frames)" || notok "and its movie is finished" "$n"
+noparts "and no part file is left"
+"$VROC" -b -c 'random_box = (10000, 10000, 10000); random 1000000; list' > int.out 2>&1 &
+pid=$!
+sleep 1
+kill -INT $pid
+wait $pid
+is "kill -INT stops random 1000000" "$?" 1
+grep -q "^error: random: interrupted after [0-9]* of the 1000000 objects, so none was added$" int.out &&
+    ok "and says none was added" || notok "and says none was added" "$(head -3 int.out)"
+# at the prompt: a frame's thousand pictures stop, and the prompt comes back
+if tmux_ready; then
+    SES=vrochostile$$
+    tmux -f /dev/null new-session -d -s "$SES" -x 200 -y 40 \
+        "cd '$TMP' && HOME='$TMP' ASAN_OPTIONS='$ASAN_OPTIONS' '$VROC'; echo EXIT=\$?; sleep 30"
+    check_screen "the prompt" "vroc>"
+    type_ "sphere a; translate = (0, 3, 0); time_step = 1e-6; movie = prompt.mp4; step; time_step = 1000; step; print a" Enter
+    sleep 1
+    type_ C-c
+    check_screen "Ctrl-C stops a frame's thousand pictures at the prompt" "interrupted at time = 1000.000001"
+    type_ "movie = off; list" Enter
+    check_screen "and the prompt goes on" "a                    sphere"
+    type_ "random_box = (10000, 10000, 10000); random 1000000" Enter
+    sleep 1
+    type_ C-c
+    check_screen "Ctrl-C stops random 1000000 at the prompt" "error: random: interrupted after"
+    type_ "quit" Enter
+    check_screen "and vroc goes on to quit with status 0" "EXIT=0"
+    tmux kill-session -t "$SES" 2>/dev/null
+fi
+
+# ---- true messages ----
+if $san; then
+    ok "out of memory says out of memory # SKIP the sanitizers take no memory limit"
+else
+    out=$(bounded 300000 "$VROC" -b -c 'random_box = (10000, 10000, 10000); random 1000000' 2>&1)
+    case "$out" in *"out of memory"*) ok "random 1000000 out of memory says out of memory" ;;
+        *) notok "random 1000000 out of memory says out of memory" "$out" ;; esac
+fi
+for o in --help --version; do
+    out=$("$VROC" $o 2>&1 >/dev/full); status=$?
+    is "vroc $o > /dev/full fails, saying why" "$status:$out" "1:error: cannot write the standard output: No space left on device"
+done
+is "vroc --version writes its version" "$("$VROC" --version)" "vroc 0.1.0"
 exit 0

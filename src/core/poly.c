@@ -354,6 +354,8 @@ static void qrun_message(qrun *r, const char *what, char *err, size_t errlen)
 {
     if (r->exitcode == qh_ERRsingular)
         set_err(err, errlen, "%s: points are coplanar or collinear (no volume)", what);
+    else if (r->exitcode == qh_ERRmem)
+        set_err(err, errlen, "%s: out of memory", what);
     else
         set_err(err, errlen,
                 "%s: the points are too close together for their size to make a solid",

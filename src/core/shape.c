@@ -293,6 +293,10 @@ static int build_cube(shape *s, char *err, size_t errlen)
                  "around it");
     else
         s->hull = poly_box(h, why, sizeof why); /* (its hull is known: no qhull run) */
+    if (!s->hull && strstr(why, "out of memory")) {
+        set_err(err, errlen, "cube: out of memory");
+        return -1;
+    }
     if (!s->hull) {
         set_err(err, errlen, "cube: size (%.6g, %.6g, %.6g) cannot be built: %s", h.x, h.y, h.z,
                 strip_hull(why));
@@ -322,6 +326,10 @@ static int build_superquadric(shape *s, char *err, size_t errlen)
     }
     char why[200];
     s->hull = poly_hull(s->draw.pos, s->draw.nv, why, sizeof why);
+    if (!s->hull && strstr(why, "out of memory")) { /* not the shape's fault */
+        set_err(err, errlen, "superquadric: out of memory");
+        return -1;
+    }
     if (!s->hull) {
         set_err(err, errlen,
                 "superquadric: a1 %.6g, a2 %.6g, a3 %.6g with exp1 %.6g, exp2 %.6g cannot be "

@@ -81,6 +81,7 @@ int infile_read(infile *in, const char *path, size_t max_bytes, char *why, size_
     double limit = infile_timeout(), quiet_since = now_s();
     for (;;) {
         if (shell_interrupted) {
+            shell_interrupted = 0;
             snprintf(why, whylen, "interrupted");
             return read_fails(in, fd);
         }

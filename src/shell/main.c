@@ -31,6 +31,19 @@ static void usage(FILE *f)
             "At the prompt, help lists the commands; man vroc tells all.\n");
 }
 
+/* status, or 1 after a message when what was written to the standard output did
+ * not all arrive (a write that fails is never silent: --help > /dev/full). */
+static int stdout_checked(int status)
+{
+    errno = 0;
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fprintf(stderr, "error: cannot write the standard output: %s\n",
+                strerror(errno ? errno : EIO));
+        return 1;
+    }
+    return status;
+}
+
 static bool is_dir(const char *p)
 {
     struct stat sb;
@@ -73,16 +86,12 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (options && strcmp(a, "--") == 0) options = false;
-        else if (options && strcmp(a, "--help") == 0) {
-            usage(stdout);
+        else if (options && (strcmp(a, "--help") == 0 || strcmp(a, "--version") == 0)) {
+            if (a[2] == 'h') usage(stdout);
+            else printf("vroc %s\n", VROC_VERSION);
             free(cmds);
             free(files);
-            return 0;
-        } else if (options && strcmp(a, "--version") == 0) {
-            printf("vroc %s\n", VROC_VERSION);
-            free(cmds);
-            free(files);
-            return 0;
+            return stdout_checked(0);
         } else if (options && a[0] == '-' && a[1] != '\0') {
             for (const char *p = a + 1; *p; p++) {
                 if (*p == 'b') batch = true;
@@ -149,6 +158,7 @@ int main(int argc, char **argv)
         sh.startup.view = sh.view_set;
     }
 
+    shell_catch_sigint(); /* a long run stops at Ctrl-C, its outputs finished */
     int status = 0;
     bool quit = false;
     for (int i = 0; i < nfiles && !quit; i++) {
@@ -180,11 +190,5 @@ int main(int argc, char **argv)
     shell_free(&sh);
     free(cmds);
     free(files);
-    errno = 0;
-    if (fflush(stdout) != 0 || ferror(stdout)) {
-        fprintf(stderr, "error: cannot write the standard output: %s\n",
-                strerror(errno ? errno : EIO));
-        status = 1;
-    }
-    return status;
+    return stdout_checked(status);
 }

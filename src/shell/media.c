@@ -138,8 +138,8 @@ static cmd_status media_movie_frame(shell *sh, media *m, const stmt *st, double 
     bool drawn = sh->view_set.record && view_pixels(sh->view, 0, NULL, NULL) &&
                  (!movie_needs_right(m->mov) || view_pixels(sh->view, 1, NULL, NULL));
     bool ok = drawn || view_render(&sh->view, &sh->w, &sh->view_set, err, sizeof err) == 0;
-    /* in runs of a second's worth, so that Ctrl-C stops a long one */
-    long run = (long)fmax(1, 1 / movie_period(m->mov));
+    /* in runs of ten, so that Ctrl-C stops a long one */
+    const long run = 10;
     for (long done = 0; ok && done < copies; done += run) {
         if (shell_interrupted) {
             m->mov_skipped += copies - done;

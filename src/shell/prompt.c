@@ -32,13 +32,19 @@ static bool g_done;     /* quit or end of input */
 static double g_wall;   /* the wall clock up to which the hand's clock ran */
 static char g_history[4096];
 
+/* Ctrl-C sets the flag; a second one before anything took the first (a loop
+ * that does not look) ends vroc as Ctrl-C ends a program. */
 static void on_sigint(int sig)
 {
-    (void)sig;
+    if (shell_interrupted) {
+        signal(sig, SIG_DFL);
+        raise(sig);
+        return;
+    }
     shell_interrupted = 1;
 }
 
-static void install_sigint(void)
+void shell_catch_sigint(void)
 {
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
@@ -90,6 +96,7 @@ static void on_line(char *line)
         g_done = true;
         rl_callback_handler_remove();
     }
+    shell_interrupted = 0; /* a Ctrl-C the statement did not look for is spent */
     free(line);
     g_sh->at_prompt = !g_done;
 }
@@ -130,7 +137,7 @@ static int loop_readline(shell *sh)
     complete_install(sh);
     rl_basic_word_break_characters = " \t\n\"(),=;#";
     rl_catch_signals = 0;
-    install_sigint();
+    shell_catch_sigint();
     rl_callback_handler_install("vroc> ", on_line);
     sh->at_prompt = true;
     double next = 0;
@@ -187,7 +194,7 @@ static int loop_lines(shell *sh, FILE *in)
     char *line = NULL;
     size_t cap = 0;
     int lineno = 0, status = 0;
-    install_sigint();
+    shell_catch_sigint();
     while (getline(&line, &cap, in) >= 0) {
         lineno++;
         cmd_status r = shell_run_text_at(sh, line, "<stdin>", lineno);

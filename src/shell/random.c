@@ -204,6 +204,11 @@ cmd_status cmd_random(shell *sh, const stmt *st)
     }
     for (int i = 0; i < w->n; i++) grid_add(&g, body_com(w->bodies[i]), w->bodies[i]->shape.r_out);
     for (; made < n; made++) {
+        if (shell_interrupted) {
+            shell_interrupted = 0;
+            sh_error(sh, st, "random: interrupted after %ld of the %ld objects, so none was added", made, n);
+            goto done;
+        }
         body *b = random_body(sh, &id, err, sizeof err);
         if (!b) {
             sh_error(sh, st, "random: %s", err);

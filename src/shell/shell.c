@@ -407,6 +407,21 @@ static void rest_beyond_limits(shell *sh, const stmt *st)
     }
 }
 
+/* Ctrl-C came while time advanced: at the prompt time stops there (CMD_OK); a
+ * batch run stops there, as at an error. */
+static cmd_status interrupted(shell *sh, const stmt *st)
+{
+    shell_interrupted = 0;
+    char a[32];
+    fmt_num(a, sh->w.time);
+    if (!sh->stop_on_error) {
+        sh_info(sh, "interrupted at time = %s", a);
+        return CMD_OK;
+    }
+    sh_error(sh, st, "interrupted at time = %s", a);
+    return CMD_ERROR;
+}
+
 cmd_status shell_advance(shell *sh, const stmt *st, long n)
 {
     char err[1024];
@@ -417,9 +432,7 @@ cmd_status shell_advance(shell *sh, const stmt *st, long n)
     sh->hand_failed = false;
     for (long k = 0; k < n && r == CMD_OK; k++) {
         if (shell_interrupted) {
-            shell_interrupted = 0;
-            char a[32];
-            sh_info(sh, "interrupted at time = %s", fmt_num(a, sh->w.time));
+            r = interrupted(sh, st);
             break;
         }
         if (clock_full(sh, st)) {
@@ -441,6 +454,8 @@ cmd_status shell_advance(shell *sh, const stmt *st, long n)
         if (r == CMD_OK && (shell_after_hand(sh) != CMD_OK || (sh->hand_failed && sh->stop_on_error)))
             r = CMD_ERROR;
     }
+    /* (a Ctrl-C the last frame's movie took) */
+    if (r == CMD_OK && shell_interrupted) r = interrupted(sh, st);
     shell_tell_cut(sh, st);
     sh->wall_time += shell_clock() - t0;
     return r;

@@ -76,8 +76,14 @@ typedef struct shell {
     bool fly_told;         /* flying was stopped at the limits, and said so */
 } shell;
 
-/* Set by the SIGINT handler; long operations (run, start) stop when it is set. */
+/* Set by the SIGINT handler; long operations (run, start, random, reading a pipe,
+ * a frame's many pictures in a movie) stop when it is set, and what acts on it
+ * clears it. */
 extern volatile sig_atomic_t shell_interrupted;
+
+/* Ctrl-C (SIGINT) sets shell_interrupted from now on, in batch runs too (main);
+ * a second Ctrl-C before the first was taken ends vroc at once. */
+void shell_catch_sigint(void);
 
 void shell_init(shell *sh, FILE *out, FILE *err);
 void shell_free(shell *sh);
