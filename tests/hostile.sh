@@ -111,6 +111,12 @@ padded 1025 > line1025.csv
 expect "a tracker line of 1024 bytes is taken" 0 "tracker = " "$VROC" -b -c 'tracker = line1024.csv; show'
 expect "one of 1025 bytes is refused" 1 "line1025.csv:2: a line longer than 1024 bytes" \
     "$VROC" -b -c 'tracker = line1025.csv'
+out=$(head -c 100000000 /dev/zero | bounded 600000 "$VROC" 2>&1); status=$?
+is "statements piped from /dev/zero stop at the line cap, in bounded memory" "$status:$out" \
+    "1:<stdin>:1: error: a line longer than 1048576 bytes"
+out=$(printf 'sphere a\nli\000st\n' | "$VROC" 2>&1); status=$?
+is "a NUL byte in piped statements is an error, not a line cut short" "$status:$out" \
+    "1:<stdin>:2: error: a NUL byte (binary input?)"
 mkfifo fifo
 expect "read of a named pipe no program writes to times out" 1 \
     "cannot read 'fifo': nothing came through it for 1 s (a pipe no program writes to?)" \

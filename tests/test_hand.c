@@ -191,6 +191,7 @@ static void the_panel_finds_every_control_in_any_pose(void **state)
 typedef struct {
     tracker_row rows[8];
     int n, bad;
+    char last[512]; /* the last bad line's message */
 } got;
 
 static void got_row(void *ctx, const tracker_row *r)
@@ -203,7 +204,7 @@ static void got_bad(void *ctx, const char *msg)
 {
     got *g = ctx;
     g->bad++;
-    assert_non_null(strstr(msg, ":3: "));
+    snprintf(g->last, sizeof g->last, "%s", msg);
 }
 
 static void a_fifo_feeds_rows_as_they_come(void **state)
@@ -226,12 +227,21 @@ static void a_fifo_feeds_rows_as_they_come(void **state)
     assert_int_equal(feed_read(&f, got_row, got_bad, &g, err, sizeof err), FEED_WAITING);
     assert_int_equal(g.n, 1); /* the unfinished line waits for its end */
     assert_int_equal(g.bad, 1);
+    assert_non_null(strstr(g.last, ":3: "));
     assert_near(g.rows[0].p.y, 2, 0);
     const char *rest = ",4,1,0,0,0,0,1\n";
     assert_int_equal(write(wfd, rest, strlen(rest)), (ssize_t)strlen(rest));
     assert_int_equal(feed_read(&f, got_row, got_bad, &g, err, sizeof err), FEED_WAITING);
     assert_int_equal(g.n, 2);
     assert_true(!g.rows[1].trigger && g.rows[1].button && g.rows[1].p.z == 4);
+    /* the limits a file has: a row 1e-7 s after the last, one 2e6 m away, left out */
+    const char *more = "0.6000001,1,2,4,1,0,0,0,0,0\n0.7,2e6,2,4,1,0,0,0,0,0\n0.6000011,1,2,5,1,0,0,0,0,0\n";
+    assert_int_equal(write(wfd, more, strlen(more)), (ssize_t)strlen(more));
+    assert_int_equal(feed_read(&f, got_row, got_bad, &g, err, sizeof err), FEED_WAITING);
+    assert_int_equal(g.bad, 3);
+    assert_non_null(strstr(g.last, "hand.fifo:6: x must be between -1e+06 and 1e+06 (got 2e+06)"));
+    assert_int_equal(g.n, 3); /* 1e-6 s after the last row taken: taken */
+    assert_near(g.rows[2].p.z, 5, 0);
     close(wfd); /* the writer goes away */
     assert_int_equal(feed_read(&f, got_row, got_bad, &g, err, sizeof err), FEED_ENDED);
     feed_close(&f);

@@ -13,6 +13,10 @@
 #include <time.h>
 #include <unistd.h>
 
+/* (defined here, with the doors that watch it, so that they depend on no other
+ * file of the shell's) */
+volatile sig_atomic_t shell_interrupted;
+
 double infile_timeout(void)
 {
     const char *e = getenv("VROC_TIMEOUT");

@@ -46,8 +46,8 @@
 #define INFILE_TIMEOUT_DEFAULT 30.0
 
 /* Ctrl-C's flag (shell.h: the SIGINT handler sets it), which long reads and
- * waits watch: declared here too, so that the hand's and the sound's readers
- * need not see the shell. */
+ * waits watch: declared and defined here, so that the hand's and the sound's
+ * readers need not see the shell. */
 extern volatile sig_atomic_t shell_interrupted;
 
 /* A file read whole. */

@@ -189,15 +189,54 @@ static int loop_readline(shell *sh)
     return 0;
 }
 
+/* The next line of in into *line (room *cap), its newline removed: its length,
+ * -1 at the end of input, or -2 when it is longer than LANG_MAX_LINE (the rest of
+ * it is read and left out), so that a pipe of endless bytes (/dev/zero) cannot
+ * take all the memory. */
+static long next_line(FILE *in, char **line, size_t *cap)
+{
+    size_t n = 0;
+    bool long_line = false;
+    int c;
+    while ((c = getc(in)) != EOF && c != '\n') {
+        if (long_line || n >= (size_t)LANG_MAX_LINE) {
+            long_line = true;
+            continue;
+        }
+        if (n + 1 >= *cap) {
+            size_t nc = *cap ? 2 * *cap : 256;
+            char *nl = realloc(*line, nc);
+            if (!nl) return -2;
+            *line = nl;
+            *cap = nc;
+        }
+        (*line)[n++] = (char)c;
+    }
+    if (c == EOF && n == 0 && !long_line) return -1;
+    if (long_line) return -2;
+    if (!*line && !(*line = malloc(*cap = 1))) return -2;
+    (*line)[n] = '\0';
+    return (long)n;
+}
+
 static int loop_lines(shell *sh, FILE *in)
 {
     char *line = NULL;
     size_t cap = 0;
     int lineno = 0, status = 0;
+    long len;
     shell_catch_sigint();
-    while (getline(&line, &cap, in) >= 0) {
+    while ((len = next_line(in, &line, &cap)) != -1) {
         lineno++;
-        cmd_status r = shell_run_text_at(sh, line, "<stdin>", lineno);
+        cmd_status r;
+        if (len == -2 || memchr(line, '\0', (size_t)len)) {
+            stmt where = {.file = "<stdin>", .line = lineno};
+            if (len == -2) sh_error(sh, &where, "a line longer than %ld bytes", LANG_MAX_LINE);
+            else sh_error(sh, &where, "a NUL byte (binary input?)");
+            r = CMD_ERROR;
+        } else {
+            r = shell_run_text_at(sh, line, "<stdin>", lineno);
+        }
         if (r == CMD_QUIT) break;
         if (r == CMD_ERROR && sh->stop_on_error) {
             status = 1;

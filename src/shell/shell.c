@@ -23,8 +23,6 @@
 #include "fmt.h"
 #include "media.h"
 
-volatile sig_atomic_t shell_interrupted;
-
 shell_settings shell_settings_defaults(void)
 {
     shell_settings s;
