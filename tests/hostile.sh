@@ -296,23 +296,23 @@ else
 fi
 
 # ---- Ctrl-C stops long loops ----
+# interrupted SECONDS COMMANDS: vroc -b -c COMMANDS, sent SIGINT after SECONDS;
+# its exit status, its output in int.out
+interrupted() {
+    "$VROC" -b -c "$2" > int.out 2>&1 &
+    pid=$!
+    sleep "$1"
+    kill -INT $pid
+    wait $pid
+}
 # a batch run: it stops with an error, its movie finished with the frames made
-"$VROC" -b -c 'sphere a; translate = (0, 3, 0); image_size = (16, 16); movie = int.mp4; run 1000000000' > int.out 2>&1 &
-pid=$!
-sleep 2
-kill -INT $pid
-wait $pid
-status=$?
-is "kill -INT stops a batch run of 1e9 frames with status 1" "$status" 1
+interrupted 2 'sphere a; translate = (0, 3, 0); image_size = (16, 16); movie = int.mp4; run 1000000000'
+is "kill -INT stops a batch run of 1e9 frames with status 1" "$?" 1
 grep -q "^error: interrupted at time = " int.out && ok "saying where it stopped" || notok "saying where it stopped" "$(head -3 int.out)"
 n=$(ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 int.mp4 2>&1)
 [ "${n:-0}" -gt 0 ] 2>/dev/null && ok "and its movie is finished ($n frames)" || notok "and its movie is finished" "$n"
 noparts "and no part file is left"
-"$VROC" -b -c 'random_box = (10000, 10000, 10000); random 1000000; list' > int.out 2>&1 &
-pid=$!
-sleep 1
-kill -INT $pid
-wait $pid
+interrupted 1 'random_box = (10000, 10000, 10000); random 1000000; list'
 is "kill -INT stops random 1000000" "$?" 1
 grep -q "^error: random: interrupted after [0-9]* of the 1000000 objects, so none was added$" int.out &&
     ok "and says none was added" || notok "and says none was added" "$(head -3 int.out)"
