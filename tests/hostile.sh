@@ -290,6 +290,9 @@ FAKE
     printf '%s' "$out" | grep -q warning && notok "1000 pictures of a frame, just inside, are no news" "$out" ||
         ok "1000 pictures of a frame, just inside, are no news"
     is "and all are in the movie" "$(frames rep2.mp4)" 1001
+    "$VROC" -b -q -c 'movie = empty.mp4; movie = off; movie = empty2.mp4' 2>/dev/null
+    [ ! -e empty.mp4 ] && [ ! -e empty2.mp4 ] && ok "a movie of no frame leaves no file (not even of 0 bytes)" ||
+        notok "a movie of no frame leaves no file (not even of 0 bytes)" "$(ls -l empty*.mp4)"
     noparts "no part file is left"
 else
     notok "ffmpeg and ffprobe are installed (make deps installs them)"
