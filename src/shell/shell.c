@@ -370,7 +370,7 @@ static bool clock_full(shell *sh, const stmt *st)
         return true;
     }
     if ((double)w->frame + 1 > LIM_FRAMES_MAX || (double)w->base_frames + 1 > LIM_CLOCK_MAX) {
-        sh_error(sh, st, "time cannot run on: the frame count is at its limit");
+        sh_error(sh, st, "time cannot run past frame %ld: the limit of the frame count", w->frame);
         return true;
     }
     return false;
