@@ -7,17 +7,20 @@
 #                      and a movie of them with the collisions' sound
 #   make deps          install the missing Debian packages (apt-get, sudo when not root)
 #   make record-hashes record the scenes' trace hashes anew (after an intended change)
-#   make fuzz          an AFL++ campaign of FUZZ_TIME seconds (tools/fuzz.sh)
+#   make fuzz          AFL++ campaigns of FUZZ_TIME seconds each, of the language and
+#                      of the four mesh readers (FUZZ_TARGETS; tools/fuzz.sh)
 #   make install       binary, man page and scenes under $(DESTDIR)$(PREFIX)
 #   make clean         remove what make built
 #
 # The layers are libraries, each linked only with what it may use:
 #   build/libvroc-core.a   src/core/: the simulation (libc, libm and qhull only; its
 #                          objects see no header outside src/core/)
+#   build/libvroc-mesh.a   src/mesh/: the mesh file readers (libc and the core only)
 #   build/libvroc.a        src/shell/ (but main.c), src/view/, src/sound/ and src/hand/, on top of
-#                          the core
-# The core's unit tests link the core library alone, so a call from the core into
-# a higher layer fails to link.  Objects go to build/ (normal), build-san/
+#                          the core and the readers
+# The core's unit tests link the core library alone, and the readers' tests and
+# fuzz targets the readers and the core, so a call from a layer into a higher one
+# fails to link.  Objects go to build/ (normal), build-san/
 # (sanitizers) and build-val/ (validation: the schedule's and the polyhedra's
 # invariants checked after every internal step); headers are tracked with -MMD.
 
@@ -29,10 +32,11 @@ SCENEDIR = $(PREFIX)/share/vroc/scenes
 
 VERSION  = 0.1.0
 CORE_PKGS = qhull_r
-PKGS     = readline osmesa libpng qhull_r sndfile samplerate libpulse-simple libpulse
+PKGS     = readline osmesa libpng qhull_r sndfile samplerate libpulse-simple libpulse nettle
 # linked: all but OSMesa, which the views load with dlopen when they first draw
-# (src/view/gl_load.h), so that a run that draws nothing never maps it
-LINK_PKGS = readline libpng qhull_r sndfile samplerate libpulse-simple libpulse
+# (src/view/gl_load.h), so that a run that draws nothing never maps it; nettle
+# gives the SHA-256 that save writes of a polyhedron's file
+LINK_PKGS = readline libpng qhull_r sndfile samplerate libpulse-simple libpulse nettle
 CC      ?= cc
 WARN     = -Wall -Wextra -Wpedantic -Werror -Wshadow -Wmissing-prototypes
 CSTD     = -std=c17 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
@@ -48,6 +52,8 @@ PKG_LIBS    := $(shell pkg-config --libs $(LINK_PKGS) 2>/dev/null)
 BASE       = $(CSTD) $(MATH) $(WARN) $(OPT) $(CFLAGS)
 # the core: no include path into the project (its headers sit beside its sources)
 CFLAGS_CORE = $(BASE) $(CORE_CFLAGS)
+# the readers: "core/shape.h", and no package's headers
+CFLAGS_MESH = $(BASE) -Isrc
 # the shell, the views, the tests and the benchmarks: "core/world.h", "view/view.h"
 CFLAGS_ALL = $(BASE) $(PKG_CFLAGS) -Isrc -Ibuild/gen \
              -DVROC_VERSION='"$(VERSION)"' -DVROC_SCENEDIR='"$(SCENEDIR)"'
@@ -57,12 +63,15 @@ SAN        = -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-
 VAL        = -DVROC_VALIDATE
 
 CORE_SRC  = $(sort $(wildcard src/core/*.c))
+MESH_SRC  = $(sort $(wildcard src/mesh/*.c))
 UPPER_SRC = $(sort $(filter-out src/shell/main.c,$(wildcard src/shell/*.c)) $(wildcard src/view/*.c) \
                    $(wildcard src/sound/*.c) $(wildcard src/hand/*.c))
 COMMANDS  = $(sort $(wildcard commands/*))
 # the core's own tests link libvroc-core.a alone; the others the whole program
 CORE_TESTS  = test_broad test_closest test_collide test_flight test_geometry test_lcp test_physics test_schedule test_spin
-UPPER_TESTS = $(filter-out $(CORE_TESTS),$(patsubst tests/%.c,%,$(wildcard tests/test_*.c)))
+# the readers' tests link the readers and the core
+MESH_TESTS  = test_mesh
+UPPER_TESTS = $(filter-out $(CORE_TESTS) $(MESH_TESTS),$(patsubst tests/%.c,%,$(wildcard tests/test_*.c)))
 BENCHES  = $(patsubst bench/%.c,%,$(wildcard bench/bench_*.c))
 # the Bullet peer of the gas benchmark (bench/bullet_gas.cpp), built when Debian's
 # libbullet-dev is there (make deps installs it)
@@ -71,6 +80,7 @@ CXX     ?= c++
 
 # objects of build dir $(1)
 core_obj  = $(patsubst src/%.c,$(1)/%.o,$(CORE_SRC))
+mesh_obj  = $(patsubst src/%.c,$(1)/%.o,$(MESH_SRC))
 upper_obj = $(patsubst src/%.c,$(1)/%.o,$(UPPER_SRC)) $(1)/help_data.o
 
 .PHONY: all check check-build bench demo deps install uninstall clean record-hashes fuzz
@@ -113,6 +123,10 @@ $(1)/shell/%.o: src/shell/%.c build/flags | build/gen/help_data.c
 	@mkdir -p $$(@D)
 	$$(or $(3),$$(CC)) $$(CFLAGS_ALL) $(2) -MMD -MP -c -o $$@ $$<
 
+$(1)/mesh/%.o: src/mesh/%.c build/flags
+	@mkdir -p $$(@D)
+	$$(or $(3),$$(CC)) $$(CFLAGS_MESH) $(2) -MMD -MP -c -o $$@ $$<
+
 $(1)/view/%.o: src/view/%.c build/flags
 	@mkdir -p $$(@D)
 	$$(or $(3),$$(CC)) $$(CFLAGS_ALL) $(2) -MMD -MP -c -o $$@ $$<
@@ -133,20 +147,33 @@ $(1)/libvroc-core.a: $(call core_obj,$(1))
 	rm -f $$@
 	ar rcs $$@ $$^
 
+$(1)/libvroc-mesh.a: $(call mesh_obj,$(1))
+	rm -f $$@
+	ar rcs $$@ $$^
+
 $(1)/libvroc.a: $(call upper_obj,$(1))
 	rm -f $$@
 	ar rcs $$@ $$^
 
-$(1)/vroc: $(1)/shell/main.o $(1)/libvroc.a $(1)/libvroc-core.a
+$(1)/vroc: $(1)/shell/main.o $(1)/libvroc.a $(1)/libvroc-mesh.a $(1)/libvroc-core.a
 	$$(or $(3),$$(CC)) $$(OPT) $(2) -o $$@ $$^ $$(LIBS) $$(LDFLAGS)
+
+# the readers' fuzz target (tools/fuzz.sh): one file, read as the format named
+$(1)/tests/fuzz_mesh: tests/fuzz_mesh.c $(1)/libvroc-mesh.a $(1)/libvroc-core.a build/flags
+	@mkdir -p $$(@D)
+	$$(or $(3),$$(CC)) $$(CFLAGS_MESH) $(2) -o $$@ $$< $(1)/libvroc-mesh.a $(1)/libvroc-core.a $$(CORE_LIBS)
 
 $(addprefix $(1)/tests/,$(CORE_TESTS)): $(1)/tests/%: tests/%.c tests/check.h tests/worlds.h $(1)/libvroc-core.a build/flags
 	@mkdir -p $$(@D)
 	$$(CC) $$(CFLAGS_ALL) $(2) -MMD -MP -o $$@ $$< $(1)/libvroc-core.a $$(CORE_LIBS) $$(TEST_LIBS)
 
-$(addprefix $(1)/tests/,$(UPPER_TESTS)): $(1)/tests/%: tests/%.c tests/check.h tests/worlds.h $(1)/libvroc.a $(1)/libvroc-core.a build/flags
+$(addprefix $(1)/tests/,$(MESH_TESTS)): $(1)/tests/%: tests/%.c tests/check.h tests/worlds.h $(1)/libvroc-mesh.a $(1)/libvroc-core.a build/flags
 	@mkdir -p $$(@D)
-	$$(CC) $$(CFLAGS_ALL) $(2) -MMD -MP -o $$@ $$< $(1)/libvroc.a $(1)/libvroc-core.a $$(LIBS) $$(TEST_LIBS)
+	$$(CC) $$(CFLAGS_MESH) $(2) -MMD -MP -o $$@ $$< $(1)/libvroc-mesh.a $(1)/libvroc-core.a $$(CORE_LIBS) $$(TEST_LIBS)
+
+$(addprefix $(1)/tests/,$(UPPER_TESTS)): $(1)/tests/%: tests/%.c tests/check.h tests/worlds.h $(1)/libvroc.a $(1)/libvroc-mesh.a $(1)/libvroc-core.a build/flags
+	@mkdir -p $$(@D)
+	$$(CC) $$(CFLAGS_ALL) $(2) -MMD -MP -o $$@ $$< $(1)/libvroc.a $(1)/libvroc-mesh.a $(1)/libvroc-core.a $$(LIBS) $$(TEST_LIBS)
 endef
 
 $(eval $(call BUILD,build,))
@@ -165,8 +192,9 @@ check: deps
 	@sh tests/run.sh
 
 check-build: vroc man/vroc.1 build-san/vroc build-val/vroc build/tests/wavtool \
-             $(addprefix build/tests/,$(CORE_TESTS) $(UPPER_TESTS)) \
-             $(addprefix build-san/tests/,$(CORE_TESTS) $(UPPER_TESTS))
+             build-san/tests/fuzz_mesh \
+             $(addprefix build/tests/,$(CORE_TESTS) $(MESH_TESTS) $(UPPER_TESTS)) \
+             $(addprefix build-san/tests/,$(CORE_TESTS) $(MESH_TESTS) $(UPPER_TESTS))
 
 # The sound tests' reader of WAV files (its own parser, not the libsndfile vroc
 # writes them with), built once for both builds' script tests.
@@ -180,9 +208,9 @@ record-hashes: vroc
 	@sh tests/hashes.sh --record
 
 # ---- benchmarks ----
-build/bench/%: bench/%.c bench/bench.h build/libvroc.a build/libvroc-core.a build/flags
+build/bench/%: bench/%.c bench/bench.h build/libvroc.a build/libvroc-mesh.a build/libvroc-core.a build/flags
 	@mkdir -p build/bench
-	$(CC) $(CFLAGS_ALL) -O2 -o $@ $< build/libvroc.a build/libvroc-core.a $(LIBS)
+	$(CC) $(CFLAGS_ALL) -O2 -o $@ $< build/libvroc.a build/libvroc-mesh.a build/libvroc-core.a $(LIBS)
 
 build/bench/bullet_gas: bench/bullet_gas.cpp
 	@mkdir -p build/bench
@@ -190,16 +218,19 @@ build/bench/bullet_gas: bench/bullet_gas.cpp
 	    $(shell pkg-config --libs bullet)
 
 bench: deps
+	@sh tools/deps.sh bench
 	@$(MAKE) --no-print-directory vroc $(addprefix build/bench/,$(BENCHES)) $(BULLET)
 	@sh bench/run.sh
 
-# ---- fuzzing: an AFL++ campaign of FUZZ_TIME seconds in a scratch folder; what
-# it finds goes into tests/fuzz/regress/, which check replays (tools/fuzz.sh) ----
+# ---- fuzzing: AFL++ campaigns of FUZZ_TIME seconds each in a scratch folder,
+# of FUZZ_TARGETS (script obj stl off ply); what they find goes into
+# tests/fuzz/regress/, which check replays (tools/fuzz.sh) ----
 FUZZ_TIME ?= 60
+FUZZ_TARGETS ?= script obj stl off ply
 fuzz:
 	@sh tools/deps.sh fuzz
-	@$(MAKE) --no-print-directory build-fuzz/vroc
-	@FUZZ_TIME=$(FUZZ_TIME) sh tools/fuzz.sh
+	@$(MAKE) --no-print-directory build-fuzz/vroc build-fuzz/tests/fuzz_mesh
+	@FUZZ_TIME=$(FUZZ_TIME) FUZZ_TARGETS="$(FUZZ_TARGETS)" sh tools/fuzz.sh
 
 # ---- the main job ----
 demo: deps
@@ -217,7 +248,7 @@ install: vroc man/vroc.1
 	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(MANDIR) $(DESTDIR)$(SCENEDIR)
 	install -m 755 vroc $(DESTDIR)$(BINDIR)/vroc
 	install -m 644 man/vroc.1 $(DESTDIR)$(MANDIR)/vroc.1
-	install -m 644 scenes/*.vroc scenes/*.csv $(DESTDIR)$(SCENEDIR)/
+	install -m 644 scenes/*.vroc scenes/*.csv scenes/*.obj scenes/*.off scenes/*.ply $(DESTDIR)$(SCENEDIR)/
 
 uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/vroc $(DESTDIR)$(MANDIR)/vroc.1
@@ -226,4 +257,4 @@ uninstall:
 clean:
 	rm -rf build build-san build-val build-fuzz vroc tests/out
 
--include $(wildcard build*/core/*.d build*/shell/*.d build*/view/*.d build*/sound/*.d build*/hand/*.d build*/tests/*.d)
+-include $(wildcard build*/core/*.d build*/mesh/*.d build*/shell/*.d build*/view/*.d build*/sound/*.d build*/hand/*.d build*/tests/*.d)

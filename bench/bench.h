@@ -1,8 +1,9 @@
-/* bench.h: what the benchmark programs share: a monotonic clock and the order of
- * doubles for qsort (medians). */
+/* bench.h: what the benchmark programs share: a monotonic clock, the process's
+ * peak memory and the order of doubles for qsort (medians). */
 #ifndef VROC_BENCH_H
 #define VROC_BENCH_H
 
+#include <stdio.h>
 #include <time.h>
 
 /* Seconds on CLOCK_MONOTONIC. */
@@ -20,6 +21,18 @@ static inline double cpu_now(void)
     struct timespec t;
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* The process's peak resident set (VmHWM), MB; 0 when unknown. */
+static inline double peak_rss_mb(void)
+{
+    FILE *f = fopen("/proc/self/status", "r");
+    char line[256];
+    double kb = 0;
+    while (f && fgets(line, sizeof line, f))
+        if (sscanf(line, "VmHWM: %lf kB", &kb) == 1) break;
+    if (f) fclose(f);
+    return kb / 1024;
 }
 
 /* qsort's comparison of two doubles, ascending. */

@@ -426,18 +426,6 @@ static void add_run(series *x, const run_result *res)
     x->spent += res->seconds;
 }
 
-/* The process's peak resident set (VmHWM), MB; 0 when unknown. */
-static double peak_rss_mb(void)
-{
-    FILE *f = fopen("/proc/self/status", "r");
-    char line[256];
-    double kb = 0;
-    while (f && fgets(line, sizeof line, f))
-        if (sscanf(line, "VmHWM: %lf kB", &kb) == 1) break;
-    if (f) fclose(f);
-    return kb / 1024;
-}
-
 /* Prints the measurement's line (the medians sort the series' arrays). */
 static void print_series(const options *o, series *x, long objects, long pairs, long subframes)
 {

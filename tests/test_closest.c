@@ -114,6 +114,9 @@ static void tshape_build(tshape *t, const shape_params *p)
     case SHAPE_SUPERQUADRIC:
         snprintf(t->name, sizeof t->name, "sq e%g,%g %dx%d", p->exp1, p->exp2, p->ures, p->vres);
         break;
+    case SHAPE_POLYHEDRON:
+        snprintf(t->name, sizeof t->name, "polyhedron of %d points", p->src ? p->src->np : 8);
+        break;
     }
 }
 

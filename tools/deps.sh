@@ -1,6 +1,7 @@
 #!/bin/sh
 # deps.sh: install the Debian packages vroc needs that this machine lacks.
-# `deps.sh fuzz` (make fuzz) also wants AFL++ (afl++), which nothing else needs.
+# `deps.sh fuzz` (make fuzz) also wants AFL++ (afl++), and `deps.sh bench` (make
+# bench) assimp-utils, the peer the mesh readers are measured against.
 # Checks with pkg-config and command -v first; on a ready machine it installs
 # nothing and prints one line.  Runs apt-get directly as root, through sudo
 # otherwise.  Used by `make deps`, itself a prerequisite of check, bench, demo.
@@ -28,11 +29,12 @@ if command -v pkg-config >/dev/null 2>&1; then
     need_pkg sndfile libsndfile1-dev
     need_pkg samplerate libsamplerate0-dev
     need_pkg libpulse-simple libpulse-dev
+    need_pkg nettle nettle-dev # the SHA-256 save writes of a polyhedron's file
     need_pkg cmocka libcmocka-dev
     need_pkg bullet libbullet-dev # the peer of the gas benchmark (make bench)
 else
     missing="$missing libreadline-dev libosmesa6-dev libpng-dev libqhull-dev libsndfile1-dev"
-    missing="$missing libsamplerate0-dev libpulse-dev libcmocka-dev libbullet-dev"
+    missing="$missing libsamplerate0-dev libpulse-dev nettle-dev libcmocka-dev libbullet-dev"
 fi
 need_cmd tmux tmux
 need_cmd mandoc mandoc
@@ -46,6 +48,8 @@ need_cmd pulseaudio pulseaudio
 need_cmd parecord pulseaudio-utils
 need_cmd pgrep procps
 if [ "${1:-}" = fuzz ]; then need_cmd afl-fuzz afl++; fi
+# make bench measures the mesh readers against assimp's `assimp info`
+if [ "${1:-}" = bench ]; then need_cmd assimp assimp-utils; fi
 
 if [ -z "$missing" ]; then
     echo "deps: all present"

@@ -118,6 +118,8 @@ void body_free(body *b)
 {
     if (b->built) shape_free(&b->shape);
     b->built = false;
+    shape_source_release(b->sp.src);
+    b->sp.src = NULL;
 }
 
 
@@ -206,6 +208,7 @@ const char *body_type_name(shape_kind kind)
     case SHAPE_SPHERE: return "sphere";
     case SHAPE_CUBE: return "cube";
     case SHAPE_SUPERQUADRIC: return "superquadric";
+    case SHAPE_POLYHEDRON: return "polyhedron";
     }
     return "?";
 }

@@ -34,7 +34,7 @@ typedef enum { MODE_FREE, MODE_SLIDE, MODE_GENERAL } body_mode;
 
 typedef struct body {
     char name[BODY_NAME_MAX];
-    shape_params sp;   /* the parameters as set */
+    shape_params sp;   /* the parameters as set; the body owns sp.src */
     shape shape;       /* geometry built from sp */
     bool built;        /* shape is built and matches sp */
 
@@ -97,6 +97,7 @@ void body_init(body *b, const char *name, shape_kind kind);
  * body keeps its previous shape. */
 int body_build(body *b, char *err, size_t errlen);
 
+/* Frees the shape and the polyhedron's source. */
 void body_free(body *b);
 
 /* Sets the mass (non-zero; negative: static) and recomputes the inertia, keeping
@@ -144,7 +145,7 @@ closest_result body_distance(const body *a, const body *b, closest_cache *cache)
 /* The same as closest_distance_apart: no penetration estimate. */
 closest_result body_distance_apart(const body *a, const body *b, closest_cache *cache);
 
-/* A type name: "sphere", "cube", "superquadric". */
+/* A type name: "sphere", "cube", "superquadric", "polyhedron". */
 const char *body_type_name(shape_kind kind);
 
 #endif

@@ -119,9 +119,24 @@ int edit_property(world *w, int i, size_t off, const double *num, char *err, siz
     case offsetof(body, sp.a3): b->sp.a3 = num[0]; break;
     case offsetof(body, sp.ures): b->sp.ures = (int)num[0]; break;
     case offsetof(body, sp.vres): b->sp.vres = (int)num[0]; break;
+    case offsetof(body, sp.scale): b->sp.scale = v; break;
     default: snprintf(err, errlen, "no property at offset %zu", off); return -1;
     }
     if (rebuild(b, old, err, errlen) != 0) return -1;
+    disturb(w, i, true);
+    return 0;
+}
+
+int edit_source(world *w, int i, shape_source *src, char *err, size_t errlen)
+{
+    body *b = w->bodies[i];
+    shape_params old = b->sp;
+    b->sp.src = src;
+    if (rebuild(b, old, err, errlen) != 0) {
+        shape_source_release(src);
+        return -1;
+    }
+    shape_source_release(old.src);
     disturb(w, i, true);
     return 0;
 }

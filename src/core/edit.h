@@ -25,14 +25,21 @@
  *   max_linear or max_angular, scaled down whatever its size), x (translate),
  *   rot_axis (rotate: num[3] the angle), mass (non-zero; negative: static),
  *   elasticity, volume, color, and the shape's parameters sp.radius, sp.size,
- *   sp.exp1, sp.exp2, sp.a1, sp.a2, sp.a3, sp.ures, sp.vres (the shape is built
- *   again).
+ *   sp.exp1, sp.exp2, sp.a1, sp.a2, sp.a3, sp.ures, sp.vres, sp.scale (the shape
+ *   is built again).
  * Anything but the colour or the loudness wakes the body and everything pressed
  * together with it, whose modes are found anew when time runs; placing, turning,
  * reshaping or a new mass also end its lasting contacts, which are found anew
  * (objects placed within SIM_TOUCH of each other touch).  Returns 0, or -1 with a message in err when the
  * shape cannot be built (the body keeps its old shape) or off names no property. */
 int edit_property(world *w, int i, size_t off, const double *num, char *err, size_t errlen);
+
+/* Gives polyhedron i (SHAPE_POLYHEDRON) the geometry src, as `file` does, taking
+ * ownership of src: the shape is built again, and what the property statements
+ * above wake is woken.  Returns 0 (the old source is freed), or -1 with a message
+ * in err when the shape cannot be built (src is freed; the body keeps its old
+ * shape). */
+int edit_source(world *w, int i, shape_source *src, char *err, size_t errlen);
 
 /* Sets the global force (a direction and a magnitude) and wakes every resting
  * object: rest depends on the force. */

@@ -1,5 +1,6 @@
 /* shape.c: the thesis's primitives (sphere, cube, superquadric; Tables A.2 to A.4)
- * turned into a drawing mesh, a collision polyhedron and mass properties.
+ * and polyhedra given as point sets turned into a drawing mesh, a collision
+ * polyhedron and mass properties.
  *
  * Spheres and cubes have closed-form mass properties; a superquadric's are those of
  * its collision polyhedron, the convex hull of its tessellation (poly.c), which is
@@ -11,10 +12,14 @@
  * Angles are multiples of pi / (2 vres) and 2 pi / ures, so their sines and cosines
  * are computed by octant reduction: exactly 0 and 1 at the axes and symmetric, so
  * that |cos|^e with a small e gives no stray points near the poles and axes.
+ * A polyhedron (the thesis's future work, 6.2) collides as the exact convex hull of
+ * its source's points, scaled, and has that hull's mass properties; it is drawn
+ * with its source's own mesh (normals turned by the inverse of the scale).
  */
 #include "shape.h"
 
 #include "closest.h"
+#include "limits.h"
 
 #include <limits.h>
 #include <stdarg.h>
@@ -52,7 +57,9 @@ shape_params shape_defaults(shape_kind kind)
                           .a2 = 1,
                           .a3 = 1,
                           .ures = 10,
-                          .vres = 10};
+                          .vres = 10,
+                          .scale = v3(1, 1, 1),
+                          .src = NULL};
 }
 
 void shape_free(shape *s)
@@ -60,9 +67,11 @@ void shape_free(shape *s)
     if (!s) return;
     closest_hull_free(s->feat);
     poly_free(s->hull);
-    free(s->draw.pos);
-    free(s->draw.nrm);
-    free(s->draw.tri);
+    if (!s->draw_borrowed) {
+        free(s->draw.pos);
+        free(s->draw.nrm);
+        free(s->draw.tri);
+    }
     memset(s, 0, sizeof *s);
 }
 
@@ -282,9 +291,10 @@ static int build_sphere(shape *s, char *err, size_t errlen)
     return 0;
 }
 
-static int build_cube(shape *s, char *err, size_t errlen)
+/* The box of half-extents h: a cube's, or a polyhedron's without a source (what
+ * names it in messages). */
+static int build_box(shape *s, vec3 h, const char *what, char *err, size_t errlen)
 {
-    vec3 h = s->p.size;
     char why[200];
     double big = 2 * fmax(h.x, fmax(h.y, h.z));
     /* (as poly_hull would say of its corners) */
@@ -298,18 +308,131 @@ static int build_cube(shape *s, char *err, size_t errlen)
         return -1;
     }
     if (!s->hull) {
-        set_err(err, errlen, "cube: size (%.6g, %.6g, %.6g) cannot be built: %s", h.x, h.y, h.z,
+        set_err(err, errlen, "%s (%.6g, %.6g, %.6g) cannot be built: %s", what, h.x, h.y, h.z,
                 strip_hull(why));
         return -1;
     }
     if (cube_mesh(h, &s->draw) < 0) {
-        set_err(err, errlen, "cube: out of memory");
+        set_err(err, errlen, "%s: out of memory", what);
         return -1;
     }
     s->mass = box_mass(h);
     s->r_in = fmin(h.x, fmin(h.y, h.z));
     s->r_out = v3_len(h);
     return 0;
+}
+
+/* ---- polyhedra from point sets ---- */
+
+/* A mesh of the hull's faces (fans, flat normals): what a source without faces
+ * draws. */
+static int hull_mesh(const poly *h, mesh *m)
+{
+    int nv = 0, nt = 0;
+    for (int f = 0; f < h->nf; f++) {
+        nv += h->f[f].count;
+        nt += h->f[f].count - 2;
+    }
+    if (mesh_alloc(m, nv, nt) < 0) return -1;
+    int v = 0, t = 0;
+    for (int f = 0; f < h->nf; f++) {
+        const poly_face *pf = &h->f[f];
+        for (int k = 0; k < pf->count; k++) {
+            m->pos[v + k] = h->v[h->face_vert[pf->first + k]];
+            m->nrm[v + k] = pf->n;
+        }
+        for (int k = 1; k + 1 < pf->count; k++) put_tri(m->tri, &t, v, v + k, v + k + 1);
+        v += pf->count;
+    }
+    return 0;
+}
+
+/* The source's mesh at scale k: its own when k is 1 (borrowed), else a copy with
+ * the positions scaled and the normals turned by the inverse scale. */
+static int scaled_mesh(shape *s, const mesh *src, vec3 k)
+{
+    if (k.x == 1 && k.y == 1 && k.z == 1) {
+        s->draw = *src;
+        s->draw_borrowed = true;
+        return 0;
+    }
+    mesh *m = &s->draw;
+    if (mesh_alloc(m, src->nv, src->nt) < 0) return -1;
+    for (int v = 0; v < src->nv; v++) {
+        vec3 p = src->pos[v], n = src->nrm[v];
+        m->pos[v] = v3(p.x * k.x, p.y * k.y, p.z * k.z);
+        m->nrm[v] = v3_norm(v3(n.x / k.x, n.y / k.y, n.z / k.z));
+    }
+    memcpy(m->tri, src->tri, (size_t)src->nt * sizeof *m->tri);
+    return 0;
+}
+
+static int build_polyhedron(shape *s, char *err, size_t errlen)
+{
+    const shape_source *src = s->p.src;
+    vec3 k = s->p.scale;
+    if (!src) return build_box(s, k, "polyhedron: the box of scale", err, errlen);
+    vec3 *pts = malloc((size_t)(src->np > 0 ? src->np : 1) * sizeof *pts);
+    if (!pts) {
+        set_err(err, errlen, "polyhedron: out of memory for %d points", src->np);
+        return -1;
+    }
+    for (int i = 0; i < src->np; i++) {
+        vec3 p = src->pts[i], q = v3(p.x * k.x, p.y * k.y, p.z * k.z);
+        if (!(fabs(q.x) <= LIM_LENGTH_MAX && fabs(q.y) <= LIM_LENGTH_MAX &&
+              fabs(q.z) <= LIM_LENGTH_MAX)) {
+            set_err(err, errlen,
+                    "polyhedron: scaled by (%.6g, %.6g, %.6g), the point (%.6g, %.6g, %.6g) lies "
+                    "beyond %g m of its origin",
+                    k.x, k.y, k.z, q.x, q.y, q.z, LIM_LENGTH_MAX);
+            free(pts);
+            return -1;
+        }
+        pts[i] = q;
+    }
+    char why[200];
+    /* the exact hull: "the hull of all its vertices", and shape_off_hull's test is
+     * then exact too */
+    s->hull = poly_hull_merge(pts, src->np, 0, why, sizeof why);
+    free(pts);
+    if (!s->hull) {
+        set_err(err, errlen, "polyhedron: its %d points make no solid: %s", src->np,
+                strip_hull(why));
+        return -1;
+    }
+    int rc = src->draw.nt > 0 ? scaled_mesh(s, &src->draw, k) : hull_mesh(s->hull, &s->draw);
+    if (rc < 0) {
+        set_err(err, errlen, "polyhedron: out of memory for its mesh");
+        return -1;
+    }
+    s->mass = poly_mass(s->hull);
+    s->r_in = poly_inner_radius(s->hull, s->mass.com);
+    s->r_out = poly_outer_radius(s->hull, s->mass.com);
+    return 0;
+}
+
+long shape_off_hull(const shape *s)
+{
+    const poly *h = s->hull;
+    const mesh *m = &s->draw;
+    if (!h || s->p.kind != SHAPE_POLYHEDRON) return 0;
+    double tol = 1e-6 * s->r_out;
+    long off = 0;
+    int j = 0;
+    for (int t = 0; t < m->nt; t++) {
+        vec3 a = m->pos[m->tri[t][0]], b = m->pos[m->tri[t][1]], c = m->pos[m->tri[t][2]];
+        vec3 n = v3_cross(v3_sub(b, a), v3_sub(c, a));
+        if (!(v3_len(n) > 0)) continue; /* no plane to test */
+        n = v3_norm(n);
+        vec3 mid = v3_scale(v3_add(a, v3_add(b, c)), 1.0 / 3);
+        bool on = false;
+        for (int side = 0; side < 2 && !on; side++, n = v3_neg(n)) {
+            j = poly_climb(h, n, j);
+            on = v3_dot(n, v3_sub(h->v[j], mid)) <= tol;
+        }
+        if (!on) off++;
+    }
+    return off;
 }
 
 static int build_superquadric(shape *s, char *err, size_t errlen)
@@ -355,13 +478,15 @@ int shape_build(shape *s, const shape_params *p, char *err, size_t errlen)
     int rc;
     switch (params.kind) {
     case SHAPE_SPHERE: rc = build_sphere(s, err, errlen); break;
-    case SHAPE_CUBE: rc = build_cube(s, err, errlen); break;
+    case SHAPE_CUBE: rc = build_box(s, params.size, "cube: size", err, errlen); break;
     case SHAPE_SUPERQUADRIC: rc = build_superquadric(s, err, errlen); break;
+    case SHAPE_POLYHEDRON: rc = build_polyhedron(s, err, errlen); break;
     default:
         set_err(err, errlen, "unknown shape kind %d", (int)params.kind);
         rc = -1;
     }
-    if (rc == 0) { /* the bounding box, in body axes */
+    if (rc == 0) { /* one piece, and the bounding box, in body axes */
+        s->pieces = 1;
         vec3 r = v3(s->p.radius, s->p.radius, s->p.radius);
         s->box_lo = v3_neg(r);
         s->box_hi = r;

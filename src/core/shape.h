@@ -1,10 +1,12 @@
-/* shape.h: the three primitives of the thesis (Tables A.2 to A.4) turned into geometry.
+/* shape.h: the three primitives of the thesis (Tables A.2 to A.4), and polyhedra
+ * given as point sets (read from mesh files: src/mesh/), turned into geometry.
  *
  * A shape is built from its parameters once (and again when a parameter changes):
  * a triangle mesh for drawing (spheres and superquadrics at ures x vres, smooth
- * normals; cubes flat), the convex polyhedron used by collision detection (cubes and
- * superquadrics; spheres stay exact), and the mass properties at unit density with
- * the inner and outer radius about the centre of mass, all in the body frame.
+ * normals; cubes flat; a polyhedron's as its source gives it), the convex polyhedron
+ * used by collision detection (cubes, superquadrics and polyhedra; spheres stay
+ * exact), and the mass properties at unit density with the inner and outer radius
+ * about the centre of mass, all in the body frame.
  *
  * Superquadric (Barr's superellipsoid), eta in [-pi/2, pi/2], omega in [-pi, pi):
  *   x = a1 c(eta,e1) c(omega,e2), y = a2 c(eta,e1) s(omega,e2), z = a3 s(eta,e1),
@@ -14,13 +16,43 @@
 #ifndef VROC_SHAPE_H
 #define VROC_SHAPE_H
 
+#include <stdbool.h>
 #include <stddef.h>
 
 #include "closest.h"
 #include "poly.h"
 #include "vmath.h"
 
-typedef enum { SHAPE_SPHERE, SHAPE_CUBE, SHAPE_SUPERQUADRIC } shape_kind;
+typedef enum { SHAPE_SPHERE, SHAPE_CUBE, SHAPE_SUPERQUADRIC, SHAPE_POLYHEDRON } shape_kind;
+
+/* Triangle mesh for drawing: per-vertex positions and unit normals. */
+typedef struct {
+    int nv, nt;
+    vec3 *pos;
+    vec3 *nrm;
+    int (*tri)[3]; /* counter-clockwise seen from outside (a polyhedron's: as its
+                    * source's faces run, which may be either way) */
+} mesh;
+
+/* A polyhedron's geometry as its maker gives it (a mesh file: src/mesh/), in the
+ * maker's units, before the shape's scale: the points whose convex hull collides
+ * and the mesh drawn (no triangles: the hull is drawn).  The points are distinct
+ * and in a canonical order (the maker sorts them), so that the same points give
+ * the same hull to the bit whatever order or format they came in.  It never
+ * changes once made.  A body owns the one of its parameters (body.h); shapes
+ * built from it borrow it.  release frees it (shape_source_release). */
+typedef struct shape_source {
+    int np;
+    vec3 *pts;
+    mesh draw;
+    void (*release)(struct shape_source *src);
+} shape_source;
+
+/* Frees src through its release function (nothing for NULL). */
+static inline void shape_source_release(shape_source *src)
+{
+    if (src) src->release(src);
+}
 
 typedef struct {
     shape_kind kind;
@@ -29,20 +61,17 @@ typedef struct {
     double exp1, exp2;       /* superquadric exponents */
     double a1, a2, a3;       /* superquadric radii */
     int ures, vres;          /* sphere and superquadric resolutions */
+    vec3 scale;              /* polyhedron: its source's units into metres (each > 0) */
+    shape_source *src;       /* polyhedron: its geometry; NULL: the box a new cube
+                              * is, scaled */
 } shape_params;
-
-/* Triangle mesh for drawing: per-vertex positions and unit normals. */
-typedef struct {
-    int nv, nt;
-    vec3 *pos;
-    vec3 *nrm;
-    int (*tri)[3]; /* counter-clockwise seen from outside */
-} mesh;
 
 typedef struct {
     shape_params p;
     poly *hull;          /* collision polyhedron; NULL for a sphere */
     mesh draw;           /* what the renderer draws */
+    bool draw_borrowed;  /* draw is the source's own (a polyhedron at scale 1) */
+    int pieces;          /* convex pieces it collides as: 1 */
     mass_props mass;     /* unit density, body frame */
     double r_in, r_out;  /* inscribed and circumscribed radius about mass.com */
     vec3 box_lo, box_hi; /* the box, in body axes, that holds the shape */
@@ -50,15 +79,24 @@ typedef struct {
 } shape;
 
 /* The thesis's defaults for a primitive of the given kind: radius 1, size (1,1,1),
- * exponents 1, a1..a3 1, resolutions 10. */
+ * exponents 1, a1..a3 1, resolutions 10; scale (1,1,1) and no source. */
 shape_params shape_defaults(shape_kind kind);
 
 /* Builds s from p (s need not be initialised).  Returns 0, or -1 with a message in
  * err (then s holds nothing to free).  Parameters are assumed validated: positive
- * sizes, exponents > 0, resolutions >= 3. */
+ * sizes, exponents > 0, resolutions >= 3, scale components within core/limits.h's
+ * lengths.  A polyhedron's points, scaled, must lie within LIM_LENGTH_MAX of its
+ * origin on each axis and not all in one plane: its collision shape is their exact
+ * convex hull (poly_hull_merge at angle 0), its mass properties the hull's. */
 int shape_build(shape *s, const shape_params *p, char *err, size_t errlen);
 
 void shape_free(shape *s);
+
+/* The drawn triangles of s that do not lie on its collision hull's surface (their
+ * plane, either way round, is not a supporting plane of the hull within 1e-6 of
+ * r_out): none for a convex mesh, some for a concave one, which collides as its
+ * hull.  0 for a sphere. */
+long shape_off_hull(const shape *s);
 
 /* s placed with body frame to world p -> q p q* + x, as closest-feature queries
  * take it. */

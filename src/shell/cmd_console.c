@@ -73,7 +73,7 @@ cmd_status cmd_save(shell *sh, const stmt *st)
     settings_write(f, sh, 1);
     fprintf(f, "\n# objects\n");
     for (int i = 0; i < sh->w.n; i++) {
-        body_write(f, sh->w.bodies[i]);
+        body_write_for(f, sh->w.bodies[i], st->word);
         fputc('\n', f);
     }
     /* the contact state: placing an object ends its lasting contacts */

@@ -47,6 +47,7 @@ typedef enum {
     VAL_NAME,         /* an object name */
     VAL_QUAT,         /* (w, x, y, z) */
     VAL_PAIR,         /* (a, b) */
+    VAL_SCALE,        /* s or (x, y, z): one number is the same on every axis */
 } arg_kind;
 
 /* Range flags.  R_RANGE: every number of the value (each component of a vector)
@@ -62,7 +63,7 @@ enum { R_LO_OPEN = 1, R_HI_OPEN = 2, R_NONZERO = 4, R_NONZERO_VEC = 8, R_RANGE =
 
 /* shape classes a property applies to */
 enum { C_SPHERE = 1 << SHAPE_SPHERE, C_CUBE = 1 << SHAPE_CUBE, C_SQ = 1 << SHAPE_SUPERQUADRIC,
-       C_ALL = C_SPHERE | C_CUBE | C_SQ };
+       C_POLY = 1 << SHAPE_POLYHEDRON, C_ALL = C_SPHERE | C_CUBE | C_SQ | C_POLY };
 
 typedef enum { CMD_OK, CMD_ERROR, CMD_QUIT } cmd_status;
 

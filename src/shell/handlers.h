@@ -16,6 +16,9 @@ cmd_status cmd_create(struct shell *sh, const stmt *st);
 cmd_status cmd_delete(struct shell *sh, const stmt *st);
 cmd_status cmd_property(struct shell *sh, const stmt *st);
 cmd_status cmd_exact(struct shell *sh, const stmt *st);
+cmd_status cmd_file(struct shell *sh, const stmt *st);
+cmd_status cmd_pieces(struct shell *sh, const stmt *st);
+cmd_status cmd_sha256(struct shell *sh, const stmt *st);
 
 cmd_status cmd_setting(struct shell *sh, const stmt *st);
 cmd_status cmd_random_box(struct shell *sh, const stmt *st);

@@ -339,6 +339,23 @@ static int parse_value(stmt *st, const token *t, int nt, const where *at)
         if (get_name(t, nt, i, c, &st->word, at) != 0) return -1;
         i++;
         break;
+    case VAL_SCALE:
+        if (i < nt && t[i].k == T_LP) {
+            if (get_tuple(t, nt, &i, 3, c, st->num, at) != 0) return -1;
+            if (check_vector(c, st->num, at) != 0) return -1;
+            st->n = 3;
+            break;
+        }
+        if (i >= nt) {
+            perr(at, "%s: missing value: s or (x, y, z)", c->name);
+            return -1;
+        }
+        if (get_number(&t[i], c, &st->num[0], at) != 0) return -1;
+        if (check_range(c, st->num[0], at) != 0) return -1;
+        st->num[1] = st->num[2] = st->num[0];
+        st->n = 1;
+        i++;
+        break;
     case VAL_QUAT:
     case VAL_PAIR:
     case VAL_RANGE2: {
@@ -544,7 +561,14 @@ static int load_sub(stmt *st, const lang_paths *paths, int depth, const char **s
     return st->sub ? 0 : -1;
 }
 
-/* A file the statement reads (a tracker file) is found as read finds its file:
+/* Whether s is a SHA-256 written out: 64 hexadecimal digits. */
+static bool is_sha256(const char *s)
+{
+    size_t n = strlen(s);
+    return n == 64 && strspn(s, "0123456789abcdefABCDEF") == 64;
+}
+
+/* A file the statement reads (a tracker file, a polyhedron's file) is found as read finds its file:
  * st->word becomes the path found, or stays as written when there is none (its
  * handler then says so).  Returns 0, or -1 when out of memory. */
 static int resolve_word(stmt *st, const lang_paths *paths)
@@ -610,9 +634,16 @@ program *lang_parse(const char *text, size_t len, const char *name, int first_li
                     goto fail;
                 }
                 st.file = prog->path;
-                if (strcmp(st.cmd->name, "tracker") == 0 && st.n == 0 && resolve_word(&st, paths) != 0) {
+                bool names_file = (strcmp(st.cmd->name, "tracker") == 0 && st.n == 0) ||
+                                  strcmp(st.cmd->name, "file") == 0;
+                if (names_file && resolve_word(&st, paths) != 0) {
                     stmt_clear(&st);
                     goto oom;
+                }
+                if (strcmp(st.cmd->name, "sha256") == 0 && !is_sha256(st.word)) {
+                    perr(&at, "sha256 must be 64 hexadecimal digits (got \"%.70s\")", st.word);
+                    stmt_clear(&st);
+                    goto fail;
                 }
                 if (strcmp(st.cmd->name, "read") == 0 &&
                     load_sub(&st, paths, depth, stack, n_stack, &at) != 0) {

@@ -69,6 +69,7 @@ const command command_table[] = {
     ACT("sphere", ARG_NAME, cmd_create),
     ACT("cube", ARG_NAME, cmd_create),
     ACT("superquadric", ARG_NAME, cmd_create),
+    ACT("polyhedron", ARG_NAME, cmd_create),
     ACT("delete", ARG_NAME, cmd_delete),
     /* properties (Tables A.1 to A.4) */
     PROP("linear_vel", VAL_VECTOR, R_RANGE, -DBL_MAX, DBL_MAX, C_ALL, v),
@@ -89,6 +90,15 @@ const command command_table[] = {
     PROP("a1", VAL_NUMBER, R_RANGE, LIM_LENGTH_MIN, LIM_LENGTH_MAX, C_SQ, sp.a1),
     PROP("a2", VAL_NUMBER, R_RANGE, LIM_LENGTH_MIN, LIM_LENGTH_MAX, C_SQ, sp.a2),
     PROP("a3", VAL_NUMBER, R_RANGE, LIM_LENGTH_MIN, LIM_LENGTH_MAX, C_SQ, sp.a3),
+    {"file", FORM_PROPERTY, VAL_FILE, 0, 0, 0, NULL, C_POLY, OWN_NONE, offsetof(body, sp.src),
+     cmd_file, NO_AFTER},
+    PROP("scale", VAL_SCALE, R_RANGE, LIM_LENGTH_MIN, LIM_LENGTH_MAX, C_POLY, sp.scale),
+    /* read only: checked against the object (print writes it) */
+    {"pieces", FORM_PROPERTY, VAL_INTEGER, R_RANGE, 1, 1e6, NULL, C_POLY, OWN_NONE,
+     offsetof(body, shape.pieces), cmd_pieces, NO_AFTER},
+    /* the file's SHA-256 as save wrote it: a warning when the file changed since */
+    {"sha256", FORM_PROPERTY, VAL_FILE, 0, 0, 0, NULL, C_POLY, OWN_NONE, offsetof(body, sp.src),
+     cmd_sha256, NO_AFTER},
     /* exact state, as save writes it */
     EXACT("orientation", VAL_QUAT, R_RANGE, -1, 1, q),
     EXACT("velocity", VAL_VECTOR, R_RANGE, -LIM_SPEED_MAX, LIM_SPEED_MAX, v),

@@ -3,8 +3,11 @@
 
 #include "fmt.h"
 
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "mesh/meshfile.h"
 
 #include "core/pairs.h"
 #include "core/world.h"
@@ -18,10 +21,10 @@ void writer_vec(FILE *out, vec3 v)
     fprintf(out, "(%s, %s, %s)", fmt_num(a, v.x), fmt_num(b, v.y), fmt_num(c, v.z));
 }
 
-void writer_path(FILE *out, const char *path)
+void writer_quoted(FILE *out, const char *s)
 {
     fputc('"', out);
-    for (const char *p = path; *p; p++) {
+    for (const char *p = s; *p; p++) {
         if (*p == '"' || *p == '\\') fputc('\\', out);
         fputc(*p, out);
     }
@@ -55,7 +58,7 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
         return;
     if (strcmp(n, "tracker") == 0) {
         fprintf(out, "tracker = ");
-        if (hs->tracker[0]) writer_path(out, hs->tracker);
+        if (hs->tracker[0]) writer_quoted(out, hs->tracker);
         else fprintf(out, "off");
         fputc('\n', out);
         return;
@@ -126,7 +129,7 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
         break;
     }
     case VAL_ONOFF: fprintf(out, "%s", *(const bool *)field ? "on" : "off"); break;
-    case VAL_FILE: writer_path(out, field); break;
+    case VAL_FILE: writer_quoted(out, field); break;
     default: break;
     }
     fputc('\n', out);
@@ -150,7 +153,7 @@ void hand_write(FILE *out, const shell *sh)
     fprintf(out, "# the hand\n");
     if (h->playing) {
         fprintf(out, "tracker = ");
-        writer_path(out, h->set.tracker);
+        writer_quoted(out, h->set.tracker);
         fprintf(out, "\ntracker_time = %s\n", fmt_num(a, hand_tracker_time(h)));
     } else if (h->set.tracker[0]) {
         fprintf(out, "# tracker = \"%s\" (a live feed: not opened again)\n", h->set.tracker);
@@ -159,7 +162,56 @@ void hand_write(FILE *out, const shell *sh)
     fprintf(out, "grip = %s\n", hand_grip_word(h, &sh->w, g));
 }
 
-void body_write(FILE *out, const body *b)
+void writer_path(const char *path, const char *save_path, char *out, size_t outlen)
+{
+    char real[PATH_MAX], dir[PATH_MAX];
+    if (!realpath(path, real)) snprintf(real, sizeof real, "%s", path);
+    snprintf(dir, sizeof dir, "%s", save_path);
+    char *slash = strrchr(dir, '/');
+    if (!slash) snprintf(dir, sizeof dir, ".");
+    else if (slash == dir) dir[1] = '\0';
+    else *slash = '\0';
+    char real_dir[PATH_MAX];
+    size_t n = realpath(dir, real_dir) ? strlen(real_dir) : 0;
+    if (n > 0 && strncmp(real, real_dir, n) == 0 && (real[n] == '/' || real_dir[n - 1] == '/'))
+        snprintf(out, outlen, "%s", real + n + (real[n] == '/'));
+    else
+        snprintf(out, outlen, "%s", real);
+}
+
+/* A polyhedron's shape: its file (with its SHA-256) and its scale; for print, the
+ * pieces it collides as and its centre of mass. */
+static void polyhedron_write(FILE *out, const body *b, const char *save_path)
+{
+    char a[32], c[32], d[32];
+    const mesh_source *src = mesh_source_of(b->sp.src);
+    if (src) {
+        char path[PATH_MAX];
+        if (save_path) writer_path(src->path, save_path, path, sizeof path);
+        else snprintf(path, sizeof path, "%s", src->path);
+        fprintf(out, "file = ");
+        writer_quoted(out, path);
+        fprintf(out, "\nsha256 = \"");
+        for (int k = 0; k < (int)sizeof src->sha256; k++) fprintf(out, "%02x", src->sha256[k]);
+        fprintf(out, "\"\n");
+    }
+    vec3 k = b->sp.scale;
+    if (k.x == k.y && k.y == k.z) {
+        fprintf(out, "scale = %s\n", fmt_num(a, k.x));
+    } else {
+        fprintf(out, "scale = ");
+        writer_vec(out, k);
+        fputc('\n', out);
+    }
+    if (save_path || !b->built) return;
+    vec3 com = b->shape.mass.com;
+    fprintf(out, "pieces = %d\n# centre of mass, in its own axes: (%s, %s, %s)\n",
+            b->shape.pieces, fmt_num(a, com.x), fmt_num(c, com.y), fmt_num(d, com.z));
+}
+
+void body_write(FILE *out, const body *b) { body_write_for(out, b, NULL); }
+
+void body_write_for(FILE *out, const body *b, const char *save_path)
 {
     char a[32];
     const shape_params *p = &b->sp;
@@ -186,6 +238,7 @@ void body_write(FILE *out, const body *b)
         fprintf(out, "a3 = %s\n", fmt_num(a, p->a3));
         fprintf(out, "ures = %d\nvres = %d\n", p->ures, p->vres);
         break;
+    case SHAPE_POLYHEDRON: polyhedron_write(out, b, save_path); break;
     }
     fprintf(out, "translate = ");
     writer_vec(out, b->x);

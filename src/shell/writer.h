@@ -14,9 +14,9 @@ struct world;
 /* Writes v as "(x, y, z)", each number by fmt_num. */
 void writer_vec(FILE *out, vec3 v);
 
-/* Writes path as a quoted string of the language, a backslash before each '"'
- * and '\\' in it, so that it reads back as it is. */
-void writer_path(FILE *out, const char *path);
+/* Writes s (a path) as a quoted string of the language, a backslash before each
+ * '"' and '\\' in it, so that it reads back as it is. */
+void writer_quoted(FILE *out, const char *s);
 
 /* Writes every setting as statements of the language, in the command table's
  * order; for `save` the log files (trace, events, hand_log) are written as
@@ -33,6 +33,17 @@ void hand_write(FILE *out, const struct shell *sh);
  * typed (rotate, linear_vel, angular_vel), then exactly (orientation, velocity,
  * angular_momentum), so that it reads back to the bit. */
 void body_write(FILE *out, const body *b);
+
+/* body_write for `save` into the file save_path (NULL: for print): a
+ * polyhedron's file is written relative to save_path's folder when it lies under
+ * it, else as an absolute path; print also writes the pieces it collides as and
+ * its centre of mass (a comment). */
+void body_write_for(FILE *out, const body *b, const char *save_path);
+
+/* The path of path as a saved file at save_path names it: relative to save_path's
+ * folder when path lies under it (both taken through realpath), else absolute.
+ * (Issue 31 writes one such helper for every path save writes.) */
+void writer_path(const char *path, const char *save_path, char *out, size_t outlen);
 
 /* Writes the contact state of body i of w (language.md, "Exact state"): its mode,
  * with its slide's support and face, whether it rests, and the objects it is in

@@ -21,6 +21,7 @@
     X(glColor3ub) X(glColor3ubv) X(glColorMaterial) X(glCullFace) X(glDepthFunc) X(glDisable)              \
     X(glDisableClientState) X(glDrawRangeElements) X(glEnable) X(glEnableClientState)        \
     X(glEnd) X(glFinish) X(glFrontFace) X(glFrustum) X(glGetError) X(glLightModelfv)        \
+    X(glLightModeli)                                                                         \
     X(glLightfv) X(glLineWidth) X(glLoadIdentity) X(glLoadMatrixd) X(glMaterialf) X(glMaterialfv)          \
     X(glMatrixMode) X(glMultMatrixd) X(glNormal3d) X(glNormalPointer) X(glPixelStorei) X(glPolygonMode)   \
     X(glPopMatrix) X(glPushMatrix) X(glScissor) X(glShadeModel) X(glVertex3d)              \
@@ -63,6 +64,7 @@ int gl_load(char *err, size_t errlen);
 #define glFrustum (*gl_load_api.p_glFrustum)
 #define glGetError (*gl_load_api.p_glGetError)
 #define glLightModelfv (*gl_load_api.p_glLightModelfv)
+#define glLightModeli (*gl_load_api.p_glLightModeli)
 #define glLightfv (*gl_load_api.p_glLightfv)
 #define glLineWidth (*gl_load_api.p_glLineWidth)
 #define glLoadIdentity (*gl_load_api.p_glLoadIdentity)

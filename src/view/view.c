@@ -12,7 +12,7 @@
  * vertex arrays straight from each body's mesh (vec3 = 3 doubles, triangles = 3
  * ints), one model matrix per body from x and q, two directional lights fixed to the
  * head, z-buffer and back-face culling (the meshes are convex and counter-clockwise
- * seen from outside).  Static (real-world) objects follow `real`: solid like the
+ * seen from outside; a polyhedron's, from a file, is drawn two-sided).  Static (real-world) objects follow `real`: solid like the
  * others, wire (unlit edges of the collision polyhedron, or of the mesh for a
  * sphere) or hidden.  The hand's pointer and the tool panel are drawn over the
  * world in each eye (overlay.c).  Both eyes are drawn side by side into one 2w x h
@@ -328,25 +328,36 @@ static bool view_mesh_ok(const mesh *m)
     return m->nv > 0 && m->nt > 0 && m->pos && m->nrm && m->tri;
 }
 
-/* The body's mesh, lit and filled. */
+/* The body's mesh, lit and filled.  A polyhedron's faces run as its file's do,
+ * either way round, and need not be convex: both sides of each are drawn and lit. */
 static void view_draw_solid(const body *b)
 {
     const mesh *m = &b->shape.draw;
+    bool two_sided = b->sp.kind == SHAPE_POLYHEDRON;
     GLdouble model[16];
     view_model_matrix(b, model);
     glPushMatrix();
     glMultMatrixd(model);
     view_color(b);
+    if (two_sided) {
+        glDisable(GL_CULL_FACE);
+        glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+    }
     glVertexPointer(3, GL_DOUBLE, 0, m->pos);
     glNormalPointer(GL_DOUBLE, 0, m->nrm);
     glDrawRangeElements(GL_TRIANGLES, 0, (GLuint)(m->nv - 1), 3 * m->nt, GL_UNSIGNED_INT,
                         m->tri);
+    if (two_sided) {
+        glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_FALSE);
+        glEnable(GL_CULL_FACE);
+    }
     glPopMatrix();
 }
 
 /* The body's edges, unlit, front and back: those of the collision polyhedron (the
  * real edges of a box, without the triangulation's diagonals), or the mesh's for a
- * sphere.  Lighting and culling must be off. */
+ * sphere and for a polyhedron from a file (its own faces, not its hull).  Lighting
+ * and culling must be off. */
 static void view_draw_wire(const body *b)
 {
     const poly *p = b->shape.hull;
@@ -355,7 +366,7 @@ static void view_draw_wire(const body *b)
     glPushMatrix();
     glMultMatrixd(model);
     view_color(b);
-    if (p && p->ne > 0) {
+    if (p && p->ne > 0 && b->sp.kind != SHAPE_POLYHEDRON) {
         glBegin(GL_LINES);
         for (int i = 0; i < p->ne; i++) {
             vec3 a = p->v[p->e[i].v[0]], c = p->v[p->e[i].v[1]];
