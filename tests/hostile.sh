@@ -127,6 +127,19 @@ expect "collision_sound of such a pipe too" 1 \
 (printf 'sphere piped\n' > fifo) &
 expect "a named pipe that a program writes to is read" 0 "piped" "$VROC" -b -c 'read fifo; list'
 wait
+# a mesh file comes through the same door: a pipe times out, a line is capped
+expect "a polyhedron's file that is a named pipe no program writes to times out" 1 \
+    "cannot read 'fifo': nothing came through it for 1 s" \
+    env VROC_TIMEOUT=1 "$VROC" -b -c 'polyhedron p; file = fifo'
+tetra() { # FILE N: a tetrahedron in OBJ, its first line a comment of N bytes
+    awk -v n="$2" 'BEGIN { printf "#"; for (i = 1; i < n; i++) printf "x"; print "";
+        print "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\nf 1 3 4\nf 2 3 4" }' > "$1"
+}
+tetra t1.obj 1048576
+tetra t2.obj 1048577
+expect "a mesh file's line of 1 MiB is read" 0 "polyhedron" "$VROC" -b -c 'polyhedron p; file = t1.obj; list'
+expect "one of 1 MiB and a byte is refused with file:line" 1 "t2.obj:1: a line longer than 1048576 bytes" \
+    "$VROC" -b -c 'polyhedron p; file = t2.obj'
 # reads nested in reads: ten files that each read the next ten times
 for d in 0 1 2 3 4 5 6; do
     : > "f$d.vroc"
