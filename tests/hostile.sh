@@ -140,6 +140,11 @@ tetra t2.obj 1048577
 expect "a mesh file's line of 1 MiB is read" 0 "polyhedron" "$VROC" -b -c 'polyhedron p; file = t1.obj; list'
 expect "one of 1 MiB and a byte is refused with file:line" 1 "t2.obj:1: a line longer than 1048576 bytes" \
     "$VROC" -b -c 'polyhedron p; file = t2.obj'
+# random N takes room as objects find it: 90 million asked of a box that holds
+# 611 took 8 GB before (the fuzz campaign's hang)
+expect "random 90111111 in a box for 611 says so, in bounded memory" 1 \
+    "error: random: only 611 of the 90111111 objects found room in random_box" \
+    bounded 300000 "$VROC" -b -c 'random 90111111'
 # reads nested in reads: ten files that each read the next ten times
 for d in 0 1 2 3 4 5 6; do
     : > "f$d.vroc"
