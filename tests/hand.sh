@@ -114,7 +114,7 @@ fly() {
     q() { awk -v a="$1" 'BEGIN { printf "%.17g,0,0,%.17g", cos(a / 2), sin(a / 2) }'; }
     printf '%s\n0,0,0,0,%s,1,0\n0.5,0,0,0,%s,0,0\n' "$H" "$(q 0.7)" "$(q "$(awk -v t="$3" 'BEGIN { print 0.7 + t }')")" \
         > "$TMP/fly.csv"
-    "$VROC" -b -q -c "fly_speed = $2; tracker = $TMP/fly.csv; run 10; show" > "$TMP/fly-out" 2>&1
+    "$VROC" -b -q -c "fly_speed = $2; tracker = $TMP/fly.csv; run 10; precision = exact; show" > "$TMP/fly-out" 2>&1
     check "$1" "$TMP/fly-out" -F'[(), ]+' -v ex="$4" -v ey="$5" '
         /^head = / { hx = $3; hy = $4; hz = $5 } /^look_at = / { lx = $3; ly = $4; lz = $5 }
         END { e = (hx-ex)^2 + (hy-ey)^2 + hz^2 + (lx-ex)^2 + (ly-1-ey)^2 + lz^2

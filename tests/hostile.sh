@@ -61,9 +61,9 @@ has "a fall of 451.7 s, just inside, goes on falling" "$out" "resting = off"
 out=$("$VROC" -b -c 'sphere ball; force = (0, 0, -1) 10000; run 20; save fast.vroc' 2>&1)
 has "a ball faster than the limits of a velocity (1000 g for 1.1 s) rests too" "$out" \
     "warning: 'ball' left the limits of a state at time = 1.1 (a velocity beyond 10000 m/s, or a spin beyond what the limits give): it rests where it left them, at translate = (0, 0, -6049.999999999977)"
-expect "and reads back" 0 "velocity = (0, 0, 0)" "$VROC" -b fast.vroc -c 'print ball'
+expect "and reads back" 0 "linear_vel = (0, 0, 0)" "$VROC" -b fast.vroc -c 'print ball'
 expect "the clock runs to its limit, 1e12 s" 0 "time = 1000000000000" \
-    "$VROC" -b -c 'time_step = 1000; clock = (999999998000, 0); run 2; time'
+    "$VROC" -b -c 'precision = exact; time_step = 1000; clock = (999999998000, 0); run 2; time'
 expect "and no further" 1 "error: time cannot run past 1000000000000 s" \
     "$VROC" -b -c 'time_step = 1000; clock = (999999998000, 0); run 3'
 
@@ -87,7 +87,7 @@ expect "a folder name with a quote and a backslash is saved so that it reads bac
 # ---- messages never echo raw bytes ----
 printf 'sphere a\n\377\376x = 1\n' > bin.vroc
 has "bytes that are not printable are escaped in messages" "$("$VROC" -b bin.vroc 2>&1)" \
-    "bin.vroc:2: error: unknown command '\\xff\\xfex' (help lists the commands)"
+    "bin.vroc:2: error: unknown command '\\xff\\xfex' (help lists them all)"
 printf 'read "a\001\033[2J\302\233b"\n' > ctl.vroc
 has "control characters too (C0, C1)" "$("$VROC" -b ctl.vroc 2>&1)" \
     "ctl.vroc:1: error: cannot read 'a\\x01\\x1b[2J\\xc2\\x9bb': No such file or directory"
@@ -298,13 +298,13 @@ FAKE
     same "and the old movie is whole" old-before.mp4 old.mp4
     noparts "and no part file (the video, the sound, the muxed file) is left"
     [ -f s.wav ] && ok "the soundtrack itself is written" || notok "the soundtrack itself is written" "$(ls -A)"
-    # a time_step grown from 1e-6 to 1000 wants 1e9 pictures of one frame
-    out=$("$VROC" -b -c 'sphere a; image_size = (16, 16); time_step = 1e-6; movie = rep.mp4; step; time_step = 1000; step; movie = off' 2>&1)
-    has "a frame that wants 1e9 pictures gets 1000, and the movie says so" "$out" \
-        "warning: movie: a frame of time_step = 1000 s would be 1000000000 pictures at 1000000 a second; it gets 1000, and the movie skips the rest (its sound goes on, out of step from there)"
+    # a time_step grown from 1e-3 to 1000 wants 1e6 pictures of one frame
+    out=$("$VROC" -b -c 'sphere a; image_size = (16, 16); movie_rate = 1000; time_step = 0.001; movie = rep.mp4; step; time_step = 1000; step; movie = off' 2>&1)
+    has "a frame that wants 1e6 pictures gets 1000, and the movie says so" "$out" \
+        "warning: movie: a frame of time_step = 1000 s would be 1000000 pictures at 1000 a second; it gets 1000, and the movie skips the rest (its sound goes on, out of step from there)"
     frames() { ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 "$1"; }
-    is "the movie holds the first frame and the 1000" "$(frames rep.mp4)" 1001
-    out=$("$VROC" -b -c 'sphere a; image_size = (16, 16); time_step = 0.001; movie = rep2.mp4; step; time_step = 1; step; movie = off' 2>&1)
+    is "the movie holds the first frame's picture and the 1000" "$(frames rep.mp4)" 1001
+    out=$("$VROC" -b -c 'sphere a; image_size = (16, 16); movie_rate = 1000; time_step = 0.001; movie = rep2.mp4; step; time_step = 1; step; movie = off' 2>&1)
     printf '%s' "$out" | grep -q warning && notok "1000 pictures of a frame, just inside, are no news" "$out" ||
         ok "1000 pictures of a frame, just inside, are no news"
     is "and all are in the movie" "$(frames rep2.mp4)" 1001

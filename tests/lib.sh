@@ -39,6 +39,12 @@ tmux_ready() {
     fi
     export TMUX_TMPDIR="$TMP"
 }
+# start_session ARGS: the session $SES, 120x40, running vroc ARGS (shell words,
+# as typed) in $TMP with HOME there; EXIT=N shows its exit status after it
+start_session() {
+    tmux -f /dev/null new-session -d -s "$SES" -x 120 -y 40 \
+        "cd '$TMP' && HOME='$TMP' ASAN_OPTIONS='$ASAN_OPTIONS' '$VROC' $*; echo EXIT=\$?; sleep 30"
+}
 screen() { tmux capture-pane -p -t "$SES" -S -80; }
 type_() { tmux send-keys -t "$SES" "$@"; }
 # wait until the screen shows PATTERN (fixed string), up to 20 s (sanitizer builds are slow)

@@ -1,9 +1,10 @@
 #!/bin/sh
 # movie.sh: movies checked with ffprobe from outside: size (side by side, padded
-# to even), frame count and rate against simulated time (time_step changes
-# included), the soundtrack muxed in or not, the file finished by movie = off or
-# the end; errors for a missing ffmpeg, an unwritable path and a missing extension;
-# and the simulation the same with and without a movie.
+# to even), frame count and rate against simulated time (movie_rate, and
+# time_step changes), pictures between frames where the rate asks for them, the
+# soundtrack muxed in or not, the file finished by movie = off or the end; errors
+# for a missing ffmpeg, an unwritable path and a missing extension; and the
+# simulation the same with and without a movie.
 . "$(dirname "$0")/lib.sh"
 S=$(cd "$(dirname "$0")/../scenes" && pwd)
 for c in ffprobe ffmpeg; do
@@ -22,8 +23,8 @@ is() { # TEXT GOT WANT
 }
 
 "$VROC" -b -q "$S/simple.vroc" -c "image_size = (161, 121); soundtrack = $TMP/a.wav; movie = $TMP/pair.mp4; run 20" 2>"$TMP/err"
-is "pair: both eyes side by side, odd sizes padded (322x122), 20 frames at 10/s, AAC sound" \
-    "$(probe "$TMP/pair.mp4")" "322x122 frames=20 rate=10/1 audio=aac"
+is "pair: both eyes side by side, odd sizes padded (322x122), 60 pictures at 30/s (movie_rate's default) for 20 frames, AAC sound" \
+    "$(probe "$TMP/pair.mp4")" "322x122 frames=60 rate=30/1 audio=aac"
 d=$(ffprobe -v error -show_entries format=duration -of csv=p=0 "$TMP/pair.mp4")
 awk -v d="$d" 'BEGIN { exit !(d > 1.95 && d < 2.1) }' && ok "the movie lasts the 2 s of simulated time" ||
     notok "the movie lasts the 2 s of simulated time" "duration $d" "$(cat "$TMP/err")"
@@ -39,25 +40,41 @@ film() {
     is "$1" "$(probe "$TMP/$3")" "$2"
 }
 film "mono: the left eye, no sound without a soundtrack" "160x120 frames=5 rate=10/1 audio=none" \
-    mono.mp4 "image_size = (160, 120); stereo = mono; movie = $TMP/mono.mp4; run 5"
+    mono.mp4 "image_size = (160, 120); stereo = mono; movie_rate = 10; movie = $TMP/mono.mp4; run 5"
 film "anaglyph in Matroska" "160x120 frames=5 rate=10/1 audio=none" \
-    ana.mkv "image_size = (160, 120); stereo = anaglyph; movie = $TMP/ana.mkv; run 5"
+    ana.mkv "image_size = (160, 120); stereo = anaglyph; movie_rate = 10; movie = $TMP/ana.mkv; run 5"
 film "sbs in WebM, what the extension names" "320x120 frames=3 rate=10/1 audio=none" \
-    sbs.webm "image_size = (160, 120); stereo = sbs; movie = $TMP/sbs.webm; run 3"
+    sbs.webm "image_size = (160, 120); stereo = sbs; movie_rate = 10; movie = $TMP/sbs.webm; run 3"
 
-# video time is simulated time: 1 s at 0.1, 0.5 s at 0.05 (every other frame), 1 s at 0.2
-# (each frame twice): 25 frames at 10/s
-film "time_step changes: frames skipped and repeated to keep simulated time (25 at 10/s)" \
+# video time is simulated time: at 10 pictures a second, 1 s at 0.1, 0.5 s at 0.05
+# (a picture every other frame), 1 s at 0.2 (two a frame): 25 pictures
+film "time_step changes: pictures keep simulated time (25 at 10/s)" \
     "128x48 frames=25 rate=10/1 audio=none" steps.mp4 \
-    "image_size = (64, 48); movie = $TMP/steps.mp4; run 10; time_step = 0.05; run 10; time_step = 0.2; run 5"
-film "the frame rate is 1 / time_step (25/s)" "128x48 frames=7 rate=25/1 audio=none" \
-    r25.mp4 "time_step = 0.04; image_size = (64, 48); movie = $TMP/r25.mp4; run 7"
+    "image_size = (64, 48); movie_rate = 10; movie = $TMP/steps.mp4; run 10; time_step = 0.05; run 10; time_step = 0.2; run 5"
+film "the frame rate is movie_rate (25/s)" "128x48 frames=7 rate=25/1 audio=none" \
+    r25.mp4 "time_step = 0.04; image_size = (64, 48); movie_rate = 25; movie = $TMP/r25.mp4; run 7"
+film "movie_rate as the movie starts holds for it (an expression: 60/2)" "128x48 frames=30 rate=30/1 audio=none" \
+    r30.mp4 "image_size = (64, 48); movie_rate = 60/2; movie = $TMP/r30.mp4; movie_rate = 5; run 10"
 
 film "movie = off finishes the file there" "128x48 frames=4 rate=10/1 audio=none" \
-    early.mp4 "image_size = (64, 48); movie = $TMP/early.mp4; run 4; movie = off; run 4"
+    early.mp4 "image_size = (64, 48); movie_rate = 10; movie = $TMP/early.mp4; run 4; movie = off; run 4"
 # a soundtrack started after the movie: silence first, then its sound, as long as the movie
 film "a soundtrack that starts later is muxed in all the same" "128x48 frames=15 rate=10/1 audio=aac" \
-    late.mp4 "image_size = (64, 48); movie = $TMP/late.mp4; run 5; soundtrack = $TMP/late.wav; run 10"
+    late.mp4 "image_size = (64, 48); movie_rate = 10; movie = $TMP/late.mp4; run 5; soundtrack = $TMP/late.wav; run 10"
+
+# pictures between frames: a ball crossing the view at 3 m/s, 3 frames of 0.1 s at
+# 30 pictures a second: 9 pictures, each a third of a frame on, evenly spaced (not
+# three copies of each frame's view)
+"$VROC" -b -q -c "image_size = (160, 128); stereo = mono; sphere b; radius = 0.05; translate = (-0.5, 1.5, 0); linear_vel = (3, 0, 0); movie = $TMP/between.mp4; run 3" 2>/dev/null
+cols=""
+for n in 0 1 2 3 4 5 6 7 8; do
+    ffmpeg -v error -y -i "$TMP/between.mp4" -vf "select=eq(n\,$n)" -frames:v 1 -f rawvideo -pix_fmt gray "$TMP/b.gray"
+    cols="$cols $(od -An -v -tu1 -w160 "$TMP/b.gray" | awk '{ for (i = 1; i <= NF; i++) if ($i > 40) { s += i; c++ } } END { printf "%.2f", c ? s / c : -1 }')"
+done
+echo "$cols" | awk '{ for (i = 2; i <= NF; i++) { d = $i - $(i - 1); s += d; if (d < lo || i == 2) lo = d; if (d > hi) hi = d }
+    exit !(NF == 9 && lo > 3 && hi - lo < 0.15 * s / 8) }' &&
+    ok "pictures within a frame show the ball between its places (columns$cols)" ||
+    notok "pictures within a frame show the ball between its places" "columns:$cols"
 
 # the frames show the scene: a frame taken out of the movie is not one flat colour
 ffmpeg -v error -y -i "$TMP/pair.mp4" -vf "select=eq(n\,10)" -frames:v 1 -f rawvideo -pix_fmt gray "$TMP/f10.gray" 2>&1
@@ -68,7 +85,7 @@ echo "$spread" | awk '{ exit !($1 == 322 * 122 && $2 > 200) }' && ok "a frame of
 # frame n of the movie is the view after simulated frame n + 1, as record writes it
 # (H.264 changes a pixel by less than 1 on average; the frame before differs more)
 mkdir -p "$TMP/rec"
-"$VROC" -b -q "$S/simple.vroc" -c "image_size = (160, 128); output = $TMP/rec; record = on; movie = $TMP/rec/m.mp4; run 8" 2>/dev/null
+"$VROC" -b -q "$S/simple.vroc" -c "image_size = (160, 128); output = $TMP/rec; record = on; movie_rate = 10; movie = $TMP/rec/m.mp4; run 8" 2>/dev/null
 ffmpeg -v error -y -i "$TMP/rec/m.mp4" -vf "select=eq(n\,4),crop=160:128:0:0" -frames:v 1 -f rawvideo -pix_fmt rgb24 "$TMP/rec/f4.rgb"
 mad() { # the mean absolute difference of the movie's frame 4 (left eye) and a PNG
     ffmpeg -v error -y -i "$1" -f rawvideo -pix_fmt rgb24 "$TMP/rec/png.rgb"

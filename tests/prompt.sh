@@ -5,8 +5,7 @@
 tmux_ready || exit 0
 SES=vroc$$
 
-tmux -f /dev/null new-session -d -s "$SES" -x 120 -y 40 \
-    "cd '$TMP' && HOME='$TMP' ASAN_OPTIONS='$ASAN_OPTIONS' '$VROC'; echo EXIT=\$?; sleep 30"
+start_session
 check_screen "the banner and the prompt" "vroc>"
 
 type_ "sph" Tab
@@ -57,8 +56,7 @@ else notok "history kept in ~/.vroc_history" "$(cat "$TMP/.vroc_history" 2>&1)";
 # while it exits can fail ("server exited unexpectedly").
 FIRST=$SES
 SES=vroc$$b
-tmux -f /dev/null new-session -d -s "$SES" -x 120 -y 40 \
-    "cd '$TMP' && HOME='$TMP' ASAN_OPTIONS='$ASAN_OPTIONS' '$VROC' -q; echo EXIT=\$?; sleep 30"
+start_session -q
 tmux kill-session -t "$FIRST" 2>/dev/null
 check_screen "a second session starts" "vroc>"
 type_ Up

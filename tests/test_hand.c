@@ -289,8 +289,12 @@ static char *snapshot(shell *sh)
     char *text;
     size_t len;
     FILE *f = open_memstream(&text, &len);
+    int shown = sh->set.precision; /* every setting to the bit, and then put back */
+    sh->set.precision = FMT_EXACT;
     settings_write(f, sh, 0);
-    for (int i = 0; i < sh->w.n; i++) body_write(f, sh->w.bodies[i]);
+    sh->set.precision = shown;
+    fprintf(f, "precision %d\n", shown);
+    for (int i = 0; i < sh->w.n; i++) body_write(f, sh->w.bodies[i], (write_style){FMT_EXACT, false, NULL});
     fclose(f);
     return text;
 }
@@ -423,21 +427,45 @@ static void the_panel_and_hand_appear_where_the_eyes_project_them(void **state)
     assert_near(c[0] - c[1], want_disp, 1.0);
     assert_true(c[0] - c[1] > 15); /* crossed: further right in the left eye */
 
-    /* the hand alone, 1.5 m away (beyond D: uncrossed), pointing along +x: its
-     * tip is the right end of what is drawn, its body 8 cm long and 2.4 cm wide */
-    render(&s, "hand = (-0.3, 1.5, -0.2)");
-    want_disp = HT / 2.0 * 0.064 * (1 / 1.5 - 1) / tan(M_PI / 6);
+    /* the hand alone, 0.8 m away (nearer than D), pointing along +x: its tip is
+     * the right end of what is drawn, its body 8 cm long and 2.4 cm wide (16
+     * pixels at that distance, more than the least, 12) */
+    render(&s, "hand = (-0.3, 0.8, -0.2)");
+    want_disp = HT / 2.0 * 0.064 * (1 / 0.8 - 1) / tan(M_PI / 6);
     for (int eye = 0; eye < 2; eye++) {
         int x0, y0, x1, y1;
         assert_true(bbox(eye_pixels(&s.sh, eye), not_bg, 0, 0, W, HT, &x0, &y0, &x1, &y1));
         /* (the tip is a point: its last pixels are too thin to be drawn) */
-        assert_true(x1 <= column(eye, -0.3, 1.5) + 1.5 && x1 >= column(eye, -0.3, 1.5) - 4);
-        assert_near(x0, column(eye, -0.38, 1.5), 1.5);
-        assert_near(0.5 * (y0 + y1), row(-0.2, 1.5), 1.0);
+        assert_true(x1 <= column(eye, -0.3, 0.8) + 1.5 && x1 >= column(eye, -0.3, 0.8) - 4);
+        /* (the base is a square along the line of sight: its near edge, 1.2 cm
+         * nearer, reaches furthest left and down, its far edge up, below the eyes) */
+        assert_near(x0, column(eye, -0.38, 0.788), 1.5);
+        assert_near(y0, row(-0.2 + 0.012, 0.812), 1.5);
+        assert_near(y1, row(-0.2 - 0.012, 0.788), 1.5);
         c[eye] = x0;
     }
     assert_near(c[0] - c[1], want_disp, 1.0);
-    assert_true(c[0] - c[1] < -5);
+    assert_true(c[0] - c[1] > 5);
+    /* far away, 1.5 m (beyond D: uncrossed) and 6 m, the pointer is drawn larger
+     * about its tip, so that it stays 12 pixels across (2.4 cm would be 7 and 2) */
+    for (int k = 0; k < 2; k++) {
+        double d = k == 0 ? 1.5 : 6;
+        char text[96];
+        snprintf(text, sizeof text, "hand = (-0.3, %g, -0.2)", d);
+        render(&s, text);
+        double px_per_m = HT / (2 * d * tan(M_PI / 6)), scale = 12 / (0.024 * px_per_m);
+        for (int eye = 0; eye < 2; eye++) {
+            int x0, y0, x1, y1;
+            assert_true(bbox(eye_pixels(&s.sh, eye), not_bg, 0, 0, W, HT, &x0, &y0, &x1, &y1));
+            double h = 0.012 * scale, near = d - h, far = d + h; /* the base's edges */
+            assert_true(y1 - y0 >= 12);
+            assert_near(y0, row(-0.2 + h, far), 1.5);
+            assert_near(y1, row(-0.2 - h, near), 1.5);
+            assert_near(x0, column(eye, -0.3 - 0.08 * scale, near), 1.5);
+            c[eye] = x0;
+        }
+        if (k == 0) assert_true(c[0] - c[1] < -5);
+    }
 
     /* real = hidden hides the room, not the hand (nor the panel) */
     render(&s, "cube wall; mass = -1; size = (2, 0.1, 2); translate = (0, 3, 0); real = hidden\n"

@@ -2,6 +2,7 @@
  * broken statements and files, each with its message and its line. */
 #include "check.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -143,6 +144,179 @@ static void the_catalogue_of_broken_statements(void **state)
     expect_error("trace = \n", 1, "missing value");
     expect_error("output = \"\"\n", 1, "file name is empty");
     expect_error("sphere a; radius = 1; bogus\n", 1, "unknown command 'bogus'");
+    expect_error("plot\n", 1, "plot: missing the quantity: energy, momentum or NAME.height");
+    expect_error("plot energie = e.png\n", 1,
+                 "plot: the quantity is energy, momentum or NAME.height (got 'energie'): did you mean energy?");
+    expect_error("plot ball.radius = e.png\n", 1, "the quantity is energy, momentum or NAME.height");
+    expect_error("plot 3d.height = e.png\n", 1, "'3d' is not a valid object name");
+    expect_error("plot energy e.png\n", 1, "plot: expected '= FILE.png' after the quantity, got 'e.png'");
+    expect_error("plot energy =\n", 1, "plot: missing a file name");
+    expect_error("plot energy = e.jpg\n", 1, "plot: the file must be a .png (got 'e.jpg')");
+    expect_error("plot energy = e.png now\n", 1, "plot: unexpected 'now' after the value");
+    expect_error("energy 3d\n", 1, "'3d' is not a valid object name");
+    expect_error("show a b\n", 1, "show: unexpected 'b'");
+    expect_error("print a.\n", 1, "'' is not an object property");
+    expect_error("print a.radus\n", 1, "'radus' is not an object property: did you mean radius?");
+    expect_error("precision = long\n", 1, "precision must be one of short|exact (got 'long')");
+}
+
+/* The caret under an error's excerpt: its column in the statement (0 first), or
+ * -1 when the message has none. */
+static int caret_column(const char *err)
+{
+    const char *a = strchr(err, '\n');
+    const char *b = a ? strchr(a + 1, '\n') : NULL;
+    const char *caret = b ? strchr(b + 1, '^') : NULL;
+    return caret ? (int)(caret - (b + 1)) - 4 : -1;
+}
+
+/* Every number may be an expression (language.md, "The console beyond the
+ * thesis"): the grammar's cases, then every error with the column it points at. */
+static void expressions(void **state)
+{
+    (void)state;
+    const struct {
+        const char *text;
+        double want;
+        int slot; /* which number of the statement */
+    } values[] = {
+        {"radius = 1/3", 1.0 / 3, 0},
+        {"radius = 0.1", 0.1, 0},             /* a lone literal is strtod's double */
+        {"radius = 1e3", 1000, 0},
+        {"radius = 0x10", 16, 0},
+        {"radius = .5", 0.5, 0},
+        {"radius = 1.5e-3", 1.5e-3, 0},
+        {"radius =   7   ", 7, 0},
+        {"radius = 1+2*3", 7, 0},             /* * before + */
+        {"radius = (1+2)*3", 9, 0},
+        {"radius = 10-4-3", 3, 0},            /* left to right */
+        {"radius = 100/10/5", 2, 0},
+        {"radius = 2^3^2", 512, 0},           /* ^ to the right */
+        {"radius = 2^-1", 0.5, 0},
+        {"radius = -(-3)", 3, 0},
+        {"radius = +4", 4, 0},
+        {"radius = 2 * 3", 6, 0},
+        {"radius = pi", M_PI, 0},
+        {"radius = e", M_E, 0},
+        {"radius = sqrt(16)", 4, 0},
+        {"radius = sin(pi/2)", 1, 0},
+        {"radius = cos(0)", 1, 0},
+        {"radius = 1 + tan(0)", 1, 0},
+        {"radius = asin(1)", M_PI / 2, 0},
+        {"radius = 1 + acos(1)", 1, 0},
+        {"radius = atan2(1, 1)", M_PI / 4, 0},
+        {"radius = exp(0)", 1, 0},
+        {"radius = log(e)", 1, 0},
+        {"radius = abs(-3)", 3, 0},
+        {"radius = min(3, 1, 2)", 1, 0},
+        {"radius = max(1, 5)", 5, 0},
+        {"radius = min(1, max(2, 3))", 1, 0},
+        {"translate = (min(1, 2), -2^2, atan2(0, 1))", -4, 1}, /* commas inside a call */
+        {"translate = ((1), (2+3)*2, 3)", 10, 1},
+        {"rotate = (0, 0, 1) pi/2", M_PI / 2, 3},
+        {"rotate = (0, 0, 1) 30 deg", M_PI / 6, 3},
+        {"rotate = (0, 0, 1) 2*30 deg", 2 * (30 * (M_PI / 180)), 3}, /* deg binds tightest */
+        {"rotate = (0, 0, 1) -90 deg", -(90 * (M_PI / 180)), 3},
+        {"rotate = (0, 0, 1) 2^2 deg", pow(2, 2 * (M_PI / 180)), 3},
+        {"angular_vel = (0, 0, 90 deg)", 90 * (M_PI / 180), 2},
+        {"max_angular = 180 deg", M_PI, 0},
+        {"run 2*50", 100, 0},
+        {"ures = 2^4", 16, 0},
+        {"color = (255/5, 2*100, 255)", 200, 1},
+    };
+    for (size_t k = 0; k < sizeof values / sizeof values[0]; k++) {
+        char text[128];
+        snprintf(text, sizeof text, "sphere a\n%s\n", values[k].text);
+        program *p = parse(text);
+        if (!p) fail_msg("'%s' refused: %s", values[k].text, g_err);
+        double got = p->s[1].num[values[k].slot], want = values[k].want;
+        if (!(got == want)) fail_msg("'%s' gave %.17g, not %.17g", values[k].text, got, want);
+        program_free(p);
+    }
+    program *p = parse("translate = (-0, 0, 0)\n");
+    if (!p) fail_msg("%s", g_err);
+    assert_true(p->s[0].num[0] == 0 && signbit(p->s[0].num[0])); /* as strtod reads it */
+    program_free(p);
+
+    const struct {
+        const char *text, *msg;
+        int col; /* of the caret, in text; -1: none */
+    } errors[] = {
+        {"radius = 1/0", "radius: division by zero", 10},
+        {"radius = 1/(2-2)", "radius: division by zero", 10},
+        {"radius = sqrt(-1)", "radius: sqrt of a negative number (-1)", 9},
+        {"radius = log(0)", "radius: log of a number that is not > 0 (0)", 9},
+        {"radius = asin(2)", "radius: asin of a number outside -1 to 1 (2)", 9},
+        {"radius = acos(-1.5)", "radius: acos of a number outside -1 to 1 (-1.5)", 9},
+        {"radius = (-8)^(1/3)", "a negative number to a power that is not whole", 13},
+        {"radius = 0^-1", "radius: 0 to a negative power is not a number", 10},
+        {"radius = 10^400", "radius: the power is not a finite number", 11},
+        {"radius = exp(1000)", "radius: exp(...) is not a finite number", 9},
+        {"radius = 1e308*10", "radius: the product is not a finite number", 14},
+        {"radius = 1e308/1e-308", "radius: the quotient is not a finite number", 14},
+        {"radius = 1e308+1e308", "radius: the sum is not a finite number", 14},
+        {"radius = -1e308-1e308", "radius: the difference is not a finite number", 15},
+        {"radius = 1e999", "radius must be a finite number (got 1e999)", 9},
+        {"radius = nan", "radius must be a finite number (got nan)", 9},
+        {"radius = -inf", "radius must be a finite number (got inf)", 10},
+        {"radius = pj", "radius: expected a number, got 'pj': did you mean pi?", 9},
+        {"radius = 2*sqr(4)", "radius: expected a number, got 'sqr': did you mean sqrt?", 11},
+        {"radius = x", "radius: expected a number, got 'x'", 9},
+        {"radius = 1 +", "radius: expected a number at the end", 12},
+        {"radius = *2", "radius: expected a number, got '*'", 9},
+        {"radius = )", "radius: expected a number, got ')'", 9},
+        {"radius = (1+2", "radius: this '(' is not closed", 9},
+        {"radius = (1+2 3)", "radius: expected ')' to close the '(', got '3'", 14},
+        {"radius = sqrt 4", "radius: sqrt is a function: write sqrt(x)", 9},
+        {"radius = sqrt(1, 2)", "radius: sqrt takes 1 number (got 2)", 9},
+        {"radius = atan2(1)", "radius: atan2 takes 2 numbers (got 1)", 9},
+        {"radius = min(1)", "radius: min takes 2 numbers or more (got 1)", 9},
+        {"radius = max(1, 2", "radius: this '(' is not closed", 12},
+        {"radius = atan2(1 2)", "radius: expected ',' or ')' in the function's arguments, got '2'", 17},
+        {"radius = 30 deg", "radius is not an angle: deg (degrees to radians) does not apply", 12},
+        {"radius = deg", "radius: deg follows the number it converts", 9},
+        {"fov = 60 deg", "fov is in degrees already: write the number without deg", 9},
+        {"translate = (1, 2 deg, 3)", "translate is not an angle", 18},
+        {"rotate = (0, 0, 1 deg) 1", "rotate is not an angle", 18},
+        {"force = (0, 0, -1) 9.8 deg", "force is not an angle", 23},
+        {"radius = 2 3", "radius: unexpected '3' after the value", 11},
+        {"radius = 2 pi", "radius: unexpected 'pi' after the value", 11},
+        {"radius = 30 deg deg", "radius is not an angle", 12},
+        {"rotate = (0, 0, 1) 30 deg deg", "rotate: unexpected 'deg' after the value", 26},
+        {"translate = (1, 2)", "translate: expected (x, y, z) with 3 numbers, got ')'", 17},
+        {"translate = (1, 2, 3", "translate: unfinished vector: expected (x, y, z)", 20},
+        {"translate = 1, 2, 3", "translate: expected (x, y, z), got '1'", 12},
+        {"translate = (1, x, 3)", "translate: expected a number, got 'x'", 16},
+        {"radius = \"3\"", "radius: expected a number, got '3'", -1},
+    };
+    for (size_t k = 0; k < sizeof errors / sizeof errors[0]; k++) {
+        char text[128];
+        snprintf(text, sizeof text, "%s\n", errors[k].text);
+        expect_error(text, 1, errors[k].msg);
+        int col = caret_column(g_err);
+        if (col != errors[k].col)
+            fail_msg("'%s': the caret is at %d, not %d:\n%s", errors[k].text, col, errors[k].col,
+                     g_err);
+    }
+    /* nesting has a limit: a hostile line cannot exhaust the stack */
+    char deep[1024];
+    snprintf(deep, sizeof deep, "radius = ");
+    for (int k = 0; k < 300; k++) strcat(deep, "-");
+    strcat(deep, "1\n");
+    expect_error(deep, 1, "radius: the expression nests deeper than 200 levels");
+    snprintf(deep, sizeof deep, "radius = ");
+    for (int k = 0; k < 300; k++) strcat(deep, "(");
+    strcat(deep, "1\n");
+    expect_error(deep, 1, "radius: the expression nests deeper than 200 levels");
+    /* a long line is quoted about the caret, with ... where it is cut */
+    char lng[512];
+    snprintf(lng, sizeof lng, "radius = 1");
+    for (int k = 0; k < 100; k++) strcat(lng, "+1");
+    strcat(lng, "+/2\n");
+    expect_error(lng, 1, "radius: expected a number, got '/'");
+    assert_non_null(strstr(g_err, "\n    ...1+1+1"));
+    assert_non_null(strstr(g_err, "+1+/2\n"));
+    assert_int_equal(caret_column(g_err), 3 + 52);
 }
 
 /* A number may be as long as a word: digits beyond a double's are rounded. */
@@ -341,7 +515,8 @@ static void table_and_reference_agree(void **state)
         if (strncmp(h->usage, c->name, strlen(c->name)) != 0)
             fail_msg("commands/%s: usage '%s' does not start with the command", c->name,
                      h->usage);
-        if ((c->form != FORM_ACTION) != (strstr(h->usage, " = ") != NULL))
+        /* (plot QUANTITY = FILE is an action written with '=') */
+        if ((c->form != FORM_ACTION || c->arg == ARG_PLOT) != (strstr(h->usage, " = ") != NULL))
             fail_msg("commands/%s: usage '%s' disagrees with the table about '='", c->name,
                      h->usage);
     }
@@ -357,6 +532,7 @@ int main(void)
         cmocka_unit_test(the_catalogue_of_broken_statements),
         cmocka_unit_test(binary_garbage_and_huge_lines),
         cmocka_unit_test(long_numbers),
+        cmocka_unit_test(expressions),
         cmocka_unit_test(files_read_files),
         cmocka_unit_test(names),
         cmocka_unit_test(numbers_print_to_read_back_exactly),

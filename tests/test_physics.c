@@ -10,6 +10,7 @@
  * mixed objects; free rotation keeps energy and angular momentum and follows
  * Euler's equations; a spinning rod touches a thin plate first when root finding
  * says it does; thin plates stop small fast balls whatever collision_dist.
+ * The energy and momenta of energy.h are the textbook's.
  * Every test raises max_linear and max_angular above the speeds it reaches. */
 #include "check.h"
 
@@ -18,6 +19,7 @@
 #include <time.h>
 
 #include "core/body.h"
+#include "core/energy.h"
 #include "core/sim.h"
 #include "core/world.h"
 #include "worlds.h"
@@ -850,6 +852,87 @@ static int clock_stop(void **state)
     return 0;
 }
 
+/* ------------------------------------------------------------------ energy */
+
+/* energy.h against the textbook, for boxes and balls of random sizes, masses,
+ * places, velocities and spins: kinetic energy m v^2/2 + (I_x wx^2 + I_y wy^2 +
+ * I_z wz^2)/2 with a box's I_x = m (b^2 + c^2)/3 for half-extents (a, b, c) in its
+ * own axes; potential energy m g z under gravity (and -m a . x under any uniform
+ * force); momentum m v; angular momentum about the origin x × m v + I w.  A static
+ * body holds none.  The world's figures are the sums, and in free flight the
+ * total stays what it was. */
+static void energy_is_the_textbooks(void **state)
+{
+    (void)state;
+    unsigned long long seed = 41;
+    for (int trial = 0; trial < 20; trial++) {
+        world w;
+        physics_world(&w, 1e3, 1e3);
+        double g = urand(&seed, 1, 20);
+        vec3 dir = v3(urand(&seed, -1, 1), urand(&seed, -1, 1), urand(&seed, -1, 1));
+        w.set.force = (dir_amount){dir, g};
+        vec3 a = v3_scale(v3_norm(dir), g);
+        vec3 he = v3(urand(&seed, 0.1, 1), urand(&seed, 0.1, 1), urand(&seed, 0.1, 1));
+        body *box = add_box(&w, "box", he);
+        double m = urand(&seed, 0.1, 10);
+        body_set_mass(box, m);
+        box->x = v3(urand(&seed, -5, 5), urand(&seed, -5, 5), urand(&seed, -5, 5));
+        box->v = v3(urand(&seed, -3, 3), urand(&seed, -3, 3), urand(&seed, -3, 3));
+        vec3 wb = v3(urand(&seed, -2, 2), urand(&seed, -2, 2), urand(&seed, -2, 2)); /* box axes */
+        double angle = urand(&seed, 0, 3);
+        vec3 axis = v3(urand(&seed, -1, 1), urand(&seed, -1, 1), 1);
+        body_set_rotation(box, axis, angle);
+        body_set_angular_vel(box, q_rotate(box->q, wb));
+        double r = urand(&seed, 0.1, 1);
+        body *ball = add_ball(&w, "ball", r);
+        double mb = urand(&seed, 0.1, 10);
+        body_set_mass(ball, mb);
+        ball->x = v3(urand(&seed, 30, 40), 0, urand(&seed, -5, 5)); /* never meets the box */
+        ball->v = v3(urand(&seed, -3, 3), urand(&seed, -3, 3), urand(&seed, -3, 3));
+        body_set_angular_vel(ball, v3(0, 0, urand(&seed, -2, 2)));
+        body *floor = add_static_box(&w, "floor", v3(1, 1, 1));
+        floor->x = v3(0, 0, -40);
+
+        double ix = m * (he.y * he.y + he.z * he.z) / 3, iy = m * (he.x * he.x + he.z * he.z) / 3,
+               iz = m * (he.x * he.x + he.y * he.y) / 3;
+        energy_sum e = energy_of_body(&w, box);
+        assert_rel(e.linear, 0.5 * m * v3_len2(box->v), 1e-12);
+        assert_rel(e.rotational, 0.5 * (ix * wb.x * wb.x + iy * wb.y * wb.y + iz * wb.z * wb.z), 1e-9);
+        assert_near(e.potential, -m * v3_dot(a, box->x), 1e-9 * (1 + fabs(e.potential)));
+        vec3 spin = q_rotate(box->q, v3(ix * wb.x, iy * wb.y, iz * wb.z));
+        vec3 want_L = v3_add(v3_cross(box->x, v3_scale(box->v, m)), spin);
+        assert_true(v3_len(v3_sub(e.angular_momentum, want_L)) < 1e-9 * (1 + v3_len(want_L)));
+        assert_true(v3_len(v3_sub(e.momentum, v3_scale(box->v, m))) < 1e-12 * (1 + v3_len(e.momentum)));
+
+        /* a solid ball: I = 2 m r^2 / 5 */
+        energy_sum eb = energy_of_body(&w, ball);
+        assert_rel(eb.rotational, 0.5 * 0.4 * mb * r * r * v3_len2(ball->w), 1e-9);
+
+        energy_sum ef = energy_of_body(&w, floor);
+        assert_true(ef.linear == 0 && ef.rotational == 0 && ef.potential == 0 &&
+                    v3_len(ef.momentum) == 0 && v3_len(ef.angular_momentum) == 0);
+
+        energy_sum all = energy_of_world(&w);
+        assert_rel(energy_total(all), energy_total(e) + energy_total(eb), 1e-12);
+        assert_rel(energy_kinetic(all), body_energy(box) + body_energy(ball), 1e-12);
+
+        /* free flight (the floor far below): the total is kept */
+        double e0 = energy_total(all);
+        double scale = energy_kinetic(all) + fabs(all.potential);
+        frames(&w, 10);
+        assert_near(energy_total(energy_of_world(&w)), e0, 1e-9 * scale);
+        world_free(&w);
+    }
+    /* under gravity along -z: m g h, whatever the object */
+    world w;
+    physics_world(&w, 50, 50);
+    body *ball = add_ball(&w, "ball", 0.1);
+    body_set_mass(ball, 2);
+    ball->x = v3(3, 4, 5);
+    assert_near(energy_of_world(&w).potential, 2 * G * 5, 1e-12);
+    world_free(&w);
+}
+
 #define timed(f) cmocka_unit_test_setup_teardown(f, clock_start, clock_stop)
 
 int main(void)
@@ -868,6 +951,7 @@ int main(void)
         timed(spinning_rod_touches_a_plate_when_it_should),
         timed(small_fast_balls_never_pass_a_thin_plate),
         timed(thousand_shots_at_any_collision_dist),
+        timed(energy_is_the_textbooks),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -5,6 +5,7 @@
 #include "scratch.h"
 #include "shell_fixture.h"
 
+#include <math.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
@@ -34,8 +35,12 @@ static char *snapshot(void)
     char *text;
     size_t len;
     FILE *f = open_memstream(&text, &len);
+    int shown = g_sh.set.precision; /* every setting to the bit, and then put back */
+    g_sh.set.precision = FMT_EXACT;
     settings_write(f, &g_sh, 0);
-    for (int i = 0; i < g_sh.w.n; i++) body_write(f, g_sh.w.bodies[i]);
+    g_sh.set.precision = shown;
+    fprintf(f, "precision %d\n", shown);
+    for (int i = 0; i < g_sh.w.n; i++) body_write(f, g_sh.w.bodies[i], (write_style){FMT_EXACT, false, NULL});
     fprintf(f, "current %d time %.17g frame %ld\n", g_sh.current, g_sh.w.time, g_sh.w.frame);
     fclose(f);
     return text;
@@ -134,7 +139,7 @@ static void the_bad_input_catalogue(void **state)
     write_file("long.vroc", big, strlen(big));
     path_in_dir(path, sizeof path, "long.vroc");
     snprintf(text, sizeof text, "read \"%s\"\n", path);
-    bad(text, "long.vroc:2: error: radius: expected a number, got '7777");
+    bad(text, "long.vroc:2: error: radius must be a finite number (got '7777");
     memcpy(big + 18 + n, "7x\n", 4);
     write_file("long.vroc", big, strlen(big));
     bad(text, "long.vroc:2: error: a line longer than 1048576 bytes");
@@ -163,9 +168,8 @@ static void the_bad_input_catalogue(void **state)
     bad("movie = /nonexistent/dir/m.mp4\n", "movie: cannot write '/nonexistent/dir/m.mp4'");
     bad(about(text, sizeof text, "movie = \"%s\"\n", "movie"), "has no extension");
     path_in_dir(path, sizeof path, "m.mp4");
-    snprintf(text, sizeof text, "time_step = 0; movie = \"%s\"\n", path);
-    assert_int_equal(run(text), CMD_ERROR);
-    assert_non_null(strstr(g_errbuf, "a movie's frame rate is 1 / time_step, so it must be > 0"));
+    snprintf(text, sizeof text, "movie_rate = 0; movie = \"%s\"\n", path);
+    bad(text, "movie_rate must be between 0 and 1000, limits excluded (got 0)");
     assert_int_equal(access(path, F_OK), -1); /* no file left behind */
     bad("tracker = /nonexistent.trk\n", "cannot read '/nonexistent.trk'");
     bad("run 1; run 1; run 1e9999\n", "run must be a finite number");
@@ -500,12 +504,12 @@ static void trace_writes_a_row_per_object_per_frame(void **state)
     int rows = 0;
     double z = 0, t = 0;
     assert_non_null(fgets(line, sizeof line, f));
-    assert_string_equal(line, "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,state\n");
+    assert_string_equal(line, "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,state,ke\n");
     while (fgets(line, sizeof line, f)) {
         rows++;
         int commas = 0;
         for (char *p = line; *p; p++) commas += *p == ',';
-        assert_int_equal(commas, 16);
+        assert_int_equal(commas, 17);
         long frame;
         char name[16];
         double x, y;
@@ -515,10 +519,88 @@ static void trace_writes_a_row_per_object_per_frame(void **state)
             assert_near(z, 4.0 - 4.9, 1e-9);
             assert_near(t, 1.0, 1e-12);
         }
-        assert_non_null(strstr(line, ",dynamic\n"));
+        char *st = strstr(line, ",dynamic,");
+        assert_non_null(st);
+        /* ke, the last column: m |v|^2 / 2 with v = (1, 0, 4 - g t) for a, (0, 0, -g t) for b */
+        double ke = strtod(st + strlen(",dynamic,"), NULL);
+        double vz = (strcmp(name, "a") == 0 ? 4 : 0) - 9.8 * t, vx = strcmp(name, "a") == 0;
+        assert_near(ke, 0.5 * (vx * vx + vz * vz), 1e-9);
     }
     fclose(f);
     assert_int_equal(rows, 2 * 11); /* two objects, at the start and after 10 frames */
+}
+
+/* plot's figures (figures.h): each frame's row, each object's series aligned with
+ * the rows (a new object starts late, a deleted one ends, one back after a gap
+ * goes on with NaN between), the oldest dropped past the frame and height
+ * limits, and plot saying so; the figures are the world's (energy.h). */
+static void figures_of_the_run(void **state)
+{
+    (void)state;
+    assert_int_equal(run("restart; gravity; sphere a; translate = (0, 0, 5); run 3\n"
+                         "sphere b; translate = (3, 0, 5); run 2; delete b; run 2\n"
+                         "sphere b; translate = (3, 0, 9); run 1\n"),
+                     CMD_OK);
+    const figures *f = &g_sh.figs;
+    assert_int_equal(f->n, 9); /* the start and 8 frames */
+    assert_int_equal(f->dropped, 0);
+    for (int r = 0; r < f->n; r++) {
+        assert_int_equal(f->rows[r].frame, r);
+        assert_near(f->rows[r].t, 0.1 * r, 1e-12);
+    }
+    const figure_series *a = figures_series(f, "a"), *b = figures_series(f, "b");
+    assert_non_null(a);
+    assert_non_null(b);
+    assert_int_equal(a->first, 0);
+    assert_int_equal(a->n, 9);
+    for (int r = 0; r < 9; r++) { /* free fall: 5 - g t^2 / 2 */
+        double t = 0.1 * r;
+        assert_near(a->z[r], 5 - 4.9 * t * t, 1e-9);
+    }
+    /* b: rows 4 and 5 (made after frame 3), gone for 6 and 7, back at 8 */
+    assert_int_equal(b->first, 4);
+    assert_int_equal(b->n, 5);
+    assert_true(isnan(b->z[2]) && isnan(b->z[3]));
+    assert_near(b->z[4], 9 - 4.9 * 0.01, 1e-9);
+    /* the last row is the world's energy: a and b each m g z + m v^2 / 2 */
+    double ta = 0.8, tb = 0.1;
+    double want = 9.8 * (5 - 4.9 * ta * ta) + 0.5 * (9.8 * ta) * (9.8 * ta) +
+                  9.8 * (9 - 4.9 * tb * tb) + 0.5 * (9.8 * tb) * (9.8 * tb);
+    assert_near(f->rows[8].kinetic + f->rows[8].potential, want, 1e-9);
+
+    /* restart starts a new run; the limits drop the oldest quarter */
+    assert_int_equal(run("restart; sphere a; sphere b; translate = (3, 0, 0); sphere c\n"
+                         "translate = (6, 0, 0)\n"),
+                     CMD_OK);
+    assert_int_equal(f->n, 0);
+    g_sh.figs.max_frames = 10;
+    assert_int_equal(run("run 30\n"), CMD_OK);
+    assert_true(f->n <= 10 && f->n >= 7);
+    assert_int_equal(f->dropped + f->n, 31);
+    assert_int_equal(f->rows[f->n - 1].frame, 30);
+    assert_int_equal(f->rows[0].frame, f->dropped);
+    a = figures_series(f, "a");
+    assert_int_equal(a->first, f->dropped);
+    assert_int_equal(a->n, f->n);
+    if (system("command -v gnuplot > /dev/null 2>&1") == 0) {
+        char text[400], path[300];
+        path_in_dir(path, sizeof path, "e.png");
+        snprintf(text, sizeof text, "plot energy = \"%s\"\n", path);
+        assert_int_equal(run(text), CMD_OK);
+        char want_msg[128];
+        snprintf(want_msg, sizeof want_msg, "plot: the run's first %ld frames were dropped",
+                 f->dropped);
+        if (!strstr(g_errbuf, want_msg)) fail_msg("'%s' lacks '%s'", g_errbuf, want_msg);
+    }
+    g_sh.figs.max_frames = FIGURES_MAX_FRAMES;
+    g_sh.figs.max_heights = 12; /* three objects: at most 4 frames */
+    assert_int_equal(run("restart; sphere a; sphere b; translate = (3, 0, 0); sphere c\n"
+                         "translate = (6, 0, 0); run 20\n"),
+                     CMD_OK);
+    assert_true(f->n <= 4 && f->heights <= 12);
+    assert_int_equal(f->dropped + f->n, 21);
+    g_sh.figs.max_heights = FIGURES_MAX_HEIGHTS;
+    assert_int_equal(run("restart\n"), CMD_OK);
 }
 
 int main(void)
@@ -539,6 +621,7 @@ int main(void)
         cmocka_unit_test(trace_writes_a_row_per_object_per_frame),
         cmocka_unit_test(failed_logs_are_turned_off),
         cmocka_unit_test(random_says_how_many_fit),
+        cmocka_unit_test(figures_of_the_run),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -332,8 +332,31 @@ static void test_sbs(void **state)
     free(rgb);
 }
 
-/* (3b) anaglyph: red is the left eye's luminance, green and blue the right eye's; a
- * white object at strong parallax leaves red-only and cyan-only fringes. */
+/* Dubois's red-cyan anaglyph of one pixel, computed here in doubles from his
+ * paper's matrices, in linear light (the sRGB curve both ways). */
+static void dubois(const unsigned char *l, const unsigned char *r, double out[3])
+{
+    static const double L[3][3] = {{0.456, 0.500, 0.176}, {-0.040, -0.038, -0.016}, {-0.015, -0.021, -0.005}};
+    static const double R[3][3] = {{-0.043, -0.088, -0.002}, {0.378, 0.734, -0.018}, {-0.072, -0.113, 1.226}};
+    double ll[3], rl[3];
+    for (int k = 0; k < 3; k++) {
+        double a = l[k] / 255.0, b = r[k] / 255.0;
+        ll[k] = a <= 0.04045 ? a / 12.92 : pow((a + 0.055) / 1.055, 2.4);
+        rl[k] = b <= 0.04045 ? b / 12.92 : pow((b + 0.055) / 1.055, 2.4);
+    }
+    for (int c = 0; c < 3; c++) {
+        double x = 0;
+        for (int k = 0; k < 3; k++) x += L[c][k] * ll[k] + R[c][k] * rl[k];
+        x = x < 0 ? 0 : x > 1 ? 1 : x;
+        out[c] = 255 * (x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1 / 2.4) - 0.055);
+    }
+}
+
+/* (3b) anaglyph: every pixel is Dubois's projection of the two eyes' pixels; a
+ * white object at strong parallax leaves red-only and cyan-only fringes; and
+ * colours are kept: a green and a blue object where the eyes agree (at the
+ * focal distance) stay green and blue, where a luminance anaglyph made them
+ * grey. */
 static void test_anaglyph(void **state)
 {
     fixture *f = *state;
@@ -348,18 +371,31 @@ static void test_anaglyph(void **state)
     const unsigned char *r = view_pixels(f->v, 1, &w, &h);
     long red_only = 0, cyan_only = 0;
     for (size_t i = 0; i < (size_t)TW * TH; i++) {
-        const unsigned char *a = rgb + 3 * i, *pl = l + 3 * i, *pr = r + 3 * i;
-        int yl = (77 * pl[0] + 150 * pl[1] + 29 * pl[2] + 128) >> 8;
-        int yr = (77 * pr[0] + 150 * pr[1] + 29 * pr[2] + 128) >> 8;
-        assert_int_equal(a[0], yl);
-        assert_int_equal(a[1], yr);
-        assert_int_equal(a[2], yr);
+        const unsigned char *a = rgb + 3 * i;
+        double want[3];
+        dubois(l + 3 * i, r + 3 * i, want);
+        for (int c = 0; c < 3; c++)
+            if (fabs(a[c] - want[c]) > 1.5)
+                fail_msg("pixel %zu channel %d: %d, Dubois gives %.2f", i, c, a[c], want[c]);
         if (a[0] > 100 && a[1] < 40) red_only++;
         if (a[1] > 100 && a[0] < 40) cyan_only++;
     }
     assert_true(red_only > 20);
     assert_true(cyan_only > 20);
     free(rgb);
+
+    f->vs.ipd = 0.064;
+    for (int k = 0; k < 2; k++) {
+        world_free(&f->w);
+        world_init(&f->w);
+        add_sphere(f, v3(0, 1, 0), 0.2, 0, k == 0 ? 200 : 0, k == 0 ? 0 : 200);
+        refresh_ok(f, 5 + k);
+        rgb = read_frame(f, 5 + k, "anaglyph", TW, TH);
+        const unsigned char *c = rgb + 3 * ((size_t)(TH / 2) * TW + TW / 2);
+        if (k == 0) assert_true(c[1] > c[0] + 30 && c[1] > c[2] + 30); /* green */
+        else assert_true(c[2] > c[0] + 30 && c[2] > c[1] + 30);        /* blue */
+        free(rgb);
+    }
 }
 
 /* (3c) mono: only the left file, only the left eye rendered. */

@@ -42,6 +42,8 @@ need_cmd valgrind valgrind
 # movies: the ffmpeg program (and ffprobe, which the tests read movies with)
 need_cmd ffmpeg ffmpeg
 need_cmd ffprobe ffmpeg
+# plot: the gnuplot program (its pngcairo terminal; -nox: no X needed)
+need_cmd gnuplot gnuplot-nox
 # the live sound test: a PulseAudio server of its own, parecord (and pactl,
 # pacat), and pgrep, which counts the servers
 need_cmd pulseaudio pulseaudio

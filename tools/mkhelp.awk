@@ -238,8 +238,10 @@ function marg(s) {
 }
 
 # The usage line as the arguments of an mdoc .It: the command word with Ic, = with
-# Li, alternatives a|b with Cm, [..] with Op, vectors and placeholders with Ar.
-function usage_mdoc(u,    t, k, i, out, mac, alt, na, j) {
+# Li, alternatives a|b with Cm, [..] with Op (joined with Ns to the word before
+# when written against it: NAME[.property]), vectors and placeholders with Ar.
+function usage_mdoc(u,    t, k, i, out, mac, alt, na, j, glued) {
+    glued = u ~ /[^ ]\[/
     gsub(/\(/, " ( ", u); gsub(/\)/, " ) ", u); gsub(/,/, " , ", u)
     gsub(/\[/, " [ ", u); gsub(/\]/, " ] ", u)
     k = split(u, t, " ")
@@ -249,7 +251,7 @@ function usage_mdoc(u,    t, k, i, out, mac, alt, na, j) {
         if (t[i] == "[") {
             if (mac == "Op")
                 die(file, 0, "nested [ in usage")
-            out = out " Op"; mac = "Op"
+            out = out (glued ? " Ns" : "") " Op"; mac = "Op"
         } else if (t[i] == "]") {
             if (i != k)
                 die(file, 0, "] must end the usage line")
@@ -268,7 +270,7 @@ function usage_mdoc(u,    t, k, i, out, mac, alt, na, j) {
             if (mac != "Ar")
                 out = out " Ar"
             out = out " " t[i]; mac = "Ar"
-        } else if (t[i] ~ /^[A-Za-z_][A-Za-z0-9_]*$/) {
+        } else if (t[i] ~ /^\.?[A-Za-z_][A-Za-z0-9_]*$/) {
             if (mac != "Ar")
                 out = out " Ar"
             out = out " " marg(t[i]); mac = "Ar"

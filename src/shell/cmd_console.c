@@ -1,6 +1,6 @@
 /* cmd_console.c: what a console tool adds to the thesis's language (language.md,
- * "Commands a console tool needs"): run, time, print, list, show, save, distance,
- * stats and help. */
+ * "Commands a console tool needs" and "The console beyond the thesis"): run,
+ * time, print, list, show, save, distance, stats, energy and help. */
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -8,22 +8,24 @@
 
 #include "core/closest.h"
 #include "core/edit.h"
+#include "core/energy.h"
 #include "handlers.h"
 #include "outfile.h"
 #include "shell.h"
 #include "shell/help.h"
+#include "suggest.h"
 #include "writer.h"
 
 cmd_status cmd_run(shell *sh, const stmt *st)
 {
-    return shell_advance(sh, st, (long)st->num[0]);
+    return shell_run_frames(sh, st, (long)st->num[0]);
 }
 
 cmd_status cmd_time(shell *sh, const stmt *st)
 {
     (void)st;
     char a[32];
-    fprintf(sh->out, "time = %s\n", fmt_num(a, sh->w.time));
+    fprintf(sh->out, "time = %s\n", fmt_shown(a, sh->w.time, shell_shown(sh)));
     return CMD_OK;
 }
 
@@ -34,7 +36,18 @@ cmd_status cmd_print(shell *sh, const stmt *st)
         sh_error(sh, st, "no object named '%s'", st->word);
         return CMD_ERROR;
     }
-    body_write(sh->out, sh->w.bodies[i]);
+    const body *b = sh->w.bodies[i];
+    if (st->word2) { /* print NAME.property */
+        const command *c = command_find(st->word2);
+        if (!(c->classes & (1u << b->sp.kind))) {
+            sh_error(sh, st, "print: %s does not apply to %s '%s'", c->name,
+                     body_type_name(b->sp.kind), b->name);
+            return CMD_ERROR;
+        }
+        property_write(sh->out, &sh->w, i, c, shell_shown(sh));
+        return CMD_OK;
+    }
+    body_write(sh->out, b, (write_style){shell_shown(sh), true, NULL});
     contact_write(sh->out, &sh->w, i, 0);
     return CMD_OK;
 }
@@ -51,9 +64,27 @@ cmd_status cmd_list(shell *sh, const stmt *st)
 
 cmd_status cmd_show(shell *sh, const stmt *st)
 {
-    (void)st;
-    settings_write(sh->out, sh, 0);
-    return CMD_OK;
+    if (!st->word) {
+        settings_write(sh->out, sh, 0);
+        return CMD_OK;
+    }
+    const command *c = command_find(st->word);
+    if (c && (c->form == FORM_SETTING || c->run == cmd_select)) {
+        setting_write(sh->out, sh, c);
+        return CMD_OK;
+    }
+    if (c && c->form == FORM_PROPERTY) {
+        sh_error(sh, st, "show: %s is a property of objects: print NAME.%s shows it", c->name,
+                 c->name);
+        return CMD_ERROR;
+    }
+    suggestion sg;
+    char hint[96];
+    suggest_init(&sg, st->word);
+    suggest_offer_commands(&sg, 1u << FORM_SETTING);
+    sh_error(sh, st, "show: '%s' is not a setting%s (show lists them all)", st->word,
+             suggest_text(&sg, hint, sizeof hint));
+    return CMD_ERROR;
 }
 
 cmd_status cmd_save(shell *sh, const stmt *st)
@@ -73,7 +104,7 @@ cmd_status cmd_save(shell *sh, const stmt *st)
     settings_write(f, sh, 1);
     fprintf(f, "\n# objects\n");
     for (int i = 0; i < sh->w.n; i++) {
-        body_write_for(f, sh->w.bodies[i], st->word);
+        body_write(f, sh->w.bodies[i], (write_style){FMT_EXACT, false, st->word});
         fputc('\n', f);
     }
     /* the contact state: placing an object ends its lasting contacts */
@@ -121,12 +152,13 @@ cmd_status cmd_distance(shell *sh, const stmt *st)
         return CMD_ERROR;
     }
     char a[32], fa[48], fb[48];
-    fprintf(sh->out, "distance = %s\npoint_A = ", fmt_num(a, r.distance));
-    writer_vec(sh->out, r.pa);
+    fmt_style s = shell_shown(sh);
+    fprintf(sh->out, "distance = %s\npoint_A = ", fmt_shown(a, r.distance, s));
+    writer_vec(sh->out, r.pa, s);
     fprintf(sh->out, "\npoint_B = ");
-    writer_vec(sh->out, r.pb);
+    writer_vec(sh->out, r.pb, s);
     fprintf(sh->out, "\nnormal = ");
-    writer_vec(sh->out, r.normal);
+    writer_vec(sh->out, r.normal, s);
     fprintf(sh->out, "\nfeature_A = %s\nfeature_B = %s\n", feature_name(r.fa, fa),
             feature_name(r.fb, fb));
     return CMD_OK;
@@ -143,7 +175,7 @@ cmd_status cmd_stats(shell *sh, const stmt *st)
     fprintf(sh->out, "frames = %ld\n", w->st.frames);
     fprintf(sh->out, "pair_checks = %ld\n", w->st.pair_checks);
     fprintf(sh->out, "collisions = %ld\n", w->st.collisions);
-    fprintf(sh->out, "sim_time = %s\n", fmt_num(a, w->time));
+    fprintf(sh->out, "sim_time = %s\n", fmt_shown(a, w->time, shell_shown(sh)));
     fprintf(sh->out, "wall_time = %.6f\n", sh->wall_time);
     fprintf(sh->out, "internal_steps = %ld\n", w->st.subframes);
     fprintf(sh->out, "heap_pops = %ld\n", w->st.heap_pops);
@@ -156,6 +188,45 @@ cmd_status cmd_stats(shell *sh, const stmt *st)
     fprintf(sh->out, "render_time = %.6f\n", sh->view_st.render_time);
     fprintf(sh->out, "files_written = %ld\n", sh->view_st.frames_written);
     fprintf(sh->out, "existing_pairs = %ld\n", w->pairs.live);
+    return CMD_OK;
+}
+
+cmd_status cmd_energy(shell *sh, const stmt *st)
+{
+    const world *w = &sh->w;
+    energy_sum e;
+    const body *b = NULL;
+    if (st->word) {
+        int i = world_find(w, st->word);
+        if (i < 0) {
+            sh_error(sh, st, "no object named '%s'", st->word);
+            return CMD_ERROR;
+        }
+        b = w->bodies[i];
+        if (body_is_static(b)) {
+            fprintf(sh->out, "# %s is static: it never moves, and holds no energy\n", b->name);
+            return CMD_OK;
+        }
+        e = energy_of_body(w, b);
+    } else {
+        e = energy_of_world(w);
+    }
+    fmt_style s = shell_shown(sh);
+    char a[32];
+    fprintf(sh->out, "kinetic_energy = %s\n", fmt_shown(a, energy_kinetic(e), s));
+    fprintf(sh->out, "kinetic_linear = %s\n", fmt_shown(a, e.linear, s));
+    fprintf(sh->out, "kinetic_rotational = %s\n", fmt_shown(a, e.rotational, s));
+    fprintf(sh->out, "potential_energy = %s\n", fmt_shown(a, e.potential, s));
+    fprintf(sh->out, "total_energy = %s\n", fmt_shown(a, energy_total(e), s));
+    fprintf(sh->out, "linear_momentum = ");
+    writer_vec(sh->out, e.momentum, s);
+    fprintf(sh->out, "\nangular_momentum = ");
+    writer_vec(sh->out, e.angular_momentum, s);
+    if (b) {
+        fprintf(sh->out, "\nangular_momentum_com = ");
+        writer_vec(sh->out, b->L, s);
+    }
+    fputc('\n', sh->out);
     return CMD_OK;
 }
 
@@ -188,7 +259,12 @@ cmd_status cmd_help(shell *sh, const stmt *st)
     }
     const help_entry *h = help_find(st->word);
     if (!h) {
-        sh_error(sh, st, "help: no command named '%s' (help lists them all)", st->word);
+        suggestion sg;
+        char hint[96];
+        suggest_init(&sg, st->word);
+        suggest_offer_commands(&sg, ~0u);
+        sh_error(sh, st, "help: no command named '%s'%s (help lists them all)", st->word,
+                 suggest_text(&sg, hint, sizeof hint));
         return CMD_ERROR;
     }
     fprintf(sh->out, "usage: %s\n  %s\n\n%s\n", h->usage, h->summary, h->description);

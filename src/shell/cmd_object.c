@@ -58,6 +58,7 @@ cmd_status cmd_create(shell *sh, const stmt *st)
         return CMD_ERROR;
     }
     body_init(b, st->word, kind);
+    view_palette(sh->made, b->color); /* distinguishable colours in turn */
     char err[256];
     if (body_build(b, err, sizeof err) != 0) {
         sh_error(sh, st, "%s", err);
@@ -70,6 +71,7 @@ cmd_status cmd_create(shell *sh, const stmt *st)
         return CMD_ERROR;
     }
     sh->current = i;
+    sh->made++;
     return CMD_OK;
 }
 

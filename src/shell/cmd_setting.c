@@ -32,6 +32,7 @@ cmd_status cmd_setting(shell *sh, const stmt *st)
         for (int k = 0; k < 3; k++) ((int *)field)[k] = (int)st->num[k];
         break;
     case VAL_ONOFF: *(bool *)field = st->num[0] != 0; break;
+    case VAL_CHOICE: *(int *)field = (int)st->num[0]; break;
     case VAL_FILE: { /* output: a folder vroc writes into */
         char err[VIEW_PATH_MAX + 256];
         if (outfile_allowed(st->word, err, sizeof err) != 0) {

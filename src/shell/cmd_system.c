@@ -27,15 +27,25 @@ cmd_status cmd_step(shell *sh, const stmt *st) { return shell_advance(sh, st, 1)
 cmd_status cmd_start(shell *sh, const stmt *st)
 {
     if (shell_check_start(sh, st) != CMD_OK) return CMD_ERROR;
-    sh->running = true;
+    char a[32];
+    const char *t = fmt_shown(a, sh->w.time, shell_shown(sh));
     if (!sh->interactive)
         sh_info(sh, "time started; it runs in real time at the prompt (use run N in scripts)");
+    else if (sh->running)
+        sh_info(sh, "time is running already (time = %s)", t);
+    else
+        sh_info(sh, "time runs from time = %s: stop or Ctrl-C stops it", t);
+    sh->running = true;
     return CMD_OK;
 }
 
 cmd_status cmd_stop(shell *sh, const stmt *st)
 {
     (void)st;
+    char a[32];
+    if (sh->interactive)
+        sh_info(sh, sh->running ? "stopped at time = %s" : "time was not running (time = %s)",
+                fmt_shown(a, sh->w.time, shell_shown(sh)));
     sh->running = false;
     return CMD_OK;
 }
@@ -53,8 +63,10 @@ cmd_status cmd_restart(shell *sh, const stmt *st)
     sh->sound_set = sh->startup.sound; /* the soundtrack and movie go on, as the logs do */
     sh->rng = sh->set.seed;
     sh->current = -1;
+    sh->made = 0;
     hand_free(&sh->hand);
     hand_init(&sh->hand, sh->hand.say, sh->hand.say_ctx);
+    figures_clear(&sh->figs);
     return r;
 }
 
@@ -65,8 +77,13 @@ cmd_status cmd_quit(shell *sh, const stmt *st)
     return CMD_QUIT;
 }
 
-/* The file was parsed with the statement, nesting checked (lang.h). */
-cmd_status cmd_read(shell *sh, const stmt *st) { return shell_run_program(sh, st->sub); }
+/* The file was parsed with the statement, nesting checked (lang.h).  It starts a
+ * new run for plot (figures.h). */
+cmd_status cmd_read(shell *sh, const stmt *st)
+{
+    figures_clear(&sh->figs);
+    return shell_run_program(sh, st->sub);
+}
 
 cmd_status cmd_display(shell *sh, const stmt *st)
 {

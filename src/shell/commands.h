@@ -33,6 +33,10 @@ typedef enum {
     ARG_FILE,         /* a file name: bare word or "string" */
     ARG_COUNT,        /* an integer >= 0 */
     ARG_OPT_ONOFF,    /* optional on or off (select) */
+    ARG_NAME_DOT,     /* an object name, or NAME.property (print) */
+    ARG_SETTING,      /* an optional setting name (show) */
+    ARG_OPT_NAME,     /* an optional object name (energy) */
+    ARG_PLOT,         /* QUANTITY = FILE (plot) */
     VAL_NUMBER,       /* one number */
     VAL_INTEGER,      /* one integer */
     VAL_VECTOR,       /* (x, y, z) */
@@ -57,9 +61,13 @@ typedef enum {
  * R_NONZERO_VEC: the vector is a direction, at least LIM_DIR_MIN long (with
  * VAL_VECTOR_ANGLE, (0, 0, 0) is accepted when the number after it is 0).
  * Every numeric command has R_RANGE, with limits from core/limits.h, under which
- * the simulation stays finite; tests/test_limits.c walks them. */
+ * the simulation stays finite; tests/test_limits.c walks them.  Units, for the
+ * postfix `deg` of expressions (expr.h): R_RADIANS, the value is an angle or a
+ * rate in radians (with VAL_VECTOR_ANGLE: the number after the vector), so deg
+ * may convert degrees to it; R_DEGREES, the value is in degrees already (fov);
+ * anywhere else deg is an error. */
 enum { R_LO_OPEN = 1, R_HI_OPEN = 2, R_NONZERO = 4, R_NONZERO_VEC = 8, R_RANGE = 16,
-       R_ZERO = 32, R_ABS = 64 };
+       R_ZERO = 32, R_ABS = 64, R_RADIANS = 128, R_DEGREES = 256 };
 
 /* shape classes a property applies to */
 enum { C_SPHERE = 1 << SHAPE_SPHERE, C_CUBE = 1 << SHAPE_CUBE, C_SQ = 1 << SHAPE_SUPERQUADRIC,
@@ -79,7 +87,8 @@ typedef struct command {
     unsigned range;      /* R_ flags; R_RANGE: check lo and hi */
     double lo, hi;
     const char *choices; /* VAL_CHOICE: "pair|sbs|anaglyph|mono"; ARG_NAME: words
-                          * allowed besides names (completion offers them) */
+                          * allowed besides names; VAL_FILE: besides files
+                          * (completion offers them) */
     unsigned classes;    /* FORM_PROPERTY: the C_ classes it applies to */
     setting_owner owner; /* FORM_SETTING: whose settings hold its field */
     size_t off;          /* FORM_PROPERTY: offset of its field in body (edit.h);

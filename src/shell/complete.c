@@ -63,7 +63,7 @@ static void add_properties(const char *prefix, const body *b)
 
 static void add_names(const shell *sh, const char *suffix)
 {
-    char buf[BODY_NAME_MAX + 2];
+    char buf[BODY_NAME_MAX + 16];
     for (int i = 0; i < sh->w.n; i++) {
         snprintf(buf, sizeof buf, "%s%s", sh->w.bodies[i]->name, suffix);
         cand_add(buf);
@@ -106,9 +106,10 @@ static void add_choices(const char *choices)
     }
 }
 
-/* Candidates after the first word w0 (and '=' when has_eq). Returns false when
- * file names should be completed instead. */
-static bool later_candidates(const shell *sh, const char *w0, bool has_eq)
+/* Candidates after the first word w0 (and '=' when has_eq), for the word text.
+ * Returns false when file names should be completed where none of them fits
+ * (value words come first: collision_sound's click, knock, bell, off). */
+static bool later_candidates(const shell *sh, const char *w0, bool has_eq, const char *text)
 {
     const char *dot = strchr(w0, '.');
     const command *c = command_find(dot ? dot + 1 : w0);
@@ -116,15 +117,45 @@ static bool later_candidates(const shell *sh, const char *w0, bool has_eq)
     switch (c->arg) {
     case ARG_NAME:
     case ARG_NAME2:
+    case ARG_OPT_NAME:
     case VAL_NAME:
         add_names(sh, "");
         add_choices(c->choices);
         return true;
+    case ARG_NAME_DOT: { /* print NAME or NAME.property */
+        const char *tdot = strchr(text, '.');
+        if (!tdot) {
+            add_names(sh, "");
+            return true;
+        }
+        char name[BODY_NAME_MAX], prefix[BODY_NAME_MAX + 1];
+        size_t n = (size_t)(tdot - text);
+        if (n >= sizeof name) return true;
+        memcpy(name, text, n);
+        name[n] = '\0';
+        int i = world_find(&sh->w, name);
+        snprintf(prefix, sizeof prefix, "%s.", name);
+        if (i >= 0) add_properties(prefix, sh->w.bodies[i]);
+        return true;
+    }
     case ARG_OPT_WORD:
         for (int i = 0; i < command_count; i++) cand_add(command_table[i].name);
         return true;
-    case ARG_FILE:
-    case VAL_FILE: return false;
+    case ARG_SETTING:
+        for (int i = 0; i < command_count; i++)
+            if (command_table[i].form == FORM_SETTING) cand_add(command_table[i].name);
+        cand_add("select");
+        return true;
+    case ARG_FILE: return false;
+    case ARG_PLOT:
+        if (has_eq) return false;
+        cand_add("energy");
+        cand_add("momentum");
+        add_names(sh, ".height");
+        return true;
+    case VAL_FILE:
+        if (has_eq) add_choices(c->choices);
+        return false;
     case VAL_FILE_OR_OFF:
         if (!has_eq) return true;
         cand_add("off");
@@ -168,9 +199,12 @@ static char **complete(const char *text, int start, int end)
             e++;
         snprintf(w0, sizeof w0, "%.*s", e - s, rl_line_buffer + s);
         bool has_eq = memchr(rl_line_buffer + s, '=', (size_t)(start - s)) != NULL;
-        if (!later_candidates(g_sh, w0, has_eq)) {
+        if (!later_candidates(g_sh, w0, has_eq, text)) {
             rl_attempted_completion_over = 0; /* readline completes file names */
-            if (g_ncands == 0) return NULL;
+            size_t len = strlen(text);
+            bool fits = false;
+            for (int i = 0; i < g_ncands && !fits; i++) fits = strncmp(g_cands[i], text, len) == 0;
+            if (!fits) return NULL;
         }
     }
     return rl_completion_matches(text, cand_generator);

@@ -1,7 +1,7 @@
-/* fmt.c: numbers as text that reads back to the bit (fmt.h). */
-#include <math.h>
+/* fmt.c: numbers as text, to the bit or as a person reads them (fmt.h). */
 #include "fmt.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,12 +16,29 @@ const char *fmt_num(char buf[32], double x)
     return buf;
 }
 
+const char *fmt_shown(char buf[32], double x, fmt_style s)
+{
+    if (s == FMT_EXACT) return fmt_num(buf, x);
+    /* %g drops trailing zeros; -0 is shown as 0 */
+    snprintf(buf, 32, "%.*g", FMT_DIGITS, x == 0 ? 0.0 : x);
+    return buf;
+}
+
+void fmt_shown_vec(char out[][32], const double *v, int n, fmt_style s)
+{
+    double big = 0;
+    for (int k = 0; k < n; k++)
+        if (fabs(v[k]) > big) big = fabs(v[k]);
+    for (int k = 0; k < n; k++)
+        fmt_shown(out[k], s == FMT_SHORT && fabs(v[k]) < 1e-12 * big ? 0.0 : v[k], s);
+}
+
 /* The length of the well-formed UTF-8 sequence of a printable character at s
  * (1 for printable ASCII), or 0. */
 static int printable_at(const unsigned char *s)
 {
     unsigned char c = s[0];
-    if (c >= 0x20 && c < 0x7f) return 1;
+    if ((c >= 0x20 && c < 0x7f) || c == '\n') return 1;
     int n = c >= 0xc2 && c <= 0xdf ? 2 : c >= 0xe0 && c <= 0xef ? 3 : c >= 0xf0 && c <= 0xf4 ? 4 : 0;
     if (n == 0) return 0;
     /* the second byte's range: no overlong forms, no surrogates, nothing past U+10FFFF */

@@ -2,8 +2,8 @@
  * (commands.h).  Each either applies its statement whole or changes nothing and
  * reports an error.  They live by concern: cmd_object.c (objects and their
  * properties), cmd_setting.c (settings), cmd_time.c (time and files),
- * cmd_console.c (what a console tool adds), cmd_hand.c (the hand and the tool
- * panel), cmd_sound.c (sound and movies), random.c (random objects). */
+ * cmd_console.c (what a console tool adds), cmd_plot.c (plot), cmd_hand.c (the
+ * hand and the tool panel), cmd_sound.c (sound and movies), random.c (random objects). */
 #ifndef VROC_HANDLERS_H
 #define VROC_HANDLERS_H
 
@@ -59,6 +59,8 @@ cmd_status cmd_hash(struct shell *sh, const stmt *st);
 cmd_status cmd_random_draws(struct shell *sh, const stmt *st);
 cmd_status cmd_distance(struct shell *sh, const stmt *st);
 cmd_status cmd_stats(struct shell *sh, const stmt *st);
+cmd_status cmd_energy(struct shell *sh, const stmt *st);
+cmd_status cmd_plot(struct shell *sh, const stmt *st);
 cmd_status cmd_quit(struct shell *sh, const stmt *st);
 cmd_status cmd_help(struct shell *sh, const stmt *st);
 

@@ -1,10 +1,13 @@
 /* lang.c: the parser of the vroc language (language.md; thesis Appendix A).
  *
  * Statements end at a newline or ';'; '#' starts a comment; the lexer (lex.h)
- * makes the tokens.  Numbers are words that strtod reads whole.  Each statement is checked
- * against the command table here, values and ranges included, so that a file with
- * an error anywhere is refused before anything in it runs.  `read` statements load
- * and parse their file at once, with the cycle and depth checks.
+ * makes the tokens.  A numeric value is read from the statement's text itself,
+ * since every number may be an expression that the lexer's words would cut up
+ * (expr.h); its errors quote the line with a caret under the place.  Each
+ * statement is checked against the command table here, values and ranges
+ * included, so that a file with an error anywhere is refused before anything in
+ * it runs.  `read` statements load and parse their file at once, with the cycle
+ * and depth checks.
  */
 #include "lang.h"
 
@@ -18,97 +21,166 @@
 #include <sys/stat.h>
 
 #include "core/body.h"
-#include "core/limits.h"
-#include "lex.h"
-#include "fmt.h"
 #include "core/grow.h"
+#include "core/limits.h"
+#include "expr.h"
+#include "fmt.h"
 #include "infile.h"
+#include "lex.h"
+#include "suggest.h"
 
 typedef struct {
     const char *name; /* file name for messages, or NULL */
     int line;
     char *err;
     size_t errlen;
+    const char *text, *text_end; /* the line being parsed */
 } where;
 
-static void perr(const where *at, const char *fmt, ...)
+static void vperr(const where *at, const char *fmt, va_list ap)
 {
     char msg[512];
-    va_list ap;
-    va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
-    va_end(ap);
     if (at->name)
         snprintf(at->err, at->errlen, "%s:%d: error: %s", at->name, at->line, msg);
     else
         snprintf(at->err, at->errlen, "error: %s", msg);
 }
 
+static void perr(const where *at, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static void perr(const where *at, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vperr(at, fmt, ap);
+    va_end(ap);
+}
+
+/* Columns of the line quoted around a caret: at most this many. */
+#define EXCERPT 72
+
+/* perr, then the line (or the part of it about pos) and a caret under pos. */
+static void perr_at(const where *at, const char *pos, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+static void perr_at(const where *at, const char *pos, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vperr(at, fmt, ap);
+    va_end(ap);
+    if (!at->text || pos < at->text || pos > at->text_end) return;
+    const char *from = at->text, *to = at->text_end;
+    while (from < to && (*from == ' ' || *from == '\t')) from++;
+    while (to > from && (to[-1] == ' ' || to[-1] == '\t' || to[-1] == '\r')) to--;
+    if (pos < from) pos = from;
+    bool cut_left = pos - from > EXCERPT - 20, cut_right;
+    if (cut_left) from = pos - (EXCERPT - 20);
+    cut_right = to - from > EXCERPT;
+    if (cut_right) to = from + EXCERPT;
+    /* the excerpt with tabs as spaces; the caret counts characters, not the
+     * bytes of UTF-8 */
+    char line[EXCERPT + 1];
+    int len = (int)(to - from), col = cut_left ? 3 : 0;
+    for (int k = 0; k < len; k++) line[k] = from[k] == '\t' ? ' ' : from[k];
+    line[len] = '\0';
+    for (const char *q = from; q < pos; q++)
+        if (((unsigned char)*q & 0xc0) != 0x80) col++;
+    size_t n = strlen(at->err);
+    snprintf(at->err + n, at->errlen - n, "\n    %s%s%s\n    %*s^", cut_left ? "..." : "", line,
+             cut_right ? "..." : "", col, "");
+}
+
 /* ---------------------------------------------------------------- values */
 
-static int get_number(const token *t, const command *c, double *out, const where *at)
+/* A numeric value's text: from its first token to the end of the statement,
+ * copied with a final NUL for expr_read; src is where it starts in the line. */
+typedef struct {
+    char *text;
+    const char *p;   /* the next character to read, in text */
+    const char *src;
+} cursor;
+
+/* The place in the line of the cursor's position p. */
+static const char *src_of(const cursor *cu, const char *p) { return cu->src + (p - cu->text); }
+
+/* The tokens t[0..nt-1] (nt > 0) as a cursor.  A quoted string among them is
+ * no number: an error, as is running out of memory. */
+static int cursor_open(cursor *cu, const token *t, int nt, const command *c, const where *at)
 {
     char buf[96];
-    if (t->k != T_WORD) {
-        perr(at, "%s: expected a number, got %s", c->name, tok_text(t, buf));
-        return -1;
+    for (int k = 0; k < nt; k++) {
+        if (t[k].k == T_STRING) {
+            perr(at, "%s: expected a number, got %s", c->name, tok_text(&t[k], buf));
+            return -1;
+        }
     }
-    char *tmp = tok_dup(t); /* a number may be as long as a word can be */
-    if (!tmp) {
+    const char *end = t[nt - 1].s + t[nt - 1].len;
+    size_t n = (size_t)(end - t[0].s);
+    cu->text = malloc(n + 1);
+    if (!cu->text) {
         perr(at, "out of memory");
         return -1;
     }
-    char *end;
-    errno = 0;
-    double x = strtod(tmp, &end);
-    int rc = 0;
-    if (end == tmp || *end != '\0') {
-        perr(at, "%s: expected a number, got %s", c->name, tok_text(t, buf));
-        rc = -1;
-    } else if (!isfinite(x)) {
-        /* nan, inf or an overflow; an underflow keeps the tiny value strtod gives
-         * (or 0), which the limits then judge and messages print as it reads back */
-        if (t->len <= 40) perr(at, "%s must be a finite number (got %s)", c->name, tmp);
-        else perr(at, "%s must be a finite number (got %s)", c->name, tok_text(t, buf));
-        rc = -1;
-    }
-    free(tmp);
-    *out = x;
-    return rc;
+    memcpy(cu->text, t[0].s, n);
+    cu->text[n] = '\0';
+    cu->p = cu->text;
+    cu->src = t[0].s;
+    return 0;
 }
 
-/* '(' n numbers ')' starting at t[*i]; advances *i past it. */
-static int get_tuple(const token *t, int nt, int *i, int n, const command *c, double *out,
-                     const where *at)
+/* How deg applies to command c's numbers (after its vector: after). */
+static expr_unit unit_of(const command *c, bool after)
+{
+    if (c->range & R_DEGREES) return EXPR_DEGREES;
+    if ((c->range & R_RADIANS) && (after || c->arg != VAL_VECTOR_ANGLE)) return EXPR_RADIANS;
+    return EXPR_PLAIN;
+}
+
+/* One number (an expression) at the cursor. */
+static int get_number(cursor *cu, const command *c, expr_unit unit, double *out, const where *at)
+{
+    char msg[400];
+    expr_opts o = {c->name, unit};
+    const char *p = cu->p;
+    if (expr_read(&p, &o, out, msg, sizeof msg) != 0) {
+        perr_at(at, src_of(cu, p), "%s", msg);
+        return -1;
+    }
+    cu->p = p;
+    return 0;
+}
+
+/* '(' n numbers ')' at the cursor. */
+static int get_tuple(cursor *cu, int n, const command *c, double *out, const where *at)
 {
     static const char *forms[] = {"", "(x)", "(x, y)", "(x, y, z)", "(w, x, y, z)"};
     const char *form = forms[n];
     char buf[96];
-    if (*i >= nt || t[*i].k != T_LP) {
-        if (*i >= nt)
-            perr(at, "%s: missing value: expected %s", c->name, form);
-        else
-            perr(at, "%s: expected %s, got %s", c->name, form, tok_text(&t[*i], buf));
+    const char *p = expr_skip(cu->p);
+    if (*p != '(') {
+        perr_at(at, src_of(cu, p), "%s: expected %s, got %s", c->name, form,
+                expr_token_text(p, buf));
         return -1;
     }
-    (*i)++;
+    cu->p = p + 1;
     for (int k = 0; k < n; k++) {
-        if (*i >= nt) {
-            perr(at, "%s: unfinished vector: expected %s", c->name, form);
+        if (!*expr_skip(cu->p)) {
+            perr_at(at, src_of(cu, expr_skip(cu->p)), "%s: unfinished vector: expected %s",
+                    c->name, form);
             return -1;
         }
-        if (get_number(&t[*i], c, &out[k], at) != 0) return -1;
-        (*i)++;
-        tkind want = k == n - 1 ? T_RP : T_COMMA;
-        if (*i >= nt || t[*i].k != want) {
-            if (*i >= nt)
-                perr(at, "%s: unfinished vector: expected %s", c->name, form);
+        if (get_number(cu, c, unit_of(c, false), &out[k], at) != 0) return -1;
+        p = expr_skip(cu->p);
+        char want = k == n - 1 ? ')' : ',';
+        if (*p != want) {
+            if (!*p)
+                perr_at(at, src_of(cu, p), "%s: unfinished vector: expected %s", c->name, form);
             else
-                perr(at, "%s: expected %s with %d numbers, got %s", c->name, form, n,
-                     tok_text(&t[*i], buf));
+                perr_at(at, src_of(cu, p), "%s: expected %s with %d numbers, got %s", c->name,
+                        form, n, expr_token_text(p, buf));
             return -1;
         }
-        (*i)++;
+        cu->p = p + 1;
     }
     return 0;
 }
@@ -241,6 +313,232 @@ static int get_name(const token *t, int nt, int i, const command *c, char **out,
     return 0;
 }
 
+/* Whether the value at p is a vector: it opens with '(' whose group holds a comma
+ * of its own (so that "(1 + 1) * 2" is a number). */
+static bool scale_is_vector(const char *p)
+{
+    p = expr_skip(p);
+    if (*p != '(') return false;
+    int depth = 0;
+    for (; *p; p++) {
+        if (*p == '(') depth++;
+        else if (*p == ')' && --depth == 0) return false;
+        else if (*p == ',' && depth == 1) return true;
+    }
+    return false;
+}
+
+/* The numbers of st's value at the cursor, with their checks. */
+static int read_numbers(stmt *st, cursor *cu, const where *at)
+{
+    const command *c = st->cmd;
+    switch (c->arg) {
+    case ARG_COUNT:
+    case VAL_NUMBER:
+    case VAL_INTEGER:
+        if (get_number(cu, c, unit_of(c, false), &st->num[0], at) != 0) return -1;
+        if (c->arg != VAL_NUMBER && check_integer(c, st->num[0], at) != 0) return -1;
+        if (check_range(c, st->num[0], at) != 0) return -1;
+        st->n = 1;
+        return 0;
+    case VAL_VECTOR:
+    case VAL_VECTOR_ANGLE:
+        if (get_tuple(cu, 3, c, st->num, at) != 0) return -1;
+        if (check_vector(c, st->num, at) != 0) return -1;
+        st->n = 3;
+        if (c->arg == VAL_VECTOR_ANGLE) {
+            const char *p = expr_skip(cu->p);
+            if (!*p) {
+                perr(at, "%s: missing the number after the vector", c->name);
+                return -1;
+            }
+            if (get_number(cu, c, unit_of(c, true), &st->num[3], at) != 0) return -1;
+            char what[96];
+            snprintf(what, sizeof what, "%s: the %s", c->name, c->what2);
+            if (check_range_of(what, R_RANGE, c->lo2, c->hi2, st->num[3], at) != 0)
+                return -1;
+            st->n = 4;
+            if ((c->range & R_NONZERO_VEC) && st->num[0] == 0 && st->num[1] == 0 &&
+                st->num[2] == 0 && st->num[3] != 0) {
+                perr(at, "%s: the direction (0, 0, 0) needs the %s to be 0", c->name, c->what2);
+                return -1;
+            }
+        }
+        return 0;
+    case VAL_QUAT:
+    case VAL_PAIR:
+    case VAL_RANGE2: {
+        int n = c->arg == VAL_QUAT ? 4 : 2;
+        if (get_tuple(cu, n, c, st->num, at) != 0) return -1;
+        char what[96];
+        snprintf(what, sizeof what, "%s components", c->name);
+        for (int k = 0; k < n; k++)
+            if (check_range_of(what, c->range, c->lo, c->hi, st->num[k], at) != 0) return -1;
+        if (c->arg == VAL_QUAT) {
+            double n2 = 0;
+            for (int k = 0; k < 4; k++) n2 += st->num[k] * st->num[k];
+            if (!(fabs(sqrt(n2) - 1) <= 1e-6)) {
+                perr(at, "%s must be a unit quaternion (w, x, y, z), within 1e-6 of length 1",
+                     c->name);
+                return -1;
+            }
+        }
+        if (c->arg == VAL_RANGE2 && !(st->num[0] <= st->num[1])) {
+            char a[32], b[32];
+            perr(at, "%s: the least must not exceed the most (got %s, %s)", c->name,
+                 num_text(st->num[0], a), num_text(st->num[1], b));
+            return -1;
+        }
+        st->n = n;
+        return 0;
+    }
+    case VAL_SIZE2: {
+        if (get_tuple(cu, 2, c, st->num, at) != 0) return -1;
+        char what[96];
+        snprintf(what, sizeof what, "%s components", c->name);
+        for (int k = 0; k < 2; k++)
+            if (check_integer(c, st->num[k], at) != 0 ||
+                check_range_of(what, c->range, c->lo, c->hi, st->num[k], at) != 0)
+                return -1;
+        st->n = 2;
+        return 0;
+    }
+    case VAL_COLOR:
+        if (get_tuple(cu, 3, c, st->num, at) != 0) return -1;
+        for (int k = 0; k < 3; k++) {
+            if (st->num[k] != floor(st->num[k]) || !in_range(c->range, c->lo, c->hi, st->num[k])) {
+                char g[32], r[RANGE_TEXT];
+                perr(at, "%s components must be whole numbers %s (got %s)", c->name,
+                     range_text(c->range, c->lo, c->hi, r), num_text(st->num[k], g));
+                return -1;
+            }
+        }
+        st->n = 3;
+        return 0;
+    case VAL_SCALE:
+        /* s, or (x, y, z): a parenthesis holding a comma is the vector */
+        if (scale_is_vector(cu->p)) {
+            if (get_tuple(cu, 3, c, st->num, at) != 0) return -1;
+            if (check_vector(c, st->num, at) != 0) return -1;
+            st->n = 3;
+            return 0;
+        }
+        if (get_number(cu, c, unit_of(c, false), &st->num[0], at) != 0) return -1;
+        if (check_range(c, st->num[0], at) != 0) return -1;
+        st->num[1] = st->num[2] = st->num[0];
+        st->n = 1;
+        return 0;
+    default: return -1; /* never: parse_value calls this for numeric kinds only */
+    }
+}
+
+/* The numbers of st's value (its command's arg is a numeric kind), read from the
+ * text of the tokens t[0..nt-1], nt > 0, and checked. */
+static int parse_numbers(stmt *st, const token *t, int nt, const where *at)
+{
+    const command *c = st->cmd;
+    cursor cu;
+    if (cursor_open(&cu, t, nt, c, at) != 0) return -1;
+    int rc = read_numbers(st, &cu, at);
+    if (rc == 0) {
+        const char *p = expr_skip(cu.p);
+        if (*p) {
+            char buf[96];
+            perr_at(at, src_of(&cu, p), "%s: unexpected %s after the value", c->name,
+                    expr_token_text(p, buf));
+            rc = -1;
+        }
+    }
+    free(cu.text);
+    return rc;
+}
+
+/* An object property's name: the command c names (NULL and a message, with the
+ * nearest name, when it is none). */
+static const command *find_property(const char *name, const where *at)
+{
+    const command *c = command_find(name);
+    if (c && c->form == FORM_PROPERTY) return c;
+    suggestion sg;
+    char hint[96];
+    suggest_init(&sg, name);
+    suggest_offer_commands(&sg, 1u << FORM_PROPERTY);
+    perr(at, "'%s' is not an object property%s (help lists them all)", name,
+         suggest_text(&sg, hint, sizeof hint));
+    return NULL;
+}
+
+/* NAME or NAME.property at t[i]: the name into st->word, the property's into
+ * st->word2. */
+static int get_name_dot(const token *t, int nt, int i, const command *c, stmt *st, const where *at)
+{
+    char *dot = i < nt && t[i].k == T_WORD ? memchr(t[i].s, '.', t[i].len) : NULL;
+    if (!dot) return get_name(t, nt, i, c, &st->word, at);
+    token name = t[i], prop = t[i];
+    name.len = (size_t)(dot - t[i].s);
+    prop.s = dot + 1;
+    prop.len = t[i].len - name.len - 1;
+    if (get_name(&name, 1, 0, c, &st->word, at) != 0) return -1;
+    if (!(st->word2 = tok_dup(&prop))) {
+        perr(at, "out of memory");
+        return -1;
+    }
+    return find_property(st->word2, at) ? 0 : -1;
+}
+
+/* plot's QUANTITY = FILE (t[0..2]): the quantity into st->num[0] (PLOT_ENERGY,
+ * PLOT_MOMENTUM, PLOT_HEIGHT with the object's name in st->object), the file into
+ * st->word. */
+static int get_plot(const token *t, int nt, const command *c, stmt *st, const where *at)
+{
+    char buf[96];
+    if (nt < 1) {
+        perr(at, "%s: missing the quantity: energy, momentum or NAME.height", c->name);
+        return -1;
+    }
+    char q[BODY_NAME_MAX + 16];
+    snprintf(q, sizeof q, "%.*s", (int)(t[0].len < sizeof q - 1 ? t[0].len : sizeof q - 1), t[0].s);
+    char *dot = strchr(q, '.');
+    bool word = t[0].k == T_WORD && t[0].len < sizeof q - 1;
+    if (word && strcmp(q, "energy") == 0) {
+        st->num[0] = PLOT_ENERGY;
+    } else if (word && strcmp(q, "momentum") == 0) {
+        st->num[0] = PLOT_MOMENTUM;
+    } else if (word && dot && strcmp(dot + 1, "height") == 0) {
+        *dot = '\0';
+        if (!lang_valid_name(q)) {
+            perr(at, "'%s' is not a valid object name", q);
+            return -1;
+        }
+        if (!(st->object = strdup(q))) {
+            perr(at, "out of memory");
+            return -1;
+        }
+        st->num[0] = PLOT_HEIGHT;
+    } else {
+        suggestion sg;
+        char hint[96];
+        suggest_init(&sg, q);
+        suggest_offer_choices(&sg, "energy|momentum");
+        perr(at, "%s: the quantity is energy, momentum or NAME.height (got %s)%s", c->name,
+             tok_text(&t[0], buf), suggest_text(&sg, hint, sizeof hint));
+        return -1;
+    }
+    st->n = 1;
+    if (nt < 2 || t[1].k != T_EQ) {
+        perr(at, "%s: expected '= FILE.png' after the quantity%s%s", c->name, nt < 2 ? "" : ", got ",
+             nt < 2 ? "" : tok_text(&t[1], buf));
+        return -1;
+    }
+    if (get_word(t, nt, 2, c, "a file name", &st->word, at) != 0) return -1;
+    size_t n = strlen(st->word);
+    if (n < 5 || strcmp(st->word + n - 4, ".png") != 0) {
+        perr(at, "%s: the file must be a .png (got %s)", c->name, tok_text(&t[2], buf));
+        return -1;
+    }
+    return 0;
+}
+
 /* Converts the tokens after the command word (actions) or after '=' into st. */
 static int parse_value(stmt *st, const token *t, int nt, const where *at)
 {
@@ -270,10 +568,27 @@ static int parse_value(stmt *st, const token *t, int nt, const where *at)
         i++;
         break;
     case ARG_OPT_WORD:
+    case ARG_SETTING:
         if (i < nt) {
-            if (get_word(t, nt, i, c, "a command name", &st->word, at) != 0) return -1;
+            if (get_word(t, nt, i, c, c->arg == ARG_SETTING ? "a setting's name" : "a command name",
+                         &st->word, at) != 0)
+                return -1;
             i++;
         }
+        break;
+    case ARG_OPT_NAME:
+        if (i < nt) {
+            if (get_name(t, nt, i, c, &st->word, at) != 0) return -1;
+            i++;
+        }
+        break;
+    case ARG_PLOT:
+        if (get_plot(t, nt, c, st, at) != 0) return -1;
+        i = 3;
+        break;
+    case ARG_NAME_DOT:
+        if (get_name_dot(t, nt, i, c, st, at) != 0) return -1;
+        i++;
         break;
     case ARG_FILE:
     case VAL_FILE:
@@ -301,110 +616,22 @@ static int parse_value(stmt *st, const token *t, int nt, const where *at)
         /* fall through */
     case VAL_NUMBER:
     case VAL_INTEGER:
+    case VAL_VECTOR:
+    case VAL_VECTOR_ANGLE:
+    case VAL_QUAT:
+    case VAL_PAIR:
+    case VAL_RANGE2:
+    case VAL_SIZE2:
+    case VAL_COLOR:
+    case VAL_SCALE:
         if (i >= nt) {
             perr(at, "%s: missing value", c->name);
             return -1;
         }
-        if (get_number(&t[i], c, &st->num[0], at) != 0) return -1;
-        if (c->arg != VAL_NUMBER && check_integer(c, st->num[0], at) != 0) return -1;
-        if (check_range(c, st->num[0], at) != 0) return -1;
-        st->n = 1;
-        i++;
-        break;
-    case VAL_VECTOR:
-    case VAL_VECTOR_ANGLE:
-        if (get_tuple(t, nt, &i, 3, c, st->num, at) != 0) return -1;
-        if (check_vector(c, st->num, at) != 0) return -1;
-        st->n = 3;
-        if (c->arg == VAL_VECTOR_ANGLE) {
-            if (i >= nt) {
-                perr(at, "%s: missing the number after the vector", c->name);
-                return -1;
-            }
-            if (get_number(&t[i], c, &st->num[3], at) != 0) return -1;
-            char what[96];
-            snprintf(what, sizeof what, "%s: the %s", c->name, c->what2);
-            if (check_range_of(what, R_RANGE, c->lo2, c->hi2, st->num[3], at) != 0)
-                return -1;
-            st->n = 4;
-            i++;
-            if ((c->range & R_NONZERO_VEC) && st->num[0] == 0 && st->num[1] == 0 &&
-                st->num[2] == 0 && st->num[3] != 0) {
-                perr(at, "%s: the direction (0, 0, 0) needs the %s to be 0", c->name, c->what2);
-                return -1;
-            }
-        }
-        break;
+        return parse_numbers(st, t, nt, at);
     case VAL_NAME:
         if (get_name(t, nt, i, c, &st->word, at) != 0) return -1;
         i++;
-        break;
-    case VAL_SCALE:
-        if (i < nt && t[i].k == T_LP) {
-            if (get_tuple(t, nt, &i, 3, c, st->num, at) != 0) return -1;
-            if (check_vector(c, st->num, at) != 0) return -1;
-            st->n = 3;
-            break;
-        }
-        if (i >= nt) {
-            perr(at, "%s: missing value: s or (x, y, z)", c->name);
-            return -1;
-        }
-        if (get_number(&t[i], c, &st->num[0], at) != 0) return -1;
-        if (check_range(c, st->num[0], at) != 0) return -1;
-        st->num[1] = st->num[2] = st->num[0];
-        st->n = 1;
-        i++;
-        break;
-    case VAL_QUAT:
-    case VAL_PAIR:
-    case VAL_RANGE2: {
-        int n = c->arg == VAL_QUAT ? 4 : 2;
-        if (get_tuple(t, nt, &i, n, c, st->num, at) != 0) return -1;
-        char what[96];
-        snprintf(what, sizeof what, "%s components", c->name);
-        for (int k = 0; k < n; k++)
-            if (check_range_of(what, c->range, c->lo, c->hi, st->num[k], at) != 0) return -1;
-        if (c->arg == VAL_QUAT) {
-            double n2 = 0;
-            for (int k = 0; k < 4; k++) n2 += st->num[k] * st->num[k];
-            if (!(fabs(sqrt(n2) - 1) <= 1e-6)) {
-                perr(at, "%s must be a unit quaternion (w, x, y, z), within 1e-6 of length 1",
-                     c->name);
-                return -1;
-            }
-        }
-        if (c->arg == VAL_RANGE2 && !(st->num[0] <= st->num[1])) {
-            char a[32], b[32];
-            perr(at, "%s: the least must not exceed the most (got %s, %s)", c->name,
-                 num_text(st->num[0], a), num_text(st->num[1], b));
-            return -1;
-        }
-        st->n = n;
-        break;
-    }
-    case VAL_SIZE2: {
-        if (get_tuple(t, nt, &i, 2, c, st->num, at) != 0) return -1;
-        char what[96];
-        snprintf(what, sizeof what, "%s components", c->name);
-        for (int k = 0; k < 2; k++)
-            if (check_integer(c, st->num[k], at) != 0 ||
-                check_range_of(what, c->range, c->lo, c->hi, st->num[k], at) != 0)
-                return -1;
-        st->n = 2;
-        break;
-    }
-    case VAL_COLOR:
-        if (get_tuple(t, nt, &i, 3, c, st->num, at) != 0) return -1;
-        for (int k = 0; k < 3; k++) {
-            if (st->num[k] != floor(st->num[k]) || !in_range(c->range, c->lo, c->hi, st->num[k])) {
-                char g[32], r[RANGE_TEXT];
-                perr(at, "%s components must be whole numbers %s (got %s)", c->name,
-                     range_text(c->range, c->lo, c->hi, r), num_text(st->num[k], g));
-                return -1;
-            }
-        }
-        st->n = 3;
         break;
     case ARG_OPT_ONOFF:
         if (i >= nt) break;
@@ -492,11 +719,8 @@ static int parse_stmt(stmt *st, const token *t, int nt, const where *at)
             perr(at, "'%s' is not a valid object name", head);
             return -1;
         }
-        c = command_find(dot + 1);
-        if (!c || c->form != FORM_PROPERTY) {
-            perr(at, "'%s' is not an object property (see help)", dot + 1);
-            return -1;
-        }
+        c = find_property(dot + 1, at);
+        if (!c) return -1;
         st->object = strdup(head);
         if (!st->object) {
             perr(at, "out of memory");
@@ -505,7 +729,12 @@ static int parse_stmt(stmt *st, const token *t, int nt, const where *at)
     } else {
         c = command_find(head);
         if (!c) {
-            perr(at, "unknown command %s (help lists the commands)", tok_text(&t[0], buf));
+            suggestion sg;
+            char hint[96];
+            suggest_init(&sg, head);
+            suggest_offer_commands(&sg, ~0u);
+            perr(at, "unknown command %s%s (help lists them all)", tok_text(&t[0], buf),
+                 suggest_text(&sg, hint, sizeof hint));
             return -1;
         }
     }
@@ -605,7 +834,7 @@ program *lang_parse(const char *text, size_t len, const char *name, int first_li
         return NULL;
     }
     if (name && !(prog->path = strdup(name))) goto oom;
-    where at = {prog->path, first_line - 1, err, errlen};
+    where at = {prog->path, first_line - 1, err, errlen, NULL, NULL};
     infile_lines lines;
     infile_line ln;
     int got;
@@ -613,6 +842,8 @@ program *lang_parse(const char *text, size_t len, const char *name, int first_li
     infile_lines_init(&lines, text, len, LANG_MAX_LINE);
     while ((got = infile_next_line(&lines, &ln, why, sizeof why)) != 0) {
         at.line = first_line - 1 + (int)ln.number;
+        at.text = ln.s;
+        at.text_end = ln.s + ln.len;
         if (got < 0) {
             perr(&at, "%s", why);
             goto fail;

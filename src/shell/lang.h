@@ -34,7 +34,8 @@ struct program;
 
 typedef struct stmt {
     const command *cmd;
-    char *object;          /* NAME of NAME.property = value, else NULL */
+    char *object;          /* NAME of NAME.property = value (and of plot NAME.height),
+                            * else NULL */
     int n;                 /* numbers in num */
     double num[4];         /* numeric value(s) */
     char *word;            /* name, file, choice or on/off word */
@@ -43,6 +44,9 @@ typedef struct stmt {
     int line;
     struct program *sub;   /* read FILE: the parsed file */
 } stmt;
+
+/* plot's quantities (stmt.num[0] of a plot statement). */
+enum { PLOT_ENERGY, PLOT_MOMENTUM, PLOT_HEIGHT };
 
 /* The statement's vector value (x, y, z). */
 static inline vec3 stmt_vec(const stmt *st) { return v3(st->num[0], st->num[1], st->num[2]); }

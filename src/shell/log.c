@@ -31,7 +31,7 @@ static int replace_log(FILE **slot, char *slot_path, FILE *f, const char *path, 
 int log_trace_open(shell_logs *l, const world *w, const char *path, char *err, size_t errlen)
 {
     outfile o;
-    if (open_log(&o, path, "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,state", err,
+    if (open_log(&o, path, "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,state,ke", err,
                  errlen) != 0)
         return -1;
     shell_logs first = {o.f, "", NULL, ""};
@@ -91,9 +91,10 @@ int log_trace_frame(shell_logs *l, const world *w, char *err, size_t errlen)
         /* (the reason is the failing write's: a later flush may have none) */
         if (fprintf(l->trace,
                 "%ld,%.17g,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,"
-                "%.17g,%.17g,%.17g,%s\n",
+                "%.17g,%.17g,%.17g,%s,%.17g\n",
                 w->frame, w->time, b->name, b->x.x, b->x.y, b->x.z, b->q.w, b->q.x, b->q.y,
-                b->q.z, b->v.x, b->v.y, b->v.z, b->w.x, b->w.y, b->w.z, log_body_state(b)) < 0)
+                b->q.z, b->v.x, b->v.y, b->v.z, b->w.x, b->w.y, b->w.z, log_body_state(b),
+                body_energy(b)) < 0)
             return outfile_failed(l->trace_path, errno, err, errlen);
     }
     return outfile_flush(l->trace, l->trace_path, err, errlen);

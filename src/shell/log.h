@@ -23,7 +23,11 @@ typedef struct {
     char events_path[LOG_PATH_MAX];
 } shell_logs;
 
-/* Opens path for the trace (truncating it), writes the header and one row per
+/* The trace's columns (language.md): frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,
+ * wx,wy,wz,state,ke, ke being the body's kinetic energy (energy.h; 0 when static),
+ * appended after state so that readers of the older columns read on.
+ *
+ * Opens path for the trace (truncating it), writes the header and one row per
  * object of w for the current state, and checks that they were written
  * (outfile.h).  Closes a trace already open.  Returns 0, or -1 with a message in
  * err: the new file could not be written (the previous trace is then left as it

@@ -1,6 +1,6 @@
 /* main.c: vroc's command line (language.md, "Invocation").
  *
- *   vroc [-b] [-q] [-o DIR] [-c COMMANDS] [FILE ...]
+ *   vroc [-b] [-q] [-v] [-o DIR] [-c COMMANDS] [FILE ...]
  *
  * Runs each FILE, then the -c commands, then gives the prompt when standard input
  * is a terminal (readline), or reads statements from standard input otherwise; -b
@@ -21,9 +21,10 @@
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: vroc [-b] [-q] [-o DIR] [-c COMMANDS] [FILE ...]\n"
+            "usage: vroc [-b] [-q] [-v] [-o DIR] [-c COMMANDS] [FILE ...]\n"
             "  -b           batch: run the files and -c commands, then exit (no prompt)\n"
             "  -q           quiet: no banner and no informational messages\n"
+            "  -v           verbose: show the progress of long runs in batch too\n"
             "  -o DIR       write frames into DIR (the output setting)\n"
             "  -c COMMANDS  run COMMANDS after the files (may be given more than once)\n"
             "  --help       this text\n"
@@ -76,7 +77,7 @@ static const char *scene_dir(char *buf, size_t len)
 
 int main(int argc, char **argv)
 {
-    bool batch = false, quiet = false;
+    bool batch = false, quiet = false, verbose = false;
     const char *outdir = NULL;
     const char **cmds = calloc((size_t)argc, sizeof *cmds);
     const char **files = calloc((size_t)argc, sizeof *files);
@@ -96,6 +97,7 @@ int main(int argc, char **argv)
             for (const char *p = a + 1; *p; p++) {
                 if (*p == 'b') batch = true;
                 else if (*p == 'q') quiet = true;
+                else if (*p == 'v') verbose = true;
                 else if (*p == 'o' || *p == 'c') {
                     const char *val = p[1] ? p + 1 : (i + 1 < argc ? argv[++i] : NULL);
                     if (!val) {
@@ -129,6 +131,7 @@ int main(int argc, char **argv)
     char scenes[4200];
     sh.scene_dir = scene_dir(scenes, sizeof scenes);
     sh.quiet = quiet;
+    sh.verbose = verbose;
     bool tty = isatty(STDIN_FILENO) && isatty(STDOUT_FILENO);
     sh.interactive = !batch && tty;
     sh.stop_on_error = batch || !isatty(STDIN_FILENO);

@@ -7,9 +7,18 @@
 #include <string.h>
 
 #include "fmt.h"
+#include "hand/tracker.h"
 #include "shell.h"
 #include "sound/sound.h"
 #include "view/movie.h"
+
+/* A body as the frame found it: a movie's pictures within the frame are drawn
+ * between this and where the frame leaves it. */
+typedef struct {
+    const body *b;
+    vec3 x, v;
+    quat q;
+} media_start;
 
 struct media {
     sound_engine *snd;
@@ -19,6 +28,9 @@ struct media {
     long mov_skipped;   /* pictures the movie left out (MOVIE_MAX_COPIES, Ctrl-C) */
     sound_hit *hits;    /* the frame's collisions, as the engine hears them */
     long cap;
+    media_start *start; /* each body when the frame began (media_frame_begin) */
+    view_pose *poses;   /* where a picture within the frame draws them */
+    int nstart, capstart;
 };
 
 /* The state, made on first need; NULL when out of memory. */
@@ -115,27 +127,93 @@ static int media_movie_close(shell *sh, media *m, const stmt *st)
     return rc;
 }
 
-/* The frame's view to the movie: as many copies as keep video time with simulated
- * time (none when time_step is shorter than the movie's frame), up to
- * MOVIE_MAX_COPIES, and fewer when Ctrl-C comes: the pictures left out are
- * skipped, so that later frames keep step (and one warning says so). */
-static cmd_status media_movie_frame(shell *sh, media *m, const stmt *st, double t1)
+void media_frame_begin(shell *sh)
 {
-    long want = llround((t1 - m->mov_start) / movie_period(m->mov)) - m->mov_skipped;
-    long copies = want - movie_frames(m->mov);
-    if (copies <= 0) return CMD_OK;
-    if (copies > MOVIE_MAX_COPIES) {
+    media *m = sh->media;
+    if (!m || !m->mov) return;
+    const world *w = &sh->w;
+    m->nstart = 0;
+    if (w->n > m->capstart) {
+        media_start *ns = realloc(m->start, (size_t)w->n * sizeof *ns);
+        view_pose *np = ns ? realloc(m->poses, (size_t)w->n * sizeof *np) : NULL;
+        if (ns) m->start = ns;
+        if (np) m->poses = np;
+        if (!ns || !np) return; /* pictures as the frame ends, rather than none */
+        m->capstart = w->n;
+    }
+    for (int i = 0; i < w->n; i++) {
+        const body *b = w->bodies[i];
+        m->start[i] = (media_start){b, b->x, b->v, b->q};
+    }
+    m->nstart = w->n;
+}
+
+/* Where the bodies are a fraction s into the frame of h seconds, from where it
+ * found them to where it left them: the cubic through both places with both
+ * velocities (exact for free flight under the force, a quadratic), and the
+ * shorter turn between both orientations.  False when the bodies are not the
+ * ones the frame began with. */
+static bool media_between(const shell *sh, media *m, double s, double h)
+{
+    const world *w = &sh->w;
+    if (m->nstart != w->n) return false;
+    double s2 = s * s, s3 = s2 * s;
+    double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
+    for (int i = 0; i < w->n; i++) {
+        const body *b = w->bodies[i];
+        const media_start *a = &m->start[i];
+        if (a->b != b) return false;
+        vec3 x = v3_add(v3_add(v3_scale(a->x, h00), v3_scale(a->v, h10 * h)),
+                        v3_add(v3_scale(b->x, h01), v3_scale(b->v, h11 * h)));
+        /* (the tracker's slerp: a fraction s of the short turn from a to b) */
+        m->poses[i] = (view_pose){x, tracker_turned(a->q, v3_scale(tracker_turn(a->q, b->q), s))};
+    }
+    return true;
+}
+
+/* The frame's pictures to the movie, movie_rate of them a second of simulated
+ * time: picture k shows the time mov_start + (k + 1 + skipped) / movie_rate.
+ * Those due within the frame [t0, t1] are drawn between its start and its end
+ * (media_between); where a picture is due at the frame's end, or time_step is
+ * shorter than a picture, the view after the frame is added as many times as
+ * keeps video time with simulated time.  A frame gives at most MOVIE_MAX_COPIES
+ * (one warning says so), and fewer when Ctrl-C comes: the pictures left out are
+ * skipped, so that later frames keep step. */
+static cmd_status media_movie_frame(shell *sh, media *m, const stmt *st, double t0, double t1)
+{
+    double period = movie_period(m->mov), h = t1 - t0;
+    long before = m->mov_skipped;
+    long want = llround((t1 - m->mov_start) / period) - before;
+    long cut = want - movie_frames(m->mov) - MOVIE_MAX_COPIES;
+    if (cut > 0) {
         char a[32], b[32];
         sh_warn(sh, st, "movie: a frame of time_step = %s s would be %ld pictures at %s a second; "
                 "it gets %d, and the movie skips the rest (its sound goes on, out of step from "
-                "there)", fmt_num(a, sh->w.set.time_step), copies,
-                fmt_num(b, 1 / movie_period(m->mov)), MOVIE_MAX_COPIES);
-        m->mov_skipped += copies - MOVIE_MAX_COPIES;
-        copies = MOVIE_MAX_COPIES;
+                "there)", fmt_num(a, h), want - movie_frames(m->mov), fmt_num(b, 1 / period),
+                MOVIE_MAX_COPIES);
+        want -= cut;
+        m->mov_skipped += cut;
     }
     char err[2048];
+    bool posed = false;
+    shell_overlay(sh);
+    /* the pictures within the frame */
+    while (movie_frames(m->mov) < want && !shell_interrupted) {
+        double s = (m->mov_start + (double)(movie_frames(m->mov) + before + 1) * period - t0) / h;
+        if (!(s < 1 - 1e-9) || !media_between(sh, m, s > 0 ? s : 0, h)) break;
+        if (view_render_posed(&sh->view, &sh->w, m->poses, &sh->view_set, err, sizeof err) != 0 ||
+            movie_add(m->mov, sh->view, 1, err, sizeof err) != 0)
+            goto failed;
+        posed = true;
+    }
+    long copies = want - movie_frames(m->mov);
+    if (copies <= 0) return CMD_OK;
+    if (shell_interrupted) { /* (shell_advance says so) */
+        m->mov_skipped += copies;
+        return CMD_OK;
+    }
     /* record has drawn this frame already, unless an eye the movie needs is missing */
-    bool drawn = sh->view_set.record && view_pixels(sh->view, 0, NULL, NULL) &&
+    bool drawn = sh->view_set.record && !posed && view_pixels(sh->view, 0, NULL, NULL) &&
                  (!movie_needs_right(m->mov) || view_pixels(sh->view, 1, NULL, NULL));
     bool ok = drawn || view_render(&sh->view, &sh->w, &sh->view_set, err, sizeof err) == 0;
     /* in runs of ten, so that Ctrl-C stops a long one */
@@ -148,6 +226,7 @@ static cmd_status media_movie_frame(shell *sh, media *m, const stmt *st, double 
         ok = movie_add(m->mov, sh->view, copies - done < run ? copies - done : run, err, sizeof err) == 0;
     }
     if (ok) return CMD_OK;
+failed:;
     /* the one rule for an output that fails (outfile.h); what finishing the
      * broken movie adds to it is no news */
     movie_abort(m->mov);
@@ -168,7 +247,7 @@ cmd_status media_frame(shell *sh, const stmt *st)
     if (ask) media_ask_server(sh, m, st, t0);
     cmd_status r = CMD_OK;
     if (sound_active(m->snd)) r = media_sound_frame(sh, m, st, t0, t1);
-    if (r == CMD_OK && m->mov) r = media_movie_frame(sh, m, st, t1);
+    if (r == CMD_OK && m->mov) r = media_movie_frame(sh, m, st, t0, t1);
     return r;
 }
 
@@ -226,7 +305,7 @@ cmd_status media_movie(shell *sh, const stmt *st, const char *path)
     if (!path) return m->mov && media_movie_close(sh, m, st) != 0 ? CMD_ERROR : CMD_OK;
     char err[2048];
     movie *nm;
-    if (movie_open(&nm, path, &sh->view_set, sh->w.set.time_step, err, sizeof err) != 0) {
+    if (movie_open(&nm, path, &sh->view_set, 1 / sh->view_set.movie_rate, err, sizeof err) != 0) {
         sh_error(sh, st, "movie: %s", err);
         return CMD_ERROR;
     }
@@ -286,6 +365,8 @@ void media_free(shell *sh)
     char err[256];
     sound_free(m->snd, m->elapsed, err, sizeof err);
     free(m->hits);
+    free(m->start);
+    free(m->poses);
     free(m);
     sh->media = NULL;
 }

@@ -28,6 +28,10 @@ struct shell;
 struct stmt;
 typedef struct media media;
 
+/* Before each frame: where the bodies start it, for a movie's pictures within it
+ * (nothing without a movie). */
+void media_frame_begin(struct shell *sh);
+
 /* After each frame: sounds of its collisions, frames of the movie.  A soundtrack
  * or movie that fails is turned off (shell_output_failed); returns CMD_ERROR when
  * the run must stop. */

@@ -4,17 +4,11 @@
 
 #include <errno.h>
 #include <fcntl.h>
-#include <poll.h>
-#include <signal.h>
 #include <stdbool.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
-#include <time.h>
 #include <unistd.h>
-
-#include "infile.h"
 
 int outfile_failed(const char *path, int e, char *err, size_t errlen)
 {
@@ -231,106 +225,4 @@ int outfile_finish(outfile *o, char *err, size_t errlen)
         return -1;
     }
     return put_in_place(o, err, errlen);
-}
-
-/* ---- pipes to programs ---- */
-
-static double clock_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-/* The processor time program pid has used (clock ticks), or -1. */
-static long cpu_ticks(pid_t pid)
-{
-    char name[64], buf[1024];
-    snprintf(name, sizeof name, "/proc/%ld/stat", (long)pid);
-    FILE *f = fopen(name, "r");
-    if (!f) return -1;
-    size_t n = fread(buf, 1, sizeof buf - 1, f);
-    fclose(f);
-    buf[n] = '\0';
-    const char *p = strrchr(buf, ')'); /* after the name, which may hold anything */
-    unsigned long ut, st;
-    if (!p || sscanf(p + 1, " %*c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %lu %lu", &ut, &st) != 2)
-        return -1;
-    return (long)(ut + st);
-}
-
-/* Whether pid has worked since *ticks was taken (and takes it anew). */
-static bool worked(pid_t pid, long *ticks)
-{
-    long t = cpu_ticks(pid);
-    bool w = t != *ticks;
-    *ticks = t;
-    return w;
-}
-
-int outfile_write_all(int fd, const void *buf, size_t n, pid_t pid)
-{
-    sigset_t pipe_set, old;
-    sigemptyset(&pipe_set);
-    sigaddset(&pipe_set, SIGPIPE);
-    sigprocmask(SIG_BLOCK, &pipe_set, &old);
-    const char *p = buf;
-    double limit = infile_timeout(), since = clock_s();
-    long ticks = cpu_ticks(pid);
-    int rc = 0;
-    while (n > 0) {
-        ssize_t w = write(fd, p, n);
-        if (w > 0) {
-            p += w;
-            n -= (size_t)w;
-            since = clock_s();
-            continue;
-        }
-        if (w < 0 && errno == EINTR) continue;
-        if (w < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
-            struct pollfd pf = {fd, POLLOUT, 0};
-            poll(&pf, 1, 100);
-            if (clock_s() - since >= limit) {
-                if (!worked(pid, &ticks)) {
-                    rc = ETIMEDOUT;
-                    break;
-                }
-                since = clock_s();
-            }
-            continue;
-        }
-        rc = w < 0 && errno ? errno : EIO;
-        break;
-    }
-    if (rc == EPIPE) { /* take the SIGPIPE raised, so it is not delivered later */
-        struct timespec zero = {0, 0};
-        while (sigtimedwait(&pipe_set, NULL, &zero) > 0) {
-        }
-    }
-    sigprocmask(SIG_SETMASK, &old, NULL);
-    return rc;
-}
-
-int outfile_wait(pid_t pid)
-{
-    double limit = infile_timeout(), since = clock_s();
-    long ticks = cpu_ticks(pid);
-    for (;;) {
-        int st;
-        pid_t r = waitpid(pid, &st, WNOHANG);
-        if (r == pid) return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-        if (r < 0 && errno != EINTR) return -1;
-        struct timespec nap = {0, 20 * 1000 * 1000};
-        nanosleep(&nap, NULL);
-        if (clock_s() - since >= limit) {
-            if (!worked(pid, &ticks)) {
-                kill(-pid, SIGKILL); /* its process group, when it leads one (ffmpeg) */
-                kill(pid, SIGKILL);
-                while (waitpid(pid, &st, 0) < 0 && errno == EINTR) {
-                }
-                return -2;
-            }
-            since = clock_s();
-        }
-    }
 }

@@ -29,7 +29,6 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdio.h>
-#include <sys/types.h>
 
 /* Flushes f and checks that everything written to it so far reached the system.
  * Returns 0, or -1 with "cannot write 'path': reason" in err. */
@@ -90,20 +89,6 @@ int outfile_finish(outfile *o, char *err, size_t errlen);
 
 /* Gives up: closes the file and removes the part file (path is as it was). */
 void outfile_abort(outfile *o);
-
-/* Writes all n bytes of buf to fd, a pipe to a program (ffmpeg), waiting for it
- * at most infile_timeout() seconds at a time, while the program pid neither
- * takes a byte nor works (uses no processor time): a program that stalls ends
- * the write with ETIMEDOUT, one that stopped reading with EPIPE (SIGPIPE is held
- * back), Ctrl-C with EINTR.  fd must be non-blocking.  Returns 0 or the errno
- * value. */
-int outfile_write_all(int fd, const void *buf, size_t n, pid_t pid);
-
-/* Waits for the program pid to end, as long as it works (uses processor time or
- * writes), giving up after infile_timeout() seconds of neither (it is then
- * killed).  Returns its exit status, -1 when it did not exit by itself, or -2
- * when it was killed for stalling. */
-int outfile_wait(pid_t pid);
 
 /* Checks f's writes as outfile_flush does, then closes it (NULL: nothing to do).
  * Returns 0, or -1 with the message in err; f is closed either way. */

@@ -9,6 +9,12 @@
  * stops running time or an ongoing `run`, or clears the line being typed.  From a
  * pipe, lines are read plainly with no prompt.  (After Lua's lua.c and SQLite's
  * shell: readline only on a terminal, a signal handler that only sets a flag.)
+ * While time runs the prompt says so, with the time: vroc[t=12.3]>.
+ *
+ * One turn of the loop: the hand's wall clock, the frames that are due, the
+ * live sound, the prompt, then select() on the keyboard and the hand's feed
+ * until the next thing is due.  A new source of events adds its descriptor to
+ * the select and its work to the turn.
  */
 #define _GNU_SOURCE /* sigaction in <signal.h> with readline's headers */
 #include <errno.h>
@@ -31,6 +37,11 @@ static shell *g_sh;     /* the shell readline's callbacks work on */
 static bool g_done;     /* quit or end of input */
 static double g_wall;   /* the wall clock up to which the hand's clock ran */
 static char g_history[4096];
+static char g_prompt[64]; /* the prompt shown */
+static double g_prompt_at; /* when it was last changed */
+
+/* How often, at most, the prompt's time is redrawn while time runs, s. */
+#define PROMPT_EVERY 0.25
 
 /* Ctrl-C sets the flag; a second one before anything took the first (a loop
  * that does not look) ends vroc as Ctrl-C ends a program. */
@@ -61,6 +72,31 @@ static void mend_line(shell *sh)
     sh->line_broken = false;
     rl_on_new_line();
     rl_redisplay();
+}
+
+/* The prompt: "vroc> ", or "vroc[t=T]> " while time runs. */
+static void prompt_text(const shell *sh, char *buf, size_t len)
+{
+    char a[32];
+    if (sh->running) snprintf(buf, len, "vroc[t=%s]> ", fmt_shown(a, sh->w.time, shell_shown(sh)));
+    else snprintf(buf, len, "vroc> ");
+}
+
+/* Shows the prompt that fits now: at once when time starts or stops, and while
+ * it runs at most every PROMPT_EVERY.  redraw: readline draws the line again
+ * (not when it is about to, after a line was read). */
+static void prompt_update(shell *sh, bool redraw)
+{
+    char want[sizeof g_prompt];
+    prompt_text(sh, want, sizeof want);
+    if (strcmp(want, g_prompt) == 0) return;
+    double now = shell_clock();
+    bool both_running = strncmp(want, "vroc[", 5) == 0 && strncmp(g_prompt, "vroc[", 5) == 0;
+    if (both_running && now - g_prompt_at < PROMPT_EVERY) return;
+    snprintf(g_prompt, sizeof g_prompt, "%s", want);
+    g_prompt_at = now;
+    rl_set_prompt(g_prompt);
+    if (redraw) rl_redisplay();
 }
 
 /* How often the prompt wakes while the hand moves on the wall clock, s. */
@@ -99,6 +135,7 @@ static void on_line(char *line)
     shell_interrupted = 0; /* a Ctrl-C the statement did not look for is spent */
     free(line);
     g_sh->at_prompt = !g_done;
+    if (!g_done) prompt_update(g_sh, false); /* readline shows it next */
 }
 
 /* Advances the frames that are due in real time; returns seconds to the next.  A
@@ -138,7 +175,8 @@ static int loop_readline(shell *sh)
     rl_basic_word_break_characters = " \t\n\"(),=;#";
     rl_catch_signals = 0;
     shell_catch_sigint();
-    rl_callback_handler_install("vroc> ", on_line);
+    prompt_text(sh, g_prompt, sizeof g_prompt);
+    rl_callback_handler_install(g_prompt, on_line);
     sh->at_prompt = true;
     double next = 0;
     g_wall = shell_clock();
@@ -146,7 +184,9 @@ static int loop_readline(shell *sh)
         hand_tick(sh); /* it may press Start */
         double wait = media_pump(sh, run_due_frames(sh, &next)); /* frames, live sound */
         mend_line(sh);
+        prompt_update(sh, true);
         if (!sh->running) next = 0;
+        if (sh->running && (wait < 0 || wait > PROMPT_EVERY)) wait = PROMPT_EVERY;
         if (hand_busy(&sh->hand) && (wait < 0 || wait > HAND_TICK)) wait = HAND_TICK;
         int in = fileno(rl_instream ? rl_instream : stdin), feed = hand_feed_fd(&sh->hand);
         fd_set fds;
@@ -166,10 +206,11 @@ static int loop_readline(shell *sh)
             if (sh->running) {
                 char a[32];
                 sh->running = false;
-                fprintf(sh->out, "\nstopped at time = %s\n", fmt_num(a, sh->w.time));
+                fprintf(sh->out, "\nstopped at time = %s\n", fmt_shown(a, sh->w.time, shell_shown(sh)));
             } else {
                 fputc('\n', sh->out);
             }
+            prompt_update(sh, false);
             rl_replace_line("", 0);
             rl_on_new_line();
             rl_redisplay();

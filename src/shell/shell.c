@@ -31,8 +31,11 @@ shell_settings shell_settings_defaults(void)
     s.random_size[0] = 0.08;
     s.random_size[1] = 0.2;
     s.seed = 1;
+    s.precision = FMT_SHORT;
     return s;
 }
+
+fmt_style shell_shown(const shell *sh) { return (fmt_style)sh->set.precision; }
 
 double shell_clock(void)
 {
@@ -71,6 +74,7 @@ void shell_init(shell *sh, FILE *out, FILE *err)
     sh->out = out;
     sh->err = err;
     hand_init(&sh->hand, shell_hand_say, sh);
+    figures_init(&sh->figs, FIGURES_MAX_FRAMES, FIGURES_MAX_HEIGHTS);
 }
 
 cmd_status shell_close_logs(shell *sh, const stmt *st)
@@ -106,6 +110,7 @@ void shell_free(shell *sh)
     view_free(sh->view);
     sh->view = NULL;
     hand_free(&sh->hand);
+    figures_free(&sh->figs);
 }
 
 /* ------------------------------------------------------------ messages */
@@ -138,6 +143,7 @@ static void put_line(FILE *f, const char *fmt, va_list ap)
 
 static void vmsg(shell *sh, const stmt *st, const char *kind, const char *fmt, va_list ap)
 {
+    if (sh->progress) progress_hide(sh->progress);
     break_line(sh);
     fflush(sh->out);
     if (st && st->file) {
@@ -169,6 +175,7 @@ void sh_warn(shell *sh, const stmt *st, const char *fmt, ...)
 void sh_info(shell *sh, const char *fmt, ...)
 {
     if (sh->quiet) return;
+    if (sh->progress) progress_hide(sh->progress);
     break_line(sh);
     va_list ap;
     va_start(ap, fmt);
@@ -285,6 +292,7 @@ cmd_status shell_run_file(shell *sh, const char *path)
 {
     char err[1024];
     lang_paths paths = paths_of(sh);
+    figures_clear(&sh->figs); /* a new run, as read starts one */
     /* level 1, as a file read at the prompt: one nesting limit for both */
     program *p = lang_parse_file(path, &paths, 1, NULL, 0, NULL, 0, err, sizeof err);
     return run_parsed(sh, p, err);
@@ -420,7 +428,8 @@ static cmd_status interrupted(shell *sh, const stmt *st)
     return CMD_ERROR;
 }
 
-cmd_status shell_advance(shell *sh, const stmt *st, long n)
+/* shell_advance, with a status line when show (progress.h). */
+static cmd_status advance(shell *sh, const stmt *st, long n, bool show)
 {
     char err[1024];
     if (n > 0 && !sh->found_apart && shell_check_start(sh, st) != CMD_OK) return CMD_ERROR;
@@ -428,6 +437,12 @@ cmd_status shell_advance(shell *sh, const stmt *st, long n)
     cmd_status r = CMD_OK;
     sim_hook hook = {hand_hook_next, hand_hook_at, &sh->hand};
     sh->hand_failed = false;
+    if (n > 0 && sh->figs.n == 0) figures_record(&sh->figs, &sh->w); /* where the run starts */
+    progress prog;
+    if (show) {
+        progress_begin(&prog, sh->err, n, t0);
+        sh->progress = &prog;
+    }
     for (long k = 0; k < n && r == CMD_OK; k++) {
         if (shell_interrupted) {
             r = interrupted(sh, st);
@@ -437,6 +452,7 @@ cmd_status shell_advance(shell *sh, const stmt *st, long n)
             r = CMD_ERROR;
             break;
         }
+        media_frame_begin(sh); /* a movie's pictures within the frame start here */
         /* the hand acts at its rows' instants within the frame (hand.h) */
         hand_frame_begin(&sh->hand, &sh->w);
         int status = sim_frame_hooked(&sh->w, &hook, err, sizeof err);
@@ -447,16 +463,29 @@ cmd_status shell_advance(shell *sh, const stmt *st, long n)
             break;
         }
         rest_beyond_limits(sh, st);
+        figures_record(&sh->figs, &sh->w);
         r = write_frame(sh, st);
         /* the panel's buttons pressed in the frame act at its end */
         if (r == CMD_OK && (shell_after_hand(sh) != CMD_OK || (sh->hand_failed && sh->stop_on_error)))
             r = CMD_ERROR;
+        if (show) progress_tick(&prog, k + 1, sh->w.time, shell_clock());
+    }
+    if (show) {
+        progress_hide(&prog);
+        sh->progress = NULL;
     }
     /* (a Ctrl-C the last frame's movie took) */
     if (r == CMD_OK && shell_interrupted) r = interrupted(sh, st);
     shell_tell_cut(sh, st);
     sh->wall_time += shell_clock() - t0;
     return r;
+}
+
+cmd_status shell_advance(shell *sh, const stmt *st, long n) { return advance(sh, st, n, false); }
+
+cmd_status shell_run_frames(shell *sh, const stmt *st, long n)
+{
+    return advance(sh, st, n, sh->interactive || sh->verbose);
 }
 
 void *shell_setting_field(shell *sh, const command *c)

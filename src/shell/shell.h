@@ -17,10 +17,13 @@
 #include <stdio.h>
 
 #include "commands.h"
+#include "figures.h"
+#include "fmt.h"
 #include "core/world.h"
 #include "hand/hand.h"
 #include "lang.h"
 #include "log.h"
+#include "progress.h"
 #include "sound/sound.h"
 #include "view/view.h"
 
@@ -33,9 +36,11 @@ typedef struct {
     double random_size[2];  /* the least and the most of each random object's largest
                              * half-extent (a sphere's radius) */
     unsigned long seed;     /* of random's sequence */
+    int precision;          /* how numbers are shown to a person (fmt_style) */
 } shell_settings;
 
-/* The start-up values: random_box (2, 2, 2), random_size (0.08, 0.2), seed 1. */
+/* The start-up values: random_box (2, 2, 2), random_size (0.08, 0.2), seed 1,
+ * precision short. */
 shell_settings shell_settings_defaults(void);
 
 typedef struct shell {
@@ -51,16 +56,21 @@ typedef struct shell {
         sound_settings sound;
     } startup;
     shell_logs logs;       /* trace and events */
+    figures figs;          /* the current run's figures, for plot */
     view *view;            /* off-screen context, created on first need */
     view_stats view_st;    /* what drawing has cost */
     struct media *media;   /* sound and movie (media.h), made on first need */
     double wall_time;      /* seconds spent advancing time */
     bool running;          /* `start` given and not stopped */
     int current;           /* index of the current object, or -1 */
+    long made;             /* objects made since restart: the next takes colour `made`
+                            * of the palette (view_palette) */
     const stmt *running_st; /* the statement running (for the hand's messages) */
     bool hand_failed;      /* the hand reported an error since it began */
     bool interactive;      /* a terminal with readline */
     bool quiet;            /* -q */
+    bool verbose;          /* -v: progress in batch too */
+    progress *progress;    /* the status line of the run going on, or NULL */
     bool stop_on_error;    /* -b, or input that is not a terminal */
     FILE *out, *err;
     const char *scene_dir; /* installed scenes folder */
@@ -108,6 +118,10 @@ cmd_status shell_check_start(shell *sh, const stmt *st);
 /* Advances n frames (honouring Ctrl-C); writes the logs' rows after each, and the
  * views when record is on. */
 cmd_status shell_advance(shell *sh, const stmt *st, long n);
+
+/* shell_advance for `run`: at an interactive prompt, or with -v, a run that lasts
+ * shows its progress (progress.h). */
+cmd_status shell_run_frames(shell *sh, const stmt *st, long n);
 
 /* The one rule for an output that could not be written (outfile.h): trace,
  * events, the recorded frames, and any file written as time runs.  The caller has
@@ -157,6 +171,9 @@ void shell_overlay(shell *sh);
 /* The address of setting c's field (a FORM_SETTING) in its owner's settings. */
 void *shell_setting_field(shell *sh, const command *c);
 const void *shell_setting_value(const shell *sh, const command *c);
+
+/* How numbers are shown to a person now (`precision`). */
+fmt_style shell_shown(const shell *sh);
 
 /* How many numbers the random sequence has drawn since seed was set (what
  * random_draws restores). */

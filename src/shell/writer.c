@@ -15,10 +15,27 @@
 #include "media.h"
 #include "shell.h"
 
-void writer_vec(FILE *out, vec3 v)
+/* n numbers as "(a, b, ...)" in style s. */
+static void write_tuple(FILE *out, const double *v, int n, fmt_style s)
 {
-    char a[32], b[32], c[32];
-    fprintf(out, "(%s, %s, %s)", fmt_num(a, v.x), fmt_num(b, v.y), fmt_num(c, v.z));
+    char t[4][32];
+    fmt_shown_vec(t, v, n, s);
+    fputc('(', out);
+    for (int k = 0; k < n; k++) fprintf(out, "%s%s", k ? ", " : "", t[k]);
+    fputc(')', out);
+}
+
+void writer_vec(FILE *out, vec3 v, fmt_style s)
+{
+    write_tuple(out, (const double[3]){v.x, v.y, v.z}, 3, s);
+}
+
+/* The k-th word of choices ("a|b|c"). */
+static void write_choice(FILE *out, const char *choices, int k)
+{
+    const char *p = choices;
+    for (; k > 0 && *p; k--) p += strcspn(p, "|") + (p[strcspn(p, "|")] ? 1 : 0);
+    fprintf(out, "%.*s", (int)strcspn(p, "|"), p);
 }
 
 void writer_quoted(FILE *out, const char *s)
@@ -35,6 +52,7 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
 {
     const shell_settings *s = &sh->set;
     const view_settings *vs = &sh->view_set;
+    fmt_style num = for_save ? FMT_EXACT : shell_shown(sh);
     char a[32];
     const char *n = c->name;
     const hand_settings *hs = &sh->hand.set;
@@ -51,6 +69,8 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
                 path[0] ? path : "off", path[0] ? "\"" : "");
         return;
     }
+    /* how numbers are shown is the console's, not the world's */
+    if (for_save && strcmp(n, "precision") == 0) return;
     /* what the hand does, after the objects it may hold (hand_write) */
     bool after = strcmp(n, "tracker") == 0 || strcmp(n, "tracker_time") == 0 ||
                  strcmp(n, "grip") == 0 || strcmp(n, "trigger") == 0;
@@ -68,7 +88,7 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
         return;
     }
     if (strcmp(n, "tracker_time") == 0) {
-        fprintf(out, "tracker_time = %s\n", fmt_num(a, hand_tracker_time(&sh->hand)));
+        fprintf(out, "tracker_time = %s\n", fmt_shown(a, hand_tracker_time(&sh->hand), num));
         return;
     }
     if (strcmp(n, "grip") == 0) {
@@ -85,7 +105,7 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
         return;
     }
     if (strcmp(n, "clock") == 0) {
-        fprintf(out, "clock = (%s, %ld)\n", fmt_num(a, sh->w.time_base), sh->w.base_frames);
+        fprintf(out, "clock = (%s, %ld)\n", fmt_shown(a, sh->w.time_base, num), sh->w.base_frames);
         return;
     }
     if (strcmp(n, "frame") == 0) {
@@ -109,18 +129,13 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
     const char *field = shell_setting_value(sh, c);
     fprintf(out, "%s = ", n);
     switch (c->arg) {
-    case VAL_NUMBER: fprintf(out, "%s", fmt_num(a, *(const double *)field)); break;
-    case VAL_VECTOR: writer_vec(out, *(const vec3 *)field); break;
-    case VAL_RANGE2: {
-        const double *d = (const double *)field;
-        char b[32];
-        fprintf(out, "(%s, %s)", fmt_num(a, d[0]), fmt_num(b, d[1]));
-        break;
-    }
+    case VAL_NUMBER: fprintf(out, "%s", fmt_shown(a, *(const double *)field, num)); break;
+    case VAL_VECTOR: writer_vec(out, *(const vec3 *)field, num); break;
+    case VAL_RANGE2: write_tuple(out, (const double *)field, 2, num); break;
     case VAL_VECTOR_ANGLE: {
         const dir_amount *d = (const dir_amount *)field;
-        writer_vec(out, d->dir);
-        fprintf(out, " %s", fmt_num(a, d->amount));
+        writer_vec(out, d->dir, num);
+        fprintf(out, " %s", fmt_shown(a, d->amount, num));
         break;
     }
     case VAL_COLOR: {
@@ -130,9 +145,16 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
     }
     case VAL_ONOFF: fprintf(out, "%s", *(const bool *)field ? "on" : "off"); break;
     case VAL_FILE: writer_quoted(out, field); break;
+    case VAL_CHOICE: write_choice(out, c->choices, *(const int *)field); break;
     default: break;
     }
     fputc('\n', out);
+}
+
+void setting_write(FILE *out, const shell *sh, const command *c)
+{
+    if (c->run == cmd_select) fprintf(out, "select %s\n", sh->hand.set.select_mode ? "on" : "off");
+    else write_setting(out, sh, c, 0);
 }
 
 void settings_write(FILE *out, const shell *sh, int for_save)
@@ -141,7 +163,7 @@ void settings_write(FILE *out, const shell *sh, int for_save)
         const command *c = &command_table[i];
         if (c->form == FORM_SETTING) write_setting(out, sh, c, for_save);
         else if (c->run == cmd_select) /* the hand's select mode is a setting too */
-            fprintf(out, "select %s\n", sh->hand.set.select_mode ? "on" : "off");
+            setting_write(out, sh, c);
     }
 }
 
@@ -179,11 +201,14 @@ void writer_path(const char *path, const char *save_path, char *out, size_t outl
         snprintf(out, outlen, "%s", real);
 }
 
-/* A polyhedron's shape: its file (with its SHA-256) and its scale; for print, the
- * pieces it collides as and its centre of mass. */
-static void polyhedron_write(FILE *out, const body *b, const char *save_path)
+/* A polyhedron's shape: its file (with its SHA-256; for save, its path from the
+ * saved file's folder) and its scale; for print, the pieces it collides as and its
+ * centre of mass. */
+static void polyhedron_write(FILE *out, const body *b, write_style st)
 {
     char a[32], c[32], d[32];
+    const char *save_path = st.save_path;
+    fmt_style s = st.num;
     const mesh_source *src = mesh_source_of(b->sp.src);
     if (src) {
         char path[PATH_MAX];
@@ -197,66 +222,146 @@ static void polyhedron_write(FILE *out, const body *b, const char *save_path)
     }
     vec3 k = b->sp.scale;
     if (k.x == k.y && k.y == k.z) {
-        fprintf(out, "scale = %s\n", fmt_num(a, k.x));
+        fprintf(out, "scale = %s\n", fmt_shown(a, k.x, s));
     } else {
         fprintf(out, "scale = ");
-        writer_vec(out, k);
+        writer_vec(out, k, s);
         fputc('\n', out);
     }
     if (save_path || !b->built) return;
     vec3 com = b->shape.mass.com;
+    if (s == FMT_SHORT) { /* rounding dust of the volume integrals, against the size */
+        double dust = 1e-12 * b->shape.r_out;
+        if (fabs(com.x) < dust) com.x = 0;
+        if (fabs(com.y) < dust) com.y = 0;
+        if (fabs(com.z) < dust) com.z = 0;
+    }
     fprintf(out, "pieces = %d\n# centre of mass, in its own axes: (%s, %s, %s)\n",
-            b->shape.pieces, fmt_num(a, com.x), fmt_num(c, com.y), fmt_num(d, com.z));
+            b->shape.pieces, fmt_shown(a, com.x, s), fmt_shown(c, com.y, s), fmt_shown(d, com.z, s));
 }
 
-void body_write(FILE *out, const body *b) { body_write_for(out, b, NULL); }
+/* The orientation as an axis and an angle: as typed while it holds, else from q. */
+static void body_axis_angle(const body *b, vec3 *axis, double *angle)
+{
+    *axis = b->rot_axis;
+    *angle = b->rot_angle;
+    if (!b->rot_given) q_to_axis_angle(b->q, axis, angle);
+}
 
-void body_write_for(FILE *out, const body *b, const char *save_path)
+static void write_quat(FILE *out, quat q, fmt_style s)
+{
+    write_tuple(out, (const double[4]){q.w, q.x, q.y, q.z}, 4, s);
+}
+
+void body_write(FILE *out, const body *b, write_style st)
 {
     char a[32];
+    fmt_style s = st.num;
     const shape_params *p = &b->sp;
     fprintf(out, "%s %s\n", body_type_name(p->kind), b->name);
-    fprintf(out, "mass = %s\n", fmt_num(a, b->mass));
-    fprintf(out, "elasticity = %s\n", fmt_num(a, b->elasticity));
-    fprintf(out, "volume = %s\n", fmt_num(a, b->volume));
+    fprintf(out, "mass = %s\n", fmt_shown(a, b->mass, s));
+    fprintf(out, "elasticity = %s\n", fmt_shown(a, b->elasticity, s));
+    fprintf(out, "volume = %s\n", fmt_shown(a, b->volume, s));
     fprintf(out, "color = (%d, %d, %d)\n", b->color[0], b->color[1], b->color[2]);
     switch (p->kind) {
     case SHAPE_SPHERE:
-        fprintf(out, "radius = %s\n", fmt_num(a, p->radius));
+        fprintf(out, "radius = %s\n", fmt_shown(a, p->radius, s));
         fprintf(out, "ures = %d\nvres = %d\n", p->ures, p->vres);
         break;
     case SHAPE_CUBE:
         fprintf(out, "size = ");
-        writer_vec(out, p->size);
+        writer_vec(out, p->size, s);
         fputc('\n', out);
         break;
     case SHAPE_SUPERQUADRIC:
-        fprintf(out, "exp1 = %s\n", fmt_num(a, p->exp1));
-        fprintf(out, "exp2 = %s\n", fmt_num(a, p->exp2));
-        fprintf(out, "a1 = %s\n", fmt_num(a, p->a1));
-        fprintf(out, "a2 = %s\n", fmt_num(a, p->a2));
-        fprintf(out, "a3 = %s\n", fmt_num(a, p->a3));
+        fprintf(out, "exp1 = %s\n", fmt_shown(a, p->exp1, s));
+        fprintf(out, "exp2 = %s\n", fmt_shown(a, p->exp2, s));
+        fprintf(out, "a1 = %s\n", fmt_shown(a, p->a1, s));
+        fprintf(out, "a2 = %s\n", fmt_shown(a, p->a2, s));
+        fprintf(out, "a3 = %s\n", fmt_shown(a, p->a3, s));
         fprintf(out, "ures = %d\nvres = %d\n", p->ures, p->vres);
         break;
-    case SHAPE_POLYHEDRON: polyhedron_write(out, b, save_path); break;
+    case SHAPE_POLYHEDRON: polyhedron_write(out, b, st); break;
     }
     fprintf(out, "translate = ");
-    writer_vec(out, b->x);
-    vec3 axis = b->rot_axis;
-    double angle = b->rot_angle;
-    if (!b->rot_given) q_to_axis_angle(b->q, &axis, &angle);
-    fprintf(out, "\nrotate = ");
-    writer_vec(out, axis);
-    fprintf(out, " %s\nlinear_vel = ", fmt_num(a, angle));
-    writer_vec(out, b->v);
+    writer_vec(out, b->x, s);
+    fputc('\n', out);
+    if (!st.once) {
+        vec3 axis;
+        double angle;
+        body_axis_angle(b, &axis, &angle);
+        fprintf(out, "rotate = ");
+        writer_vec(out, axis, s);
+        fprintf(out, " %s\n", fmt_shown(a, angle, s));
+    }
+    fprintf(out, "linear_vel = ");
+    writer_vec(out, b->v, s);
     fprintf(out, "\nangular_vel = ");
-    writer_vec(out, b->w);
-    char c[32], d[32], e[32];
-    fprintf(out, "\norientation = (%s, %s, %s, %s)\nvelocity = ", fmt_num(a, b->q.w),
-            fmt_num(c, b->q.x), fmt_num(d, b->q.y), fmt_num(e, b->q.z));
-    writer_vec(out, b->v);
+    writer_vec(out, b->w, s);
+    fprintf(out, "\norientation = ");
+    write_quat(out, b->q, s);
+    if (!st.once) {
+        fprintf(out, "\nvelocity = ");
+        writer_vec(out, b->v, s);
+    }
     fprintf(out, "\nangular_momentum = ");
-    writer_vec(out, b->L);
+    writer_vec(out, b->L, s);
+    fputc('\n', out);
+}
+
+void property_write(FILE *out, const world *w, int i, const command *c, fmt_style s)
+{
+    static const char *modes[] = {"free", "slide", "general"};
+    const body *b = w->bodies[i];
+    const char *field = (const char *)b + c->off;
+    const char *n = c->name;
+    char a[32];
+    if (strcmp(n, "touching") == 0) {
+        bool any = false;
+        for (long k = 0; k < w->pairs.n; k++) {
+            const pair *p = &w->pairs.p[k];
+            if (!p->touching || (p->a != i && p->b != i)) continue;
+            fprintf(out, "%s.touching = %s\n", b->name, w->bodies[p->a == i ? p->b : p->a]->name);
+            any = true;
+        }
+        if (!any) fprintf(out, "# %s touches nothing lasting\n", b->name);
+        return;
+    }
+    bool slide = b->mode == MODE_SLIDE && b->slide_on >= 0 && b->slide_on < w->n;
+    if ((strcmp(n, "slide_on") == 0 || strcmp(n, "slide_face") == 0) && !slide) {
+        fprintf(out, "# %s slides on nothing (mode = %s)\n", b->name,
+                body_is_static(b) ? "free" : modes[b->mode]);
+        return;
+    }
+    fprintf(out, "%s.%s = ", b->name, n);
+    if (strcmp(n, "slide_on") == 0) {
+        fprintf(out, "%s", w->bodies[b->slide_on]->name);
+    } else if (strcmp(n, "mode") == 0) {
+        fprintf(out, "%s", body_is_static(b) ? "free" : modes[b->mode]);
+    } else if (strcmp(n, "resting") == 0) {
+        fprintf(out, "%s", b->state == STATE_RESTING ? "on" : "off");
+    } else {
+        switch (c->arg) {
+        case VAL_NUMBER: fprintf(out, "%s", fmt_shown(a, *(const double *)field, s)); break;
+        case VAL_INTEGER: fprintf(out, "%d", *(const int *)field); break;
+        case VAL_VECTOR: writer_vec(out, *(const vec3 *)field, s); break;
+        case VAL_COLOR: {
+            const int *k = (const int *)field;
+            fprintf(out, "(%d, %d, %d)", k[0], k[1], k[2]);
+            break;
+        }
+        case VAL_QUAT: write_quat(out, *(const quat *)field, s); break;
+        case VAL_VECTOR_ANGLE: {
+            vec3 axis;
+            double angle;
+            body_axis_angle(b, &axis, &angle);
+            writer_vec(out, axis, s);
+            fprintf(out, " %s", fmt_shown(a, angle, s));
+            break;
+        }
+        default: break;
+        }
+    }
     fputc('\n', out);
 }
 

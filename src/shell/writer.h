@@ -1,18 +1,33 @@
 /* writer.h: the world written in its own language: numbers that read back to the
- * bit, objects (print, save) and settings (show, save). */
+ * bit (save) or as a person reads them (print, show: fmt.h), objects (print,
+ * save, print NAME.property) and settings (show, show NAME, save). */
 #ifndef VROC_WRITER_H
 #define VROC_WRITER_H
 
+#include <stdbool.h>
 #include <stdio.h>
 
+#include "commands.h"
 #include "core/body.h"
 #include "fmt.h"
 
 struct shell;
 struct world;
 
-/* Writes v as "(x, y, z)", each number by fmt_num. */
-void writer_vec(FILE *out, vec3 v);
+/* How an object is written: its numbers (FMT_EXACT for save), whether each
+ * quantity is written once (print), leaving out rotate (orientation gives it) and
+ * velocity (linear_vel's alias), and for `save` the file written (NULL for print):
+ * a polyhedron's file is then written relative to its folder when it lies under it,
+ * else as an absolute path; print also writes the pieces a polyhedron collides as
+ * and its centre of mass (a comment). */
+typedef struct {
+    fmt_style num;
+    bool once;
+    const char *save_path;
+} write_style;
+
+/* Writes v as "(x, y, z)" in style s (fmt_shown_vec). */
+void writer_vec(FILE *out, vec3 v, fmt_style s);
 
 /* Writes s (a path) as a quoted string of the language, a backslash before each
  * '"' and '\\' in it, so that it reads back as it is. */
@@ -24,6 +39,9 @@ void writer_quoted(FILE *out, const char *s);
  * when the hand has been used, and what the hand holds is left to hand_write. */
 void settings_write(FILE *out, const struct shell *sh, int for_save);
 
+/* Writes the setting c (a FORM_SETTING, or select) as show does, "NAME = value". */
+void setting_write(FILE *out, const struct shell *sh, const command *c);
+
 /* For `save`, after the objects and their contact state: the tracker, its place
  * in its file, and what the trigger holds (grip), which read back without
  * pressing or grabbing anything. */
@@ -31,14 +49,13 @@ void hand_write(FILE *out, const struct shell *sh);
 
 /* Writes body b as statements that recreate it (its creation line first): as
  * typed (rotate, linear_vel, angular_vel), then exactly (orientation, velocity,
- * angular_momentum), so that it reads back to the bit. */
-void body_write(FILE *out, const body *b);
+ * angular_momentum), so that with FMT_EXACT it reads back to the bit. */
+void body_write(FILE *out, const body *b, write_style s);
 
-/* body_write for `save` into the file save_path (NULL: for print): a
- * polyhedron's file is written relative to save_path's folder when it lies under
- * it, else as an absolute path; print also writes the pieces it collides as and
- * its centre of mass (a comment). */
-void body_write_for(FILE *out, const body *b, const char *save_path);
+/* Writes the property c of body i of w as "NAME.property = value" (touching: a
+ * line per object touched), in style s.  What does not hold (no slide, nothing
+ * touched) is written as a comment that says so. */
+void property_write(FILE *out, const struct world *w, int i, const command *c, fmt_style s);
 
 /* The path of path as a saved file at save_path names it: relative to save_path's
  * folder when path lies under it (both taken through realpath), else absolute.

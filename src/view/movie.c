@@ -1,27 +1,20 @@
 /* movie.c: frames piped to the ffmpeg program, and the sound muxed in (movie.h). */
-#define _GNU_SOURCE /* pipe2, for a descriptor ffmpeg does not inherit */
 #include "movie.h"
 
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
-#include <signal.h>
-#include <spawn.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
-#include <sys/mman.h>
-#include <time.h>
 #include <unistd.h>
 
+#include "child.h"
 #include "shell/infile.h"
 #include "shell/outfile.h"
-
-extern char **environ;
 
 struct movie {
     pid_t pid;              /* the encoding ffmpeg */
@@ -71,15 +64,6 @@ static bool ext_is(const char *ext, const char *list)
         while (*p == ' ') p++;
     }
     return false;
-}
-
-/* dir/.vroc-part-NAME (and the like) for path dir/NAME. */
-static void movie_beside(char *out, size_t len, const char *path, const char *prefix,
-                         const char *suffix)
-{
-    const char *slash = strrchr(path, '/');
-    int dirlen = slash ? (int)(slash - path + 1) : 0;
-    snprintf(out, len, "%.*s%s%s%s", dirlen, path, prefix, slash ? slash + 1 : path, suffix);
 }
 
 /* The system's reason that ends a line of ffmpeg's ("av_interleaved_write_frame():
@@ -157,36 +141,6 @@ static off_t movie_log_size(const movie *m)
     return fstat(m->log, &sb) == 0 ? sb.st_size : 0;
 }
 
-/* A file in memory for ffmpeg's messages, or -1: not beside the movie, where a
- * full disk would swallow the very message that says it is full.  (At -loglevel
- * error ffmpeg writes a line or two, and the movie ends at its first.) */
-static int movie_log_file(void)
-{
-    return memfd_create("vroc-ffmpeg-log", MFD_CLOEXEC);
-}
-
-/* Runs ffmpeg with argv, its standard input from in (or /dev/null when < 0), its
- * messages to log, in a process group of its own.  Returns 0 with *pid, or an
- * errno value. */
-static int movie_spawn(char *const argv[], int in, int log, pid_t *pid)
-{
-    posix_spawn_file_actions_t fa;
-    posix_spawnattr_t at;
-    posix_spawn_file_actions_init(&fa);
-    posix_spawnattr_init(&at);
-    if (in >= 0) posix_spawn_file_actions_adddup2(&fa, in, 0);
-    else posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_adddup2(&fa, log, 2);
-    posix_spawnattr_setflags(&at, POSIX_SPAWN_SETPGROUP);
-    posix_spawnattr_setpgroup(&at, 0);
-    int rc = posix_spawnp(pid, "ffmpeg", &fa, &at, argv, environ);
-    posix_spawn_file_actions_destroy(&fa);
-    posix_spawnattr_destroy(&at);
-    return rc;
-}
-
-
 /* The frame rate 1 / period as a fraction ffmpeg reads exactly when it is one with
  * a small denominator (10, 30000/1001), else to a millionth of a second. */
 static void movie_rate(double period, char *out, size_t len)
@@ -218,8 +172,7 @@ int movie_open(movie **mp, const char *path, const view_settings *vs, double per
         return -1;
     }
     if (!(period > 0) || !isfinite(period)) {
-        snprintf(err, errlen, "time_step is %g: a movie's frame rate is 1 / time_step, so it "
-                 "must be > 0", period);
+        snprintf(err, errlen, "a movie's picture lasts %g s: it must be > 0", period);
         return -1;
     }
     if (strlen(path) >= VIEW_PATH_MAX) {
@@ -250,7 +203,7 @@ int movie_open(movie **mp, const char *path, const view_settings *vs, double per
     m->video.fd = -1;
     m->period = period;
     snprintf(m->path, sizeof m->path, "%s", path);
-    movie_beside(m->sound, sizeof m->sound, path, ".vroc-part-", ".wav");
+    child_beside(m->sound, sizeof m->sound, path, ".vroc-part-", ".wav");
 
     char size[32], rate[48];
     snprintf(size, sizeof size, "%dx%d", m->w, m->h);
@@ -273,35 +226,14 @@ int movie_open(movie **mp, const char *path, const view_settings *vs, double per
     argv[a++] = outfile_now(&m->video);
     argv[a] = NULL;
 
-    int pipefd[2] = {-1, -1};
-    m->log = movie_log_file();
-    int rc = m->log < 0 ? errno : pipe2(pipefd, O_CLOEXEC) != 0 ? errno : 0;
-    if (rc == 0) rc = movie_spawn((char *const *)argv, pipefd[0], m->log, &m->pid);
-    if (pipefd[0] >= 0) close(pipefd[0]);
-    if (rc != 0) {
-        if (rc == ENOENT)
-            snprintf(err, errlen, "the ffmpeg program is not installed (not found on PATH; "
-                     "make deps installs it)");
-        else
-            snprintf(err, errlen, "cannot run ffmpeg: %s", strerror(rc));
-        if (pipefd[1] >= 0) close(pipefd[1]);
-        if (m->log >= 0) close(m->log);
+    if (child_open((char *const *)argv, &m->pid, &m->fd, &m->log, err, errlen) != 0) {
         outfile_abort(&m->video);
         free(m->frame);
         free(m);
         return -1;
     }
-    /* written without blocking: an ffmpeg that stalls is seen (outfile_write_all) */
-    fcntl(pipefd[1], F_SETFL, fcntl(pipefd[1], F_GETFL) | O_NONBLOCK);
-    m->fd = pipefd[1];
     *mp = m;
     return 0;
-}
-
-/* Rec. 601 luma, as view.c's anaglyph uses. */
-static unsigned char movie_luma(const unsigned char *p)
-{
-    return (unsigned char)((77u * p[0] + 150u * p[1] + 29u * p[2] + 128u) >> 8);
 }
 
 /* Lays the eyes out in m->frame: each movie pixel from the nearest eye pixel (the
@@ -321,9 +253,7 @@ static void movie_compose(movie *m, const unsigned char *eye[2], int sw, int sh)
             size_t at = (sy * (size_t)sw + sx) * 3;
             unsigned char *o = row + (size_t)x * 3;
             if (m->mode == STEREO_ANAGLYPH) {
-                unsigned char l = movie_luma(eye[0] + at), r = movie_luma(eye[1] + at);
-                o[0] = l;
-                o[1] = o[2] = r;
+                view_anaglyph_pixel(eye[0] + at, eye[1] + at, o);
             } else {
                 memcpy(o, eye[k] + at, 3);
             }
@@ -344,7 +274,7 @@ int movie_add(movie *m, const view *v, long copies, char *err, size_t errlen)
     movie_compose(m, eye, sw, sh);
     size_t bytes = (size_t)m->w * (size_t)m->h * 3;
     for (long i = 0; i < copies; i++) {
-        int rc = outfile_write_all(m->fd, m->frame, bytes, m->pid);
+        int rc = child_write(m->fd, m->frame, bytes, m->pid);
         if (rc == ETIMEDOUT) {
             snprintf(err, errlen, "ffmpeg took no frame and did no work for %g s: it is stopped "
                      "(VROC_TIMEOUT sets how long vroc waits)", infile_timeout());
@@ -383,14 +313,14 @@ static int movie_mux(movie *m, const char *wav, char *err, size_t errlen)
     argv[a] = NULL;
     off_t from = movie_log_size(m);
     pid_t pid;
-    int rc = movie_spawn((char *const *)argv, -1, m->log, &pid);
+    int rc = child_spawn((char *const *)argv, -1, m->log, &pid);
     if (rc != 0) {
         outfile_abort(&muxed);
         snprintf(err, errlen, "cannot run ffmpeg: %s", strerror(rc));
         return -1;
     }
     /* (ffmpeg may exit with 0 after a write that failed: what it logged counts) */
-    int st = outfile_wait(pid);
+    int st = child_wait(pid);
     if (st != 0 || movie_log_size(m) > from) {
         outfile_abort(&muxed);
         if (st == -2) return movie_stalled(err, errlen);
@@ -403,7 +333,7 @@ int movie_close(movie *m, const char *wav, char *err, size_t errlen)
 {
     if (!m) return 0;
     close(m->fd);
-    int st = outfile_wait(m->pid);
+    int st = child_wait(m->pid);
     int rc = 0;
     if (m->frames == 0) {
         outfile_abort(&m->video);
@@ -429,9 +359,7 @@ void movie_abort(movie *m)
 {
     if (!m) return;
     close(m->fd);
-    kill(-m->pid, SIGKILL); /* its process group: ffmpeg and what it runs */
-    while (waitpid(m->pid, NULL, 0) < 0 && errno == EINTR) {
-    }
+    child_kill(m->pid);
     outfile_abort(&m->video);
     unlink(m->sound);
     close(m->log);

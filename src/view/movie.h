@@ -12,11 +12,11 @@
  *
  * The layout and size are fixed when the movie starts: `pair` and `sbs` put the
  * two eyes side by side (left eye on the left), `mono` shows the left eye,
- * `anaglyph` the red-cyan image of view.c; a width or height that is odd is
- * padded by one, repeating the last column or row.  If image_size changes while
+ * `anaglyph` the red-cyan image of view.c (view_anaglyph_pixel); a width or
+ * height that is odd is padded by one, repeating the last column or row.  If image_size changes while
  * the movie runs, later frames are scaled to the movie's size.  The frame rate is
- * 1 / period, fixed too; the caller repeats or skips frames (movie_add's copies)
- * to keep video time with simulated time.
+ * 1 / period (movie_rate's), fixed too; the caller adds each picture when it
+ * is due (movie_add's copies), to keep video time with simulated time.
  *
  * ffmpeg runs in a process group of its own, so that Ctrl-C at the prompt does not
  * stop it; its messages (errors only) go to a file in memory (not beside the
@@ -24,7 +24,7 @@
  * ffmpeg's that fails is told the way every file vroc writes tells it
  * (shell/outfile.h): "cannot write 'PATH': REASON", with the system's reason that
  * ffmpeg's message ends with.  An ffmpeg that takes no frame, or does not finish,
- * while it does no work for VROC_TIMEOUT seconds (outfile_write_all, outfile_wait)
+ * while it does no work for VROC_TIMEOUT seconds (child.h: child_write, child_wait)
  * is stopped, and the movie with it.  A path that exists and is not a regular
  * file (a device, a pipe) is refused, since the movie is put in its place by
  * rename.  Nothing here reads or changes the world: frames come from the view's

@@ -2,7 +2,9 @@
  * (thesis Appendix A.1.2; language.md, "The hand and the tool panel").
  *
  * The pointer is a slim four-sided pyramid, its tip at the hand's point and its
- * base 8 cm behind along the hand's -x.  The panel is a dark sheet with light
+ * base 8 cm behind along the hand's -x, 2.4 cm across; where that would be fewer
+ * than OVERLAY_POINTER_MIN_PX pixels (the hand far from the eye) the whole
+ * pointer is drawn larger about its tip, so that it is never lost.  The panel is a dark sheet with light
  * buttons (a lit one green), each with its picture (the tape player's stop,
  * play and step, and a pointer for select) and its label, and the sliders as a
  * track with a knob at the value and a label above.  Buttons stand 2 mm in front
@@ -67,11 +69,12 @@ static void push_pose(vec3 x, quat q)
     glMultMatrixd(m);
 }
 
-static void draw_pointer(const view_overlay *o)
+/* The pointer, scale times its size about its tip. */
+static void draw_pointer(const view_overlay *o, double scale)
 {
     push_pose(o->hand_p, o->hand_q);
     glColor3ub(255, 220, 110);
-    const double L = POINTER_LENGTH, h = POINTER_HALF;
+    const double L = scale * POINTER_LENGTH, h = scale * POINTER_HALF;
     const double base[4][2] = {{h, h}, {-h, h}, {-h, -h}, {h, -h}};
     glBegin(GL_TRIANGLES);
     for (int k = 0; k < 4; k++) {
@@ -147,11 +150,15 @@ static void draw_panel(const view_overlay *o)
     glPopMatrix();
 }
 
-void overlay_draw(const view_overlay *o)
+void overlay_draw(const view_overlay *o, vec3 eye, vec3 ahead, double pixel)
 {
     if (!o->hand && !o->panel) return;
     glDisable(GL_CULL_FACE);
     if (o->panel) draw_panel(o);
-    if (o->hand) draw_pointer(o);
+    if (o->hand) {
+        double d = v3_dot(v3_sub(o->hand_p, eye), ahead); /* the tip's depth */
+        double want = 0.5 * OVERLAY_POINTER_MIN_PX * pixel * d;
+        draw_pointer(o, d > 0 && want > POINTER_HALF ? want / POINTER_HALF : 1);
+    }
     glEnable(GL_CULL_FACE);
 }

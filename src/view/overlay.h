@@ -11,8 +11,15 @@
  * that a drifting quaternion cannot scale the normals and the lighting). */
 void overlay_pose_matrix(vec3 x, quat q, GLdouble m[16]);
 
+/* The hand's pointer is never narrower than this many pixels across, however far
+ * the hand is: it is drawn larger where it would be smaller. */
+#define OVERLAY_POINTER_MIN_PX 12
+
 /* Draws o with the eye's matrices loaded, lighting and culling on (it leaves them
- * on), over what is drawn already (the depth test on). */
-void overlay_draw(const view_overlay *o);
+ * on), over what is drawn already (the depth test on).  The eye is at eye,
+ * looking along the unit vector ahead; pixel is the width of a pixel one metre
+ * ahead of it (d times that at depth d), by which the pointer keeps
+ * OVERLAY_POINTER_MIN_PX. */
+void overlay_draw(const view_overlay *o, vec3 eye, vec3 ahead, double pixel);
 
 #endif

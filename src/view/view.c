@@ -33,6 +33,7 @@
 #include <GL/gl.h>
 #include <GL/osmesa.h>
 #include <errno.h>
+#include <math.h>
 #include <pthread.h>
 #include <stdbool.h>
 #include <stdint.h>
@@ -80,6 +81,7 @@ view_settings view_settings_defaults(void)
     s.stereo = STEREO_PAIR;
     s.real = REAL_SOLID;
     s.record = false;
+    s.movie_rate = 30;
     return s;
 }
 
@@ -295,10 +297,10 @@ void view_free(view *v)
 
 /* ---- drawing ---- */
 
-/* The OpenGL matrix of the rigid map body -> world. */
-static void view_model_matrix(const body *b, GLdouble m[16])
+/* The OpenGL matrix of the rigid map body -> world, at pose p (NULL: its own). */
+static void view_model_matrix(const body *b, const view_pose *p, GLdouble m[16])
 {
-    overlay_pose_matrix(b->x, b->q, m);
+    overlay_pose_matrix(p ? p->x : b->x, p ? p->q : b->q, m);
 }
 
 /* The OpenGL matrix of world -> eye: rows r, u, -f, origin at the eye. */
@@ -328,14 +330,15 @@ static bool view_mesh_ok(const mesh *m)
     return m->nv > 0 && m->nt > 0 && m->pos && m->nrm && m->tri;
 }
 
-/* The body's mesh, lit and filled.  A polyhedron's faces run as its file's do,
- * either way round, and need not be convex: both sides of each are drawn and lit. */
-static void view_draw_solid(const body *b)
+/* The body's mesh, lit and filled, at pose p (NULL: its own).  A polyhedron's
+ * faces run as its file's do, either way round, and need not be convex: both sides
+ * of each are drawn and lit. */
+static void view_draw_solid(const body *b, const view_pose *p)
 {
     const mesh *m = &b->shape.draw;
     bool two_sided = b->sp.kind == SHAPE_POLYHEDRON;
     GLdouble model[16];
-    view_model_matrix(b, model);
+    view_model_matrix(b, p, model);
     glPushMatrix();
     glMultMatrixd(model);
     view_color(b);
@@ -356,13 +359,13 @@ static void view_draw_solid(const body *b)
 
 /* The body's edges, unlit, front and back: those of the collision polyhedron (the
  * real edges of a box, without the triangulation's diagonals), or the mesh's for a
- * sphere and for a polyhedron from a file (its own faces, not its hull).  Lighting
- * and culling must be off. */
-static void view_draw_wire(const body *b)
+ * sphere and for a polyhedron from a file (its own faces, not its hull), at pose
+ * pose (NULL: its own).  Lighting and culling must be off. */
+static void view_draw_wire(const body *b, const view_pose *pose)
 {
     const poly *p = b->shape.hull;
     GLdouble model[16];
-    view_model_matrix(b, model);
+    view_model_matrix(b, pose, model);
     glPushMatrix();
     glMultMatrixd(model);
     view_color(b);
@@ -427,9 +430,10 @@ static void view_pack_eye(view *v, int k)
                       v->eye[k] + 3 * (size_t)y * w, w);
 }
 
-/* Draws the world as eye e sees it into the k-th half of the image. */
-static void view_draw_eye(view *v, const world *w, const view_settings *s, const view_eye *e,
-                          int k)
+/* Draws the world as eye e sees it into the k-th half of the image, body i at
+ * poses[i] (poses NULL: where they are). */
+static void view_draw_eye(view *v, const world *w, const view_pose *poses, const view_settings *s,
+                          const view_eye *e, int k)
 {
     glViewport(k * v->w, 0, v->w, v->h);
     glScissor(k * v->w, 0, v->w, v->h);
@@ -446,7 +450,7 @@ static void view_draw_eye(view *v, const world *w, const view_settings *s, const
     bool any_wire = false;
     for (int i = 0; i < w->n; i++) {
         int style = view_style(w->bodies[i], s->real);
-        if (style == 1) view_draw_solid(w->bodies[i]);
+        if (style == 1) view_draw_solid(w->bodies[i], poses ? &poses[i] : NULL);
         any_wire = any_wire || style == 2;
     }
     if (any_wire) {
@@ -454,17 +458,21 @@ static void view_draw_eye(view *v, const world *w, const view_settings *s, const
         glDisable(GL_CULL_FACE);
         glDisableClientState(GL_NORMAL_ARRAY);
         for (int i = 0; i < w->n; i++)
-            if (view_style(w->bodies[i], s->real) == 2) view_draw_wire(w->bodies[i]);
+            if (view_style(w->bodies[i], s->real) == 2)
+                view_draw_wire(w->bodies[i], poses ? &poses[i] : NULL);
         glEnableClientState(GL_NORMAL_ARRAY);
         glEnable(GL_LIGHTING);
         glEnable(GL_CULL_FACE);
     }
-    overlay_draw(&s->overlay); /* the hand and the panel, whatever `real` says */
+    /* the hand and the panel, whatever `real` says; a pixel at depth d is
+     * (top - bottom) d / (near h) across */
+    overlay_draw(&s->overlay, e->pos, e->f, (e->top - e->bottom) / (e->near * v->h));
 }
 
-/* Renders eyes 0 .. neyes-1 (1: the left eye only). */
-static int view_render_eyes(view **v, const world *w, const view_settings *vs, int neyes, char *err,
-                            size_t errlen)
+/* Renders eyes 0 .. neyes-1 (1: the left eye only), bodies at poses (NULL: their
+ * own). */
+static int view_render_eyes(view **v, const world *w, const view_pose *poses,
+                            const view_settings *vs, int neyes, char *err, size_t errlen)
 {
     view_eye eye[2];
     if (view_display(v, vs, err, errlen) != 0) return -1;
@@ -476,7 +484,7 @@ static int view_render_eyes(view **v, const world *w, const view_settings *vs, i
     glClearColor((GLfloat)bg[0] / 255.0f, (GLfloat)bg[1] / 255.0f, (GLfloat)bg[2] / 255.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_SCISSOR_TEST);
-    for (int k = 0; k < neyes; k++) view_draw_eye(vw, w, vs, &eye[k], k);
+    for (int k = 0; k < neyes; k++) view_draw_eye(vw, w, poses, vs, &eye[k], k);
     glFinish(); /* OSMesa copies the image into vw->rgba */
     for (int k = 0; k < 2; k++) {
         vw->have[k] = k < neyes;
@@ -487,7 +495,13 @@ static int view_render_eyes(view **v, const world *w, const view_settings *vs, i
 
 int view_render(view **v, const world *w, const view_settings *vs, char *err, size_t errlen)
 {
-    return view_render_eyes(v, w, vs, 2, err, errlen);
+    return view_render_eyes(v, w, NULL, vs, 2, err, errlen);
+}
+
+int view_render_posed(view **v, const world *w, const view_pose *poses, const view_settings *vs,
+                      char *err, size_t errlen)
+{
+    return view_render_eyes(v, w, poses, vs, 2, err, errlen);
 }
 
 const unsigned char *view_pixels(const view *v, int eye, int *width, int *height)
@@ -544,22 +558,75 @@ static void view_compose_sbs(view *v)
     }
 }
 
-/* Rec. 601 luma of an 8-bit RGB pixel. */
-static unsigned char view_luma(const unsigned char *p)
+/* Dubois's red-cyan matrices (his 2001 paper's, as ffmpeg's stereo3d filter has
+ * them): each output primary from the left eye's and the right eye's linear
+ * RGB. */
+static const float DUBOIS_L[3][3] = {{0.456f, 0.500f, 0.176f},
+                                     {-0.040f, -0.038f, -0.016f},
+                                     {-0.015f, -0.021f, -0.005f}};
+static const float DUBOIS_R[3][3] = {{-0.043f, -0.088f, -0.002f},
+                                     {0.378f, 0.734f, -0.018f},
+                                     {-0.072f, -0.113f, 1.226f}};
+
+/* sRGB to linear light, by 8-bit value; and back, by linear value in 1/4095ths. */
+#define LINEAR_STEPS 4096
+static float g_to_linear[256];
+static unsigned char g_to_srgb[LINEAR_STEPS];
+static pthread_once_t g_tables = PTHREAD_ONCE_INIT;
+
+static void make_tables(void)
 {
-    return (unsigned char)((77u * p[0] + 150u * p[1] + 29u * p[2] + 128u) >> 8);
+    for (int i = 0; i < 256; i++) {
+        double c = i / 255.0;
+        g_to_linear[i] = (float)(c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4));
+    }
+    for (int i = 0; i < LINEAR_STEPS; i++) {
+        double l = i / (double)(LINEAR_STEPS - 1);
+        double c = l <= 0.0031308 ? 12.92 * l : 1.055 * pow(l, 1 / 2.4) - 0.055;
+        g_to_srgb[i] = (unsigned char)lround(255 * c);
+    }
 }
 
-/* The red-cyan anaglyph: red from the left eye's luma, green and blue from the right's. */
+void view_anaglyph_pixel(const unsigned char *left, const unsigned char *right, unsigned char *out)
+{
+    pthread_once(&g_tables, make_tables);
+    float l[3], r[3];
+    for (int k = 0; k < 3; k++) {
+        l[k] = g_to_linear[left[k]];
+        r[k] = g_to_linear[right[k]];
+    }
+    for (int c = 0; c < 3; c++) {
+        float x = 0;
+        for (int k = 0; k < 3; k++) x += DUBOIS_L[c][k] * l[k] + DUBOIS_R[c][k] * r[k];
+        x = x < 0 ? 0 : x > 1 ? 1 : x;
+        out[c] = g_to_srgb[(int)(x * (LINEAR_STEPS - 1) + 0.5f)];
+    }
+}
+
+/* The red-cyan anaglyph of the two eyes (view_anaglyph_pixel). */
 static void view_compose_anaglyph(view *v)
 {
     size_t n = (size_t)v->w * (size_t)v->h;
-    for (size_t i = 0; i < n; i++) {
-        unsigned char l = view_luma(v->eye[0] + 3 * i), r = view_luma(v->eye[1] + 3 * i);
-        v->out[3 * i] = l;
-        v->out[3 * i + 1] = r;
-        v->out[3 * i + 2] = r;
-    }
+    for (size_t i = 0; i < n; i++)
+        view_anaglyph_pixel(v->eye[0] + 3 * i, v->eye[1] + 3 * i, v->out + 3 * i);
+}
+
+void view_palette(long k, int rgb[3])
+{
+    static const int palette[VIEW_PALETTE][3] = {
+        {255, 0, 0},     /* red, the thesis's */
+        {30, 144, 255},  /* blue */
+        {50, 205, 50},   /* green */
+        {255, 165, 0},   /* orange */
+        {186, 85, 211},  /* violet */
+        {0, 206, 209},   /* turquoise */
+        {255, 215, 0},   /* yellow */
+        {255, 105, 180}, /* pink */
+        {170, 170, 170}, /* grey */
+        {160, 100, 50},  /* brown */
+    };
+    const int *c = palette[(k % VIEW_PALETTE + VIEW_PALETTE) % VIEW_PALETTE];
+    for (int i = 0; i < 3; i++) rgb[i] = c[i];
 }
 
 /* One file of a frame: output/frame-NNNNNN-suffix.png and its image. */
@@ -619,7 +686,7 @@ static int view_frame(view **v, const world *w, const view_settings *s, long fra
     int neyes = s->stereo == STEREO_MONO ? 1 : 2;
     /* the folder first: where no file can be written, nothing is drawn */
     if (s->output[0] && view_mkdirs(s->output, err, errlen) != 0) return -1;
-    if (view_render_eyes(v, w, s, neyes, err, errlen) != 0) return -1;
+    if (view_render_eyes(v, w, NULL, s, neyes, err, errlen) != 0) return -1;
     view *vw = *v;
     view_file f[2];
     int n = 1;

@@ -24,6 +24,9 @@
 
 #include "core/world.h"
 
+/* The most pictures a second of simulated time a movie may take (movie_rate). */
+#define VIEW_MOVIE_RATE_MAX 1000
+
 /* Longest path of the output folder, with its final NUL. */
 #define VIEW_PATH_MAX 1024
 
@@ -74,12 +77,13 @@ typedef struct {
     int background[3];        /* 0..255 */
     real_mode real;           /* how static objects are drawn */
     bool record;              /* write the views of every frame while time runs */
+    double movie_rate;        /* a movie's pictures per second of simulated time */
     view_overlay overlay;     /* the hand and the panel (the shell keeps it current) */
 } view_settings;
 
 /* The start-up values: head at the origin looking along +y with z up, ipd 0.064,
- * fov 60, 640x512, output "frames", pair, black, solid, record off, no hand or
- * panel drawn. */
+ * fov 60, 640x512, output "frames", pair, black, solid, record off, movie_rate 30,
+ * no hand or panel drawn. */
 view_settings view_settings_defaults(void);
 
 /* What drawing has cost so far. */
@@ -101,11 +105,22 @@ int view_display(view **v, const view_settings *vs, char *err, size_t errlen);
  * context that cannot be made. */
 int view_render(view **v, const world *w, const view_settings *vs, char *err, size_t errlen);
 
+/* Where a body is drawn: its origin and orientation. */
+typedef struct {
+    vec3 x;
+    quat q;
+} view_pose;
+
+/* view_render with body i of w drawn at poses[i] instead of its own x and q
+ * (poses holds w->n of them): a movie's pictures between two frames. */
+int view_render_posed(view **v, const world *w, const view_pose *poses, const view_settings *vs,
+                      char *err, size_t errlen);
+
 /* Renders and writes frame number `frame` into vs->output, creating the folders as
  * `mkdir -p` does: pair -> frame-NNNNNN-left.png and frame-NNNNNN-right.png; sbs ->
  * frame-NNNNNN-sbs.png (twice as wide, left eye on the left); anaglyph ->
- * frame-NNNNNN-anaglyph.png (red = luminance of the left eye, green and blue =
- * luminance of the right eye); mono -> frame-NNNNNN-left.png only (only the left eye
+ * frame-NNNNNN-anaglyph.png (view_anaglyph's red-cyan image in colour); mono ->
+ * frame-NNNNNN-left.png only (only the left eye
  * is rendered).  NNNNNN is the frame number as %06ld.  Adds the wall time spent to
  * st->render_time and the files written to st->frames_written (st may be NULL).
  * Returns 0, or -1 with a message in err (for a file or folder: naming the path and
@@ -120,5 +135,18 @@ const unsigned char *view_pixels(const view *v, int eye, int *width, int *height
 
 /* Destroys the context and the buffers (NULL is fine). */
 void view_free(view *v);
+
+/* The colours new objects take in turn (language.md, Table A.1's color): the
+ * k-th of VIEW_PALETTE distinguishable colours, bright on the black background,
+ * the first the thesis's red (255, 0, 0); k counts on past the last. */
+#define VIEW_PALETTE 10
+void view_palette(long k, int rgb[3]);
+
+/* The red-cyan anaglyph pixel of a left and a right eye's pixels (8-bit RGB)
+ * into out, by Dubois's least-squares projection (E. Dubois, "A projection
+ * method to generate anaglyph stereo images", ICASSP 2001), applied in linear
+ * light: the colours of the scene are kept as far as red and cyan filters let
+ * them, where a luminance anaglyph made everything grey. */
+void view_anaglyph_pixel(const unsigned char *left, const unsigned char *right, unsigned char *out);
 
 #endif
