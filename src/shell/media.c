@@ -26,6 +26,7 @@ struct media {
     movie *mov;
     double mov_start;   /* elapsed time when the movie started */
     long mov_skipped;   /* pictures the movie left out (MOVIE_MAX_COPIES, Ctrl-C) */
+    bool mov_told;      /* the movie's first frame cut to MOVIE_MAX_COPIES was warned of */
     sound_hit *hits;    /* the frame's collisions, as the engine hears them */
     long cap;
     media_start *start; /* each body when the frame began (media_frame_begin) */
@@ -177,7 +178,7 @@ static bool media_between(const shell *sh, media *m, double s, double h)
  * (media_between); where a picture is due at the frame's end, or time_step is
  * shorter than a picture, the view after the frame is added as many times as
  * keeps video time with simulated time.  A frame gives at most MOVIE_MAX_COPIES
- * (one warning says so), and fewer when Ctrl-C comes: the pictures left out are
+ * (one warning a movie says so), and fewer when Ctrl-C comes: the pictures left out are
  * skipped, so that later frames keep step. */
 static cmd_status media_movie_frame(shell *sh, media *m, const stmt *st, double t0, double t1)
 {
@@ -185,12 +186,15 @@ static cmd_status media_movie_frame(shell *sh, media *m, const stmt *st, double 
     long before = m->mov_skipped;
     long want = llround((t1 - m->mov_start) / period) - before;
     long cut = want - movie_frames(m->mov) - MOVIE_MAX_COPIES;
-    if (cut > 0) {
+    if (cut > 0 && !m->mov_told) {
+        m->mov_told = true;
         char a[32], b[32];
         sh_warn(sh, st, "movie: a frame of time_step = %s s would be %ld pictures at %s a second; "
                 "it gets %d, and the movie skips the rest (its sound goes on, out of step from "
                 "there)", fmt_num(a, h), want - movie_frames(m->mov), fmt_num(b, 1 / period),
                 MOVIE_MAX_COPIES);
+    }
+    if (cut > 0) {
         want -= cut;
         m->mov_skipped += cut;
     }
@@ -315,6 +319,7 @@ cmd_status media_movie(shell *sh, const stmt *st, const char *path)
     m->mov = nm;
     m->mov_start = m->elapsed;
     m->mov_skipped = 0;
+    m->mov_told = false;
     return rc == 0 ? CMD_OK : CMD_ERROR;
 }
 
