@@ -266,7 +266,7 @@ if command -v ffmpeg >/dev/null 2>&1 && command -v ffprobe >/dev/null 2>&1; then
     real=$(command -v ffmpeg)
     mkdir -p fake/stall fake/nospace
     # an ffmpeg that never reads its input (nor works)
-    printf '#!/bin/sh\nexec sleep 1000\n' > fake/stall/ffmpeg
+    printf '#!/bin/sh\necho $$ > "%s/stall.pid"\nexec sleep 1000\n' "$TMP" > fake/stall/ffmpeg
     # one that encodes, but whose mux finds the disk full: it leaves a broken file
     # and says why on its standard error, as ffmpeg does
     cat > fake/nospace/ffmpeg <<FAKE
@@ -288,8 +288,8 @@ FAKE
     is "and the batch run exits 1" "$status" 1
     same "and the old movie is whole" old-before.mp4 old.mp4
     noparts "and no part file is left"
-    pgrep -f "sleep 1000" >/dev/null && notok "and the stalled ffmpeg is stopped" "$(pgrep -af 'sleep 1000')" ||
-        ok "and the stalled ffmpeg is stopped"
+    [ -s stall.pid ] && ! kill -0 "$(cat stall.pid)" 2>/dev/null && ok "and the stalled ffmpeg is stopped" ||
+        notok "and the stalled ffmpeg is stopped" "pid $(cat stall.pid 2>&1)"
     out=$(PATH="$TMP/fake/nospace:$PATH" "$VROC" -b -c 'sphere a; translate = (0, 3, 0); image_size = (16, 16); soundtrack = s.wav; movie = old.mp4; run 5' 2>&1); status=$?
     has "a movie whose sound cannot be muxed in (a full disk) is reported as failed" "$out" \
         "error: movie: cannot write 'old.mp4': No space left on device"
