@@ -32,10 +32,11 @@ SCENEDIR = $(PREFIX)/share/vroc/scenes
 
 VERSION  = 0.1.0
 CORE_PKGS = qhull_r
-PKGS     = readline osmesa libpng qhull_r sndfile samplerate libpulse-simple libpulse nettle
+PKGS     = readline osmesa libpng qhull_r sndfile samplerate libpulse-simple libpulse nettle sdl2
 # linked: all but OSMesa, which the views load with dlopen when they first draw
-# (src/view/gl_load.h), so that a run that draws nothing never maps it; nettle
-# gives the SHA-256 that save writes of a polyhedron's file
+# (src/view/gl_load.h), so that a run that draws nothing never maps it, and SDL2,
+# loaded the same way when the live window first opens (src/view/window.h);
+# nettle gives the SHA-256 that save writes of a polyhedron's file
 LINK_PKGS = readline libpng qhull_r sndfile samplerate libpulse-simple libpulse nettle
 CC      ?= cc
 WARN     = -Wall -Wextra -Wpedantic -Werror -Wshadow -Wmissing-prototypes
@@ -68,7 +69,7 @@ UPPER_SRC = $(sort $(filter-out src/shell/main.c,$(wildcard src/shell/*.c)) $(wi
                    $(wildcard src/sound/*.c) $(wildcard src/hand/*.c))
 COMMANDS  = $(sort $(wildcard commands/*))
 # the core's own tests link libvroc-core.a alone; the others the whole program
-CORE_TESTS  = test_broad test_closest test_collide test_flight test_geometry test_lcp test_physics test_schedule test_spin
+CORE_TESTS  = test_broad test_closest test_collide test_contact test_flight test_geometry test_lcp test_physics test_schedule test_spin
 # the readers' tests link the readers and the core
 MESH_TESTS  = test_mesh
 UPPER_TESTS = $(filter-out $(CORE_TESTS) $(MESH_TESTS),$(patsubst tests/%.c,%,$(wildcard tests/test_*.c)))

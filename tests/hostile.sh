@@ -42,7 +42,7 @@ out=$("$VROC" -b -c 'sphere ball; radius=0.1; translate=(0,0,1.5); select on; ha
 has "a throw from statements is cut to max_linear (the issue's: 1e12 m/s)" "$out" "linear_vel = (8, 0, 0)"
 has "and counted among the speed cuts" "$out" "speed_cuts = 1"
 has "and the cut warns, naming the limit to raise" "$out" \
-    "warning: the speed limit cut the throw of 'ball' from 1000000000000 to max_linear = 8 m/s: raise max_linear to let it go faster; stats counts such cuts (speed_cuts)"
+    "warning: max_linear = 8 cut the speed a throw gave 'ball' (1e+12 m/s): each such cut loses energy, and stats counts them (speed_cuts); raise max_linear to keep it"
 out=$("$VROC" -b -c 'sphere ball; radius=0.1; translate=(0,0,1.5); select on; hand=(0,0,1.5); trigger=on; time_step=0.5; step; hand=(4,0,1.5); trigger=off; print ball; stats' 2>&1)
 has "a throw at max_linear exactly is not cut" "$out" "linear_vel = (8, 0, 0)"
 has "nor counted" "$out" "speed_cuts = 0"

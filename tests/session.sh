@@ -103,12 +103,15 @@ superquadric pillow; exp1 = 0.4; exp2 = 1.7; a1 = 0.6; a2 = 0.4; a3 = 0.2; ures 
 cube floor; mass = -1; size = (5, 5, 0.1); translate = (0, 0, -5)
 run 13
 EOS
-"$VROC" -b -q "$TMP/world.vroc" -c "precision = exact; print ball; print box; print pillow; print floor; print box.rotate; save $TMP/saved.vroc" > "$TMP/p1" 2>&1
+# (the box lands spinning faster than max_angular: the limit's warning is the
+# first run's alone)
+"$VROC" -b -q "$TMP/world.vroc" -c "precision = exact; print ball; print box; print pillow; print floor; print box.rotate; save $TMP/saved.vroc" 2>&1 |
+    no_cut_warning > "$TMP/p1"
 "$VROC" -b -q -c "read $TMP/saved.vroc; precision = exact; print ball; print box; print pillow; print floor; print box.rotate" > "$TMP/p2" 2>&1
 same "save and read give the same print for every object" "$TMP/p1" "$TMP/p2"
 grep -q "^box.rotate = (1, 2, 3) 0.7$" "$TMP/p1" || ! grep -q "^box.rotate = " "$TMP/p1" &&
     notok "a spinning box's orientation is its simulated one, not as typed" "$(grep rotate "$TMP/p1")" || ok "a spinning box's orientation is its simulated one, not as typed"
-"$VROC" -b -q "$TMP/world.vroc" -c "show" > "$TMP/s1" 2>&1
+"$VROC" -b -q "$TMP/world.vroc" -c "show" 2>&1 | no_cut_warning > "$TMP/s1"
 "$VROC" -b -q -c "read $TMP/saved.vroc; show" > "$TMP/s2" 2>&1
 same "save and read give the same show" "$TMP/s1" "$TMP/s2"
 

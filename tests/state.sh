@@ -1,7 +1,9 @@
 #!/bin/sh
 # state.sh: exact state (issue 24; language.md, "Exact state").  For every scene:
 # run 20, save, then 30 frames on from the running world and from the saved file
-# read into a fresh vroc give the same trace and hash, to the bit; a run split
+# read into a fresh vroc give the same trace and hash, to the bit (and say the
+# same, but for the speed limits' warning: a world read back counts its cuts
+# afresh, as stats are not part of the state); a run split
 # anywhere (run 10 then step, run 7 then run 13) equals the whole (run 11, run 20)
 # by hash, and no split is refused as interpenetrating.  Reading a saved world
 # leaves the user's logs alone, and a saved random sequence goes on where it was.
@@ -13,7 +15,9 @@ for f in "$S"/*.vroc; do
     n=$(basename "$f" .vroc)
     "$VROC" -b -q "$f" -c "run 20; save $n.save.vroc; trace = $n.a.csv; run 30; hash" > "$n.a.txt" 2>&1
     "$VROC" -b -q "$n.save.vroc" -c "trace = $n.b.csv; run 30; hash" > "$n.b.txt" 2>&1
-    if [ -s "$n.a.csv" ] && cmp -s "$n.a.csv" "$n.b.csv" && cmp -s "$n.a.txt" "$n.b.txt" &&
+    no_cut_warning < "$n.a.txt" > "$n.a.said"
+    no_cut_warning < "$n.b.txt" > "$n.b.said"
+    if [ -s "$n.a.csv" ] && cmp -s "$n.a.csv" "$n.b.csv" && cmp -s "$n.a.said" "$n.b.said" &&
         grep -q '^hash = [0-9a-f]\{16\}$' "$n.a.txt"; then
         ok "$n: saved at frame 20 and read back, 30 frames on give the same trace and hash"
     else

@@ -1,9 +1,9 @@
 /* test_broad.c: the broad phase (issue 27): a pair exists before its objects' earliest
- * possible contact, over many random configurations; its boxes hold their objects
+ * possible contact, over many random configurations; its boxes cover their objects
  * along their flights; the heap on (near pairs only) and off (every pair, every
  * internal step) give the same trajectories to the bit; pairs are made and ended
  * as objects come near and move apart, and their number grows with what is near;
- * a body the hand holds (hold.h) is held by its box too, and its pairs are found
+ * a body the hand holds (hold.h) is covered by its box too, and its pairs are found
  * afresh whenever the hand sets its motion, within a frame as between frames. */
 #include "check.h"
 
@@ -93,7 +93,7 @@ static void same_states(const world *w0, const world *w1, int trial, int frame)
 }
 
 /* Fails unless the broad phase holds (broad_check). */
-static void broad_holds(const world *w, int trial, int frame)
+static void broad_checks_out(const world *w, int trial, int frame)
 {
     char err[256];
     if (broad_check(w, err, sizeof err) != 0) fail_msg("trial %d, frame %d: %s", trial, frame, err);
@@ -120,7 +120,7 @@ static void pairs_are_never_late(void **state)
             long live = ws[0].pairs.live;
             for (int m = 0; m < 2; m++) {
                 if (sim_frame(&ws[m], err, sizeof err) != 0) fail_msg("trial %d: %s", k, err);
-                broad_holds(&ws[m], k, f);
+                broad_checks_out(&ws[m], k, f);
             }
             same_states(&ws[0], &ws[1], k, f);
             if (f > 0 && ws[0].pairs.live > live) made++;
@@ -210,7 +210,7 @@ static void held_bodies_pairs_never_late(void **state)
             for (int m = 0; m < 2; m++) {
                 sim_hook hook = {hand_next, hand_at, &hands[m]};
                 if (sim_frame_hooked(&ws[m], &hook, err, sizeof err) != 0) fail_msg("trial %d: %s", k, err);
-                broad_holds(&ws[m], k, f);
+                broad_checks_out(&ws[m], k, f);
                 if (!ws[m].bodies[6]->held) fail_msg("trial %d: the body was let go", k);
             }
             same_states(&ws[0], &ws[1], k, f);
@@ -232,11 +232,11 @@ static void held_bodies_pairs_never_late(void **state)
     assert_true(collisions > trials * 5);
 }
 
-/* A moving object's box holds it along its flight to the end of the step: its
+/* A moving object's box covers it along its flight to the end of the step: its
  * sphere about the centre of mass, sampled densely, with gravity and spin, and in
  * every other room one body held and turning about a pivot off its centre, after
- * the box was checked or made again (broad_hold). */
-static void boxes_hold_their_flights(void **state)
+ * the box was checked or made again (broad_cover). */
+static void boxes_cover_their_flights(void **state)
 {
     (void)state;
     long samples = 0, made = 0;
@@ -258,7 +258,7 @@ static void boxes_hold_their_flights(void **state)
             for (int i = 0; i < w.n; i++) {
                 if (!step_moves(&w, i)) continue;
                 step_start(&w, i, t);
-                assert_int_equal(broad_hold(&w, i, t, t_end, false), 0);
+                assert_int_equal(broad_cover(&w, i, t, t_end, false), 0);
             }
             made += w.broad.refits - before;
             for (int i = 0; i < w.n; i++) {
@@ -335,7 +335,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(pairs_come_and_go),
-        cmocka_unit_test(boxes_hold_their_flights),
+        cmocka_unit_test(boxes_cover_their_flights),
         cmocka_unit_test(pairs_are_never_late),
         cmocka_unit_test(held_bodies_pairs_never_late),
     };

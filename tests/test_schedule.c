@@ -153,7 +153,7 @@ static void predictions_are_never_late(void **state)
         sched_move ma = move_of(&w, 0), mb = move_of(&w, 1);
         closest_result r = body_distance(ob[0], ob[1], NULL);
         double sphere = sched_sphere_time(ob[0], &ma, ob[1], &mb);
-        double touch = toi_touch(ob[0], ob[1]);
+        double touch = tol_touch(ob[0], ob[1]);
         double along = sched_ca_time(ob[0], &ma, ob[1], &mb, d, r.normal, r.pa, r.pb, touch);
         double truth = first_contact(&w, urand(&s, 0.0005, 0.003), 2, touch);
         toi_output o = toi_find(&w, &(toi_input){.a = 0, .b = 1, .lo = 0, .hi = 2});

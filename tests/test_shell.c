@@ -1,6 +1,6 @@
 /* test_shell.c: statements run against a world: the bad-input catalogue (each entry
  * gives its message and changes nothing), objects and properties, save and read
- * round trips. */
+ * round trips, what stats counts and what the speed limits say. */
 #include "check.h"
 #include "scratch.h"
 #include "shell_fixture.h"
@@ -603,6 +603,94 @@ static void figures_of_the_run(void **state)
     assert_int_equal(run("restart\n"), CMD_OK);
 }
 
+/* ------------------------------------------------------- the speed limits */
+
+/* The kinetic energy of every object (J). */
+static double kinetic_energy(void)
+{
+    double e = 0;
+    for (int i = 0; i < g_sh.w.n; i++) e += body_energy(g_sh.w.bodies[i]);
+    return e;
+}
+
+/* The number after "name = " in g_out, or -1. */
+static long stat_of(const char *name)
+{
+    char key[64];
+    snprintf(key, sizeof key, "\n%s = ", name);
+    const char *at = strstr(g_out, key);
+    return at ? strtol(at + strlen(key), NULL, 10) : -1;
+}
+
+/* How many times needle occurs in hay. */
+static int occurrences(const char *hay, const char *needle)
+{
+    int n = 0;
+    for (const char *p = strstr(hay, needle); p; p = strstr(p + 1, needle)) n++;
+    return n;
+}
+
+/* The room of issue 33: 200 objects of `random` (elasticity 1, up to 2 m/s and
+ * 2 rad/s) in a closed room of six static walls, no force. */
+static void the_room_of_200(void)
+{
+    char text[2048];
+    const double x = 2 * sqrt(10.0), a = 2, t = 0.2;
+    snprintf(text, sizeof text,
+             "seed = 1; random_box = (%.17g, %.17g, %g); random 200\n"
+             "cube wxm; size = (%g, %.17g, %g); translate = (%.17g, 0, 0); mass = -1\n"
+             "cube wxp; size = (%g, %.17g, %g); translate = (%.17g, 0, 0); mass = -1\n"
+             "cube wym; size = (%.17g, %g, %g); translate = (0, %.17g, 0); mass = -1\n"
+             "cube wyp; size = (%.17g, %g, %g); translate = (0, %.17g, 0); mass = -1\n"
+             "cube wzm; size = (%.17g, %.17g, %g); translate = (0, 0, %g); mass = -1\n"
+             "cube wzp; size = (%.17g, %.17g, %g); translate = (0, 0, %g); mass = -1\n",
+             x, x, a, t, x + 2 * t, a + 2 * t, -(x + t), t, x + 2 * t, a + 2 * t, x + t, x, t,
+             a + 2 * t, -(x + t), x, t, a + 2 * t, x + t, x, x, t, -(a + t), x, x, t, a + t);
+    assert_int_equal(run(text), CMD_OK);
+}
+
+/* At the default limits (max_angular 4) collisions spin objects faster, and each
+ * one the limit cuts loses energy: stats counts them, and the first warns, once,
+ * naming the object and the limit to raise.  With the limits raised nothing is
+ * cut, and elasticity 1 keeps the energy to 1e-9 over 60 s. */
+static void speed_limits_count_what_they_cut(void **state)
+{
+    (void)state;
+    assert_int_equal(run("restart"), CMD_OK);
+    the_room_of_200();
+    double e0 = kinetic_energy();
+    assert_int_equal(run("run 600; stats"), CMD_OK);
+    long cuts = stat_of("speed_cuts"), hits = stat_of("collisions");
+    double e1 = kinetic_energy();
+    print_message("room of 200 at the default limits: %ld collisions, %ld cut, kinetic energy %.6g J "
+                  "then %.6g J; %s", hits, cuts, e0, e1, g_errbuf);
+    assert_true(cuts > 0 && cuts <= hits);
+    assert_true(e1 < 0.9 * e0);
+    assert_int_equal(occurrences(g_errbuf, "warning:"), 1);
+    assert_true(strstr(g_errbuf, "raise max_angular to keep it") || strstr(g_errbuf, "raise max_linear to keep it"));
+    const char *q = strchr(g_errbuf, '\'');
+    assert_non_null(q);
+    char name[64] = "";
+    sscanf(q + 1, "%63[^']", name);
+    assert_true(world_find(&g_sh.w, name) >= 0);
+    assert_int_equal(run("run 20"), CMD_OK); /* once */
+    assert_null(strstr(g_errbuf, "warning:"));
+
+    assert_int_equal(run("restart; max_linear = 100; max_angular = 1000"), CMD_OK);
+    the_room_of_200();
+    e0 = kinetic_energy();
+    for (int k = 0; k < 6; k++) {
+        assert_int_equal(run("run 100"), CMD_OK);
+        assert_near(kinetic_energy(), e0, 1e-9 * e0);
+    }
+    assert_int_equal(run("stats"), CMD_OK);
+    print_message("room of 200, limits raised: %ld collisions in 60 s, none cut, energy %.15g J for "
+                  "%.15g J\n", stat_of("collisions"), kinetic_energy(), e0);
+    assert_true(stat_of("collisions") > 1000);
+    assert_int_equal(stat_of("speed_cuts"), 0);
+    assert_null(strstr(g_errbuf, "warning:"));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -622,6 +710,7 @@ int main(void)
         cmocka_unit_test(failed_logs_are_turned_off),
         cmocka_unit_test(random_says_how_many_fit),
         cmocka_unit_test(figures_of_the_run),
+        cmocka_unit_test(speed_limits_count_what_they_cut),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -40,7 +40,7 @@ static bool box_meets(aabb a, aabb b)
            a.lo.z <= b.hi.z && b.lo.z <= a.hi.z;
 }
 
-static bool box_holds(aabb outer, aabb inner)
+static bool box_covers(aabb outer, aabb inner)
 {
     return outer.lo.x <= inner.lo.x && outer.lo.y <= inner.lo.y && outer.lo.z <= inner.lo.z &&
            outer.hi.x >= inner.hi.x && outer.hi.y >= inner.hi.y && outer.hi.z >= inner.hi.z;
@@ -56,7 +56,7 @@ static double box_area(aabb a)
 static aabb box_grow(aabb a, double r) { return (aabb){v3_sub(a.lo, v3(r, r, r)), v3_add(a.hi, v3(r, r, r))}; }
 
 /* How much wider than an object's shape its box must be: the contact distance
- * (each box takes its half of the pair's, toi_touch), and far more than the
+ * (each box takes its half of the pair's, tol_touch), and far more than the
  * rounding of positions as large as c and reaches as long as reach. */
 static double slack(const body *b, vec3 c, double reach)
 {
@@ -95,7 +95,7 @@ static void sweep1(double x0, double v, double a, double s0, double s1, double *
     }
 }
 
-/* The box that holds moving object i, flying flight f, from time t0 to t1: the
+/* The box that covers moving object i, flying flight f, from time t0 to t1: the
  * sphere about its centre of mass swept, widened by `more`.  A held body's
  * (FLIGHT_HELD) centre turns about the pivot, which goes at a constant velocity:
  * the sphere about the pivot that holds it, swept. */
@@ -264,7 +264,7 @@ static int tree_insert(broad_tree *t, aabb box, int obj)
 static void tree_enlarge(broad_tree *t, int leaf, aabb box)
 {
     t->node[leaf].box = box;
-    for (int k = t->node[leaf].parent; k >= 0 && !box_holds(t->node[k].box, box); k = t->node[k].parent)
+    for (int k = t->node[leaf].parent; k >= 0 && !box_covers(t->node[k].box, box); k = t->node[k].parent)
         t->node[k].box = box_union(t->node[k].box, box);
 }
 
@@ -530,20 +530,20 @@ int broad_commands(world *w)
         bool still = body_is_static(b) || b->state != STATE_DYNAMIC;
         aabb need = still ? still_box(b) : sphere_box(b);
         bp->until[i] = -HUGE_VAL; /* (a command may have changed its motion) */
-        if (box_holds(bp->box[i], need)) continue;
+        if (box_covers(bp->box[i], need)) continue;
         if (refit(w, i, still ? need : box_grow(need, margin(b))) != 0) return -1;
     }
     return 0;
 }
 
-int broad_hold(world *w, int i, double t, double t_end, bool same)
+int broad_cover(world *w, int i, double t, double t_end, bool same)
 {
     const body *b = w->bodies[i];
     const flight *f = &w->step.fl[i];
-    if (f->kind == FLIGHT_STILL || everywhere(w)) return 0; /* (held already) */
+    if (f->kind == FLIGHT_STILL || everywhere(w)) return 0; /* (covered already) */
     broad_phase *bp = &w->broad;
     if (same && t_end <= bp->until[i]) return 0;
-    if (box_holds(bp->box[i], swept_box(b, f, t, t_end, 0))) {
+    if (box_covers(bp->box[i], swept_box(b, f, t, t_end, 0))) {
         bp->until[i] = t_end;
         return 0;
     }
@@ -557,8 +557,8 @@ int broad_check(const world *w, char *err, size_t errlen)
     const broad_phase *bp = &w->broad;
     for (int i = 0; i < w->n; i++) {
         const body *b = w->bodies[i];
-        /* (either holds the shape) */
-        if (!box_holds(bp->box[i], still_box(b)) && !box_holds(bp->box[i], sphere_box(b))) {
+        /* (either covers the shape) */
+        if (!box_covers(bp->box[i], still_box(b)) && !box_covers(bp->box[i], sphere_box(b))) {
             snprintf(err, errlen, "object %d (%s) is outside its box", i, b->name);
             return -1;
         }

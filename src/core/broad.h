@@ -1,14 +1,14 @@
 /* broad.h: the broad phase: which objects are near enough to need a pair
  * (thesis 2.1.3; design.md, "Broad phase").
  *
- * Each object has a box, fixed in the room, that holds it: a static object's
- * holds its shape as placed; a moving object's holds the sphere about its centre
+ * Each object has a box, fixed in the room, that covers it: a static object's
+ * covers its shape as placed; a moving object's covers the sphere about its centre
  * of mass that holds it (a turn leaves that sphere as it is), swept along its
  * flight until a little past the end of the internal step, and fattened, so that
  * it is made again only every few steps.  Two objects (not both static) whose
  * boxes meet have a pair; when their boxes part, their pair ends (pairs.h).
  *
- * Never late: a moving object's box is checked to hold it until the end of the
+ * Never late: a moving object's box is checked to cover it until the end of the
  * internal step at each step's start and whenever its flight changes (an event:
  * a collision, a slide's end, a cluster's step), and made again, with the pairs
  * its new box meets, when it does not.  So at every instant of a step each object
@@ -55,7 +55,7 @@ typedef struct {
     broad_tree fixed;     /* the static objects' boxes */
     int *leaf;            /* per object: its node in its tree, or -1 */
     aabb *box;            /* per object: its box */
-    double *until;        /* per object: its box holds it, on the motion it had when
+    double *until;        /* per object: its box covers it, on the motion it had when
                            * the box was last checked, until then (-inf: unknown) */
     int cap;              /* objects leaf and box have room for */
     int *stack, capstack; /* the trees' walks */
@@ -73,15 +73,15 @@ void broad_free(broad_phase *bp);
 int broad_rebuild(world *w);
 
 /* After commands ran (the objects stand still at w->time): every object whose
- * box no longer holds it gets a new one.  Returns 0 or -1. */
+ * box no longer covers it gets a new one.  Returns 0 or -1. */
 int broad_commands(world *w);
 
 /* Moving object i flies its flight (w->step.fl[i]) from time t: its box is made
  * again, with the pairs it meets and the pairs it no longer meets ended, unless
- * it holds the object until t_end.  `same` says that the flight goes on with the
+ * it covers the object until t_end.  `same` says that the flight goes on with the
  * motion of the one before it (a new internal step's), so that what was found of
  * the last holds.  Returns 0, or -1 when out of memory. */
-int broad_hold(world *w, int i, double t, double t_end, bool same);
+int broad_cover(world *w, int i, double t, double t_end, bool same);
 
 /* Checks the broad phase (for tests and the validation build), objects at their
  * states in w->bodies: every object is inside its box, every two objects (not

@@ -8,25 +8,24 @@
 #include "impulse.h"
 #include "lcp.h"
 #include "pairs.h"
-#include "schedule.h"
+#include "rows.h"
 #include "step.h"
 #include "tolerance.h"
 #include "world.h"
 
-/* Newton steps of the first kick, at most, and the gap it aims at (relative to
- * the contact distance). */
+/* Newton steps of the first kick, at most. */
 #define CLUSTER_NEWTON 6
 
 /* How fast a point that is in comes out (m/s). */
 #define CLUSTER_RECOVER_SPEED 1e-3
 
-
-/* A cluster's pressed points: the rows of its impulses and the points they
- * follow. */
+/* A cluster's pressed points: the rows of its impulses, the points they follow
+ * and their gaps when gathered (in `rows`, over row, cp and gap). */
 typedef struct {
-    int n;
     impulse_row row[SIM_CLUSTER_ROWS];
     cpoint cp[SIM_CLUSTER_ROWS]; /* p and q renumbered as body indices */
+    double gap[SIM_CLUSTER_ROWS];
+    row_list rows;
     int np;                      /* the lasting contacts they come from */
     pair *pr[SIM_CLUSTER_ROWS];
 } points;
@@ -35,8 +34,9 @@ typedef struct {
  * of w->bodies (each pair once). */
 static void gather(world *w, const int *list, int n, points *pts, double reach)
 {
-    pts->n = pts->np = 0;
-    bool *in = w->step.mark;
+    pts->rows = (row_list){pts->row, pts->cp, pts->gap, 0, SIM_CLUSTER_ROWS, false};
+    pts->np = 0;
+    bool *in = w->answer.mark;
     for (int k = 0; k < n; k++) in[list[k]] = true;
     for (int k = 0; k < n; k++) {
         int i = list[k];
@@ -44,33 +44,19 @@ static void gather(world *w, const int *list, int n, points *pts, double reach)
             int o = link->other;
             if (!p->touching || (in[o] && o < i)) continue;
             const body *A = w->bodies[p->a], *B = w->bodies[p->b];
-            double scale = A->shape.r_out + B->shape.r_out;
             closest_result r = pair_query(w, p, A, B);
             if (r.status == CLOSEST_INVALID) continue;
-            cpoint cp[16];
-            int nc = contact_cpoints(A, B, &r, d_max(SIM_CONTACT_TOL * scale, reach), cp, 16);
             if (pts->np < SIM_CLUSTER_ROWS) pts->pr[pts->np++] = p;
-            for (int c = 0; c < nc && pts->n < SIM_CLUSTER_ROWS; c++) {
-                cpoint *x = &pts->cp[pts->n];
-                *x = cp[c];
-                x->p = cp[c].p == 0 ? p->a : p->b;
-                x->q = cp[c].p == 0 ? p->b : p->a;
-                impulse_row *row = &pts->row[pts->n++];
-                row->p = x->p;
-                row->q = x->q;
-                row->e = 0;
-                cpoint_eval(x, w->bodies[x->p], w->bodies[x->q], &row->n, &row->at);
-            }
+            rows_add(&pts->rows, p, A, B, &r, d_max(tol_contact(A, B), reach), 0, w->bodies);
         }
     }
     for (int k = 0; k < n; k++) in[list[k]] = false;
 }
 
-/* The contact distance of point k's pair. */
+/* The contact distance of point cp's pair. */
 static double touch_at(const world *w, const cpoint *cp)
 {
-    const body *a = w->bodies[cp->p], *b = w->bodies[cp->q];
-    return d_max(SIM_TOUCH, SIM_ROUND_REL * (a->shape.r_out + b->shape.r_out));
+    return tol_touch(w->bodies[cp->p], w->bodies[cp->q]);
 }
 
 /* The fastest any point of the cluster moves (m/s). */
@@ -90,7 +76,7 @@ static double fastest(const world *w, const int *list, int n)
 static double floor_of(const world *w, const cpoint *cp, double g0, double h)
 {
     const body *P = w->bodies[cp->p], *Q = w->bodies[cp->q];
-    double hover = SIM_HOVER * (1 + P->shape.r_out + Q->shape.r_out);
+    double hover = tol_hover(P, Q);
     return g0 >= hover ? hover : g0 >= 0 ? g0 : d_min(0, g0 + h * CLUSTER_RECOVER_SPEED);
 }
 
@@ -102,7 +88,7 @@ static int deepest_rows(world *w, points *pts, body **bs, double *floor_gap, dou
                         double h)
 {
     int added = 0;
-    for (int c = 0; c < pts->np && pts->n < SIM_CLUSTER_ROWS; c++) {
+    for (int c = 0; c < pts->np && pts->rows.n < SIM_CLUSTER_ROWS; c++) {
         pair *p = pts->pr[c];
         const body *A = bs[p->a], *B = bs[p->b];
         closest_cache cache = p->cache;
@@ -119,27 +105,16 @@ static int deepest_rows(world *w, points *pts, body **bs, double *floor_gap, dou
             }
         }
         if (!(least < HUGE_VAL) || r.distance >= least - tol) continue;
-        /* their points there (material points and features, so rows now) */
-        cpoint cp[16];
-        double scale = A->shape.r_out + B->shape.r_out;
-        int nc = contact_cpoints(A, B, &r, SIM_CONTACT_TOL * scale, cp, 16);
-        for (int j = 0; j < nc && pts->n < SIM_CLUSTER_ROWS; j++) {
-            cpoint *x = &pts->cp[pts->n];
-            *x = cp[j];
-            x->p = cp[j].p == 0 ? p->a : p->b;
-            x->q = cp[j].p == 0 ? p->b : p->a;
-            impulse_row *row = &pts->row[pts->n];
-            row->p = x->p;
-            row->q = x->q;
-            row->e = 0;
+        /* their points there (material points and features, so rows now): their
+         * gaps now set their floors, and their gaps there what is left */
+        int first = pts->rows.n, nc = rows_add(&pts->rows, p, A, B, &r, tol_contact(A, B), 0, w->bodies);
+        for (int k = first; k < first + nc; k++) {
+            const cpoint *x = &pts->cp[k];
             vec3 nn, at;
-            double g1 = cpoint_eval(x, bs[x->p], bs[x->q], &nn, &at);
-            double g0 = cpoint_eval(x, w->bodies[x->p], w->bodies[x->q], &row->n, &row->at);
-            int k = pts->n++;
-            floor_gap[k] = floor_of(w, x, g0, h);
-            gap[k] = g1 - floor_gap[k];
-            added++;
+            floor_gap[k] = floor_of(w, x, pts->gap[k], h);
+            gap[k] = cpoint_eval(x, bs[x->p], bs[x->q], &nn, &at) - floor_gap[k];
         }
+        added += nc;
     }
     return added;
 }
@@ -152,10 +127,10 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end)
     points pts;
     /* the points that could close within the step: its motion, twice over */
     gather(w, list, n, &pts, 2 * s * h);
-    int m = pts.n;
+    int m = pts.rows.n;
     if (m == 0 || !(h > 0)) return h;
-    body **bs = w->step.now;
-    bool *mobile = w->step.mark;
+    body **bs = w->answer.now;
+    bool *mobile = w->answer.mark;
     for (int k = 0; k < n; k++) mobile[list[k]] = true;
     double A[SIM_CLUSTER_ROWS * SIM_CLUSTER_ROWS], q[SIM_CLUSTER_ROWS], lam[SIM_CLUSTER_ROWS],
         next[SIM_CLUSTER_ROWS], wv[SIM_CLUSTER_ROWS], gap[SIM_CLUSTER_ROWS];
@@ -164,16 +139,12 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end)
     for (int k = 0; k < m; k++) lam[k] = 0;
     vec3 g = world_accel(w);
     double floor_gap[SIM_CLUSTER_ROWS];
-    for (int k = 0; k < m; k++) {
-        vec3 nn, at;
-        double g0 = cpoint_eval(&pts.cp[k], bs[pts.cp[k].p], bs[pts.cp[k].q], &nn, &at);
-        floor_gap[k] = floor_of(w, &pts.cp[k], g0, h);
-    }
+    for (int k = 0; k < m; k++) floor_gap[k] = floor_of(w, &pts.cp[k], pts.gap[k], h);
     for (int it = 0; it < CLUSTER_NEWTON; it++) {
         /* the gaps at the step's end after kicks lam: each object's copy kicked,
          * flown freely */
         for (int k = 0; k < n; k++) {
-            body *c = &w->step.scratch[STEP_COPIES * list[k] + 2];
+            body *c = &w->answer.kicked[list[k]];
             *c = *w->bodies[list[k]];
             bs[list[k]] = c;
         }
@@ -211,7 +182,10 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end)
             q[k] = gap[k];
             for (int j = 0; j < m; j++) q[k] -= A[k * m + j] * lam[j];
         }
-        if (lcp_solve(m, A, q, next, wv, w->step.lcp) != 0) break;
+        if (lcp_solve(m, A, q, next, wv, w->answer.lcp) != 0) {
+            w->st.unsolved++; /* (the last kicks found stand) */
+            break;
+        }
         for (int k = 0; k < m; k++) lam[k] = next[k];
     }
     impulse_apply(pts.row, m, bs, mobile, lam);
@@ -223,20 +197,17 @@ void cluster_settle(world *w, const int *list, int n)
 {
     points pts;
     gather(w, list, n, &pts, 0);
-    body **bs = w->step.now;
-    bool *mobile = w->step.mark;
+    body **bs = w->answer.now;
+    bool *mobile = w->answer.mark;
     /* the touching points: those that stay in contact stop approaching */
     impulse_row rows[SIM_CLUSTER_ROWS];
     double u[SIM_CLUSTER_ROWS], lam[SIM_CLUSTER_ROWS];
     int m = 0;
-    for (int k = 0; k < pts.n; k++) {
-        vec3 nn, at;
-        double gp = cpoint_eval(&pts.cp[k], w->bodies[pts.cp[k].p], w->bodies[pts.cp[k].q], &nn, &at);
-        if (gp <= touch_at(w, &pts.cp[k])) rows[m++] = pts.row[k];
-    }
+    for (int k = 0; k < pts.rows.n; k++)
+        if (pts.gap[k] <= touch_at(w, &pts.cp[k])) rows[m++] = pts.row[k];
     for (int k = 0; k < n; k++) mobile[list[k]] = true;
     for (int k = 0; k < m; k++) u[k] = impulse_speed(&rows[k], bs);
-    if (m > 0) impulse_solve(rows, m, bs, mobile, u, lam, w->step.lcp);
+    if (m > 0 && impulse_solve(rows, m, bs, mobile, u, lam, w->answer.lcp) != 0) w->st.unsolved++;
     for (int k = 0; k < n; k++) mobile[list[k]] = false;
     /* the lasting contacts that opened end */
     for (int k = 0; k < n; k++) {
@@ -247,7 +218,7 @@ void cluster_settle(world *w, const int *list, int n)
             closest_result r = pair_query_apart(w, p, A, B);
             /* (within the thickness of a contact, a rolling or rocking contact
              * holds: its points come and go as it turns) */
-            double held = SIM_CONTACT_TOL * (1 + A->shape.r_out + B->shape.r_out);
+            double held = SIM_CONTACT_TOL * (1 + tol_size(A, B));
             if (r.status == CLOSEST_SEPARATED && r.distance > held) p->touching = false;
         }
     }

@@ -8,6 +8,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "tolerance.h"
+
 typedef struct {
     double x, y;
 } p2;
@@ -335,7 +337,8 @@ static bool region_of(const body *a, const body *b, const closest_result *r, dou
     z->p = buf[0];
     support_place(a, v3_neg(n), fa, z->u, z->v, sa);
     support_place(b, n, fb, z->u, z->v, sb);
-    double eps = 1e-12 * (a->shape.r_out + b->shape.r_out) * (a->shape.r_out + b->shape.r_out);
+    /* (an area: a millionth of the size, squared) */
+    double size = tol_size(a, b), eps = d_max(1e-12 * size * size, tol_round(a, b) * size);
     int na = hull2(sa, ka, eps), nb = hull2(sb, kb, eps);
     z->na = na;
     z->nb = nb;
@@ -401,9 +404,7 @@ vec3 contact_closing_corner(const body *a, const body *b, const closest_result *
 /* A point of the object on side p (0: a, 1: b) at world point x, in its frame. */
 static vec3 local_of(const body *o, vec3 x) { return q_unrotate(o->q, v3_sub(x, o->x)); }
 
-/* The face of polyhedron o whose outward normal is nearest world direction d, or
- * -1 for a sphere. */
-static int facing(const body *o, vec3 d)
+int contact_facing(const body *o, vec3 d)
 {
     const poly *h = o->shape.hull;
     if (!h || o->sp.kind == SHAPE_SPHERE) return -1;
@@ -501,7 +502,7 @@ static void sphere_against(const body *s, const body *o, closest_feature f, vec3
         /* a centre over the face's rim (a ball at the edge it slides off) is
          * against that edge: the face's plane reaches beyond it */
         vec3 c = q_unrotate(o->q, v3_sub(body_com(s), o->x));
-        double eps = 1e-9 * (1 + o->shape.r_out), most = -eps;
+        double eps = d_max(1e-9 * (1 + tol_size(s, o)), tol_round(s, o)), most = -eps;
         for (int k = 0; k < F->count; k++) {
             vec3 v0 = h->v[h->face_vert[F->first + k]];
             vec3 v1 = h->v[h->face_vert[F->first + (k + 1) % F->count]];
@@ -571,7 +572,7 @@ int contact_cpoints(const body *a, const body *b, const closest_result *r, doubl
         cpoint base = {.p = pside, .q = q, .r = 0};
         int nq = q == 0 ? z.na : z.nb, np = pside == 0 ? z.na : z.nb;
         /* the plane: the face of Q's side itself, when it is one */
-        int fq = nq >= 3 ? facing(Q, m) : -1;
+        int fq = nq >= 3 ? contact_facing(Q, m) : -1;
         if (fq >= 0) {
             base.kind = CPT_PLANE;
             base.f0 = Q->shape.hull->f[fq].n;
@@ -582,7 +583,7 @@ int contact_cpoints(const body *a, const body *b, const closest_result *r, doubl
         /* the points: on P's own surface (its face, edge or vertex that faces Q),
          * so that their gaps are the objects' own, however thick the region */
         const support *sp = pside == 0 ? &z.sa : &z.sb;
-        int fp = np >= 3 ? facing(P, v3_neg(m)) : -1;
+        int fp = np >= 3 ? contact_facing(P, v3_neg(m)) : -1;
         for (int i = 0; i < z.n && count < max; i++) {
             vec3 x = v3_mad(region_world(&z, n, z.p[i]), m, half);
             lift(P, sp, np, fp, m, &x);
@@ -677,7 +678,7 @@ bool contact_holds(const body *m, const body *s, const closest_result *r, double
     int fi = 0;
     for (int k = 1; k < h->nf; k++)
         if (v3_dot(h->f[k].n, nl) > v3_dot(h->f[fi].n, nl)) fi = k;
-    if (v3_dot(h->f[fi].n, nl) < 1 - 1e-6) {
+    if (v3_dot(h->f[fi].n, nl) < 1 - SIM_PARALLEL) {
         return false;
     }
     *face = fi;
@@ -685,7 +686,9 @@ bool contact_holds(const body *m, const body *s, const closest_result *r, double
     plane_axes(n, &u, &v);
     vec3 c = body_com(m);
     p2 cp = {v3_dot(c, u), v3_dot(c, v)};
-    double scale = m->shape.r_out + s->shape.r_out, margin = 1e-9 * scale * scale;
+    /* (an area, and a length: a billionth of the size, squared and not) */
+    double size = tol_size(m, s), round = tol_round(m, s);
+    double margin = d_max(1e-9 * size * size, round * size);
     if (m->sp.kind == SHAPE_SPHERE) {
         /* the ball's lowest point, under its centre, on the face */
         const poly_face *F = &h->f[fi];
@@ -710,7 +713,7 @@ bool contact_holds(const body *m, const body *s, const closest_result *r, double
             if (cross2(z.p[k], z.p[(k + 1) % z.n], cp) < margin) inside = false;
         /* balanced: over the region's edge, or over a support that is a point or a
          * segment (a superquadric on its pole) */
-        double reach = 1e-9 * scale;
+        double reach = d_max(1e-9 * size, round);
         for (int k = 0; k < z.n && !inside; k++)
             inside = seg_dist2(z.p[k], z.p[(k + 1) % z.n], cp) <= reach * reach;
     }
@@ -735,7 +738,7 @@ bool contact_level(body *m, const body *s, int face, double max_tilt, double gap
     const poly *hs = s->shape.hull, *hm = m->shape.hull;
     if (!hs || !hm || m->sp.kind == SHAPE_SPHERE || face < 0 || face >= hs->nf) return false;
     vec3 n = q_rotate(s->q, hs->f[face].n);
-    int fm = facing(m, v3_neg(n));
+    int fm = contact_facing(m, v3_neg(n));
     vec3 nm = q_rotate(m->q, hm->f[fm].n), want = v3_neg(n);
     vec3 axis = v3_cross(nm, want);
     double sn = v3_len(axis), cs = v3_dot(nm, want), angle = atan2(sn, cs);

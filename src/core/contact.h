@@ -49,11 +49,16 @@ typedef struct {
     double sgn; /*   and the sign that turns sd x f1 from q towards p */
 } cpoint;
 
+/* The most points one contact is followed by: the corners of its region beyond
+ * these are left out (two quadrilaterals overlap in eight at most). */
+#define CONTACT_MAX_POINTS 16
+
 /* The points at which touching (or nearly touching) polyhedra or spheres a and b
  * press (closest result r of a against b, tol the thickness of the contact
  * region): a sphere's one point; the corners of a contact region (a segment's two
  * ends, a polygon's corners), each against the plane of the face side; or the one
- * closest pair.  At most max written; returns the count (0 when out of memory). */
+ * closest pair.  At most max written (CONTACT_MAX_POINTS is enough for every
+ * caller); returns the count (0 when out of memory). */
 int contact_cpoints(const body *a, const body *b, const closest_result *r, double tol, cpoint *out,
                     int max);
 
@@ -74,6 +79,10 @@ bool contact_holds(const body *m, const body *s, const closest_result *r, double
  * false (and m unchanged) when that face is more than max_tilt radians off.  w
  * is recomputed from L. */
 bool contact_level(body *m, const body *s, int face, double max_tilt, double gap);
+
+/* The face of polyhedron o whose outward normal is nearest world direction d, or
+ * -1 for a sphere. */
+int contact_facing(const body *o, vec3 d);
 
 /* Velocity of the material point of b at world point p. */
 vec3 contact_point_velocity(const body *b, vec3 p);

@@ -1,8 +1,10 @@
 /* grow.h: room for one more item in an array that doubles as it grows (the core's
- * pairs and broad phase, and the shell's tokens, statements and tracker rows). */
+ * pairs and broad phase, and the shell's tokens, statements and tracker rows), and
+ * arrays sized for a count (the step's and the answering's scratch). */
 #ifndef VROC_GROW_H
 #define VROC_GROW_H
 
+#include <stdbool.h>
 #include <stdlib.h>
 
 /* items (n of them, room for *cap, each elem bytes) with room for one more: items
@@ -16,6 +18,15 @@ static inline void *grow_for_one(void *items, int n, int *cap, size_t elem, int 
     void *moved = realloc(items, (size_t)c * elem);
     if (moved) *cap = c;
     return moved;
+}
+
+/* The array p resized to n elements (at least one) of elem bytes: the moved
+ * array, or p itself with *ok set false when that fails. */
+static inline void *grow_resized(void *p, size_t elem, long n, bool *ok)
+{
+    void *q = realloc(p, (size_t)(n > 0 ? n : 1) * elem);
+    if (!q) *ok = false;
+    return q ? q : p;
 }
 
 #endif

@@ -19,9 +19,9 @@
  *                when it is run (sim.h)
  *
  * Sizes run from a micrometre to ten kilometres, masses from a microgram to a
- * million tonnes, speeds to 10 km/s: far beyond any scene of the thesis, and
- * still nine orders of magnitude from rounding's floor (a double resolves 1e-10 m
- * at 1e6 m, a thousandth of SIM_SEPARATION).  A velocity or an angular velocity
+ * million tonnes, speeds to 10 km/s: far beyond any scene of the thesis.  At the
+ * far edge of positions rounding comes near: a double resolves 1.2e-10 m at
+ * 1e6 m, an eighth of the contact distance (SIM_TOUCH, tolerance.h).  A velocity or an angular velocity
  * may be any finite vector: edit.h limits it to max_linear or max_angular as it
  * is set.
  */

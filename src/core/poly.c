@@ -30,7 +30,6 @@
 #include "poly.h"
 
 #include <float.h>
-#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -38,20 +37,13 @@
 
 #include <libqhull_r/libqhull_r.h>
 
+#include "errmsg.h"
+
 /* Largest distance of a vertex from its face's plane accepted in a result: this
  * fraction of the cloud's size plus this many units of roundoff of its largest
  * coordinate (qhull's roundoff-level merging stays well below both). */
 #define PLANAR_REL 1e-10
 #define PLANAR_ULPS 1000
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    if (!err || errlen == 0) return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
 
 /* ---- allocation ---- */
 
@@ -171,7 +163,7 @@ static int assemble_faces(poly *p, const int *count, const vec3 *hint, char *err
         first += count[f];
         int *vert = p->face_vert + F->first;
         if (F->count < 3) {
-            set_err(err, errlen, "hull face %d has only %d vertices", f, F->count);
+            errmsg_set(err, errlen, "hull face %d has only %d vertices", f, F->count);
             return -1;
         }
         vec3 a = polygon_area2(p->v, vert, F->count, NULL);
@@ -180,7 +172,7 @@ static int assemble_faces(poly *p, const int *count, const vec3 *hint, char *err
             a = v3_neg(a);
         }
         if (!(v3_len(a) > 0)) {
-            set_err(err, errlen, "hull face %d has no area", f);
+            errmsg_set(err, errlen, "hull face %d has no area", f);
             return -1;
         }
         F->n = v3_norm(a);
@@ -201,7 +193,7 @@ static int assemble_edges(poly *p, char *err, size_t errlen)
     int *fill = calloc((size_t)p->nv, sizeof *fill);
     int *face_of = malloc((size_t)nfv * sizeof *face_of);
     if (!out_first || !out || !fill || !face_of) {
-        set_err(err, errlen, "out of memory");
+        errmsg_set(err, errlen, "out of memory");
         goto done;
     }
     for (int f = 0; f < p->nf; f++)
@@ -220,7 +212,7 @@ static int assemble_edges(poly *p, char *err, size_t errlen)
         int k = i - F->first;
         int a = p->face_vert[i], b = p->face_vert[F->first + (k + 1) % F->count];
         if (a == b) {
-            set_err(err, errlen, "hull face %d repeats vertex %d", face_of[i], a);
+            errmsg_set(err, errlen, "hull face %d repeats vertex %d", face_of[i], a);
             goto done;
         }
         if (a > b) continue;
@@ -234,14 +226,14 @@ static int assemble_edges(poly *p, char *err, size_t errlen)
             }
         }
         if (found != 1 || ne >= p->ne) {
-            set_err(err, errlen, "hull edge %d-%d is not shared by exactly two faces", a, b);
+            errmsg_set(err, errlen, "hull edge %d-%d is not shared by exactly two faces", a, b);
             goto done;
         }
         p->e[ne] = (poly_edge){{a, b}, {face_of[i], face_of[twin]}};
         p->face_edge[i] = p->face_edge[twin] = ne++;
     }
     if (ne != p->ne) {
-        set_err(err, errlen, "hull has %d edges, expected %d", ne, p->ne);
+        errmsg_set(err, errlen, "hull has %d edges, expected %d", ne, p->ne);
         goto done;
     }
     memset(p->vert_first, 0, (size_t)(p->nv + 1) * sizeof *p->vert_first);
@@ -273,12 +265,12 @@ static poly *poly_assemble(int nv, const vec3 *pos, int nf, const int *count,
     int nfv = 0;
     for (int f = 0; f < nf; f++) nfv += count[f];
     if (nfv % 2 != 0) {
-        set_err(err, errlen, "hull faces do not close up (%d corners)", nfv);
+        errmsg_set(err, errlen, "hull faces do not close up (%d corners)", nfv);
         return NULL;
     }
     poly *p = poly_alloc(nv, nfv / 2, nf, nfv);
     if (!p) {
-        set_err(err, errlen, "out of memory");
+        errmsg_set(err, errlen, "out of memory");
         return NULL;
     }
     memcpy(p->v, pos, (size_t)nv * sizeof *pos);
@@ -288,7 +280,7 @@ static poly *poly_assemble(int nv, const vec3 *pos, int nf, const int *count,
         return NULL;
     }
     if (p->nv - p->ne + p->nf != 2) {
-        set_err(err, errlen, "hull is not a closed surface (V - E + F = %d)",
+        errmsg_set(err, errlen, "hull is not a closed surface (V - E + F = %d)",
                 p->nv - p->ne + p->nf);
         poly_free(p);
         return NULL;
@@ -353,11 +345,11 @@ static void qrun_end(qrun *r)
 static void qrun_message(qrun *r, const char *what, char *err, size_t errlen)
 {
     if (r->exitcode == qh_ERRsingular)
-        set_err(err, errlen, "%s: points are coplanar or collinear (no volume)", what);
+        errmsg_set(err, errlen, "%s: points are coplanar or collinear (no volume)", what);
     else if (r->exitcode == qh_ERRmem)
-        set_err(err, errlen, "%s: out of memory", what);
+        errmsg_set(err, errlen, "%s: out of memory", what);
     else
-        set_err(err, errlen,
+        errmsg_set(err, errlen,
                 "%s: the points are too close together for their size to make a solid",
                 what);
 }
@@ -370,7 +362,7 @@ static int qrun_start(qrun *r, const vec3 *pts, int n, char *err, size_t errlen)
     r->coords = malloc((size_t)n * 3 * sizeof *r->coords);
     r->log = open_memstream(&r->logbuf, &r->loglen); /* qhull writes its messages here */
     if (!r->coords || !r->log) {
-        set_err(err, errlen, "out of memory");
+        errmsg_set(err, errlen, "out of memory");
         r->exitcode = -1;
         return -1;
     }
@@ -478,7 +470,7 @@ static poly *qrun_extract(qrun *r, char *err, size_t errlen)
     vec3 *hint = malloc((size_t)nf * sizeof *hint);
     poly *p = NULL;
     if (!vmap || !pos || !nbr || !stamp || !count || !cyc || !hint) {
-        set_err(err, errlen, "out of memory");
+        errmsg_set(err, errlen, "out of memory");
         goto done;
     }
     int nv = 0;
@@ -493,7 +485,7 @@ static poly *qrun_extract(qrun *r, char *err, size_t errlen)
     {
         count[f] = facet_cycle(qh, facet, vmap, cyc + at, nbr, stamp, f);
         if (count[f] < 3 || count[f] != qh_setsize(qh, facet->vertices)) {
-            set_err(err, errlen, "qhull facet f%u has no simple boundary", facet->id);
+            errmsg_set(err, errlen, "qhull facet f%u has no simple boundary", facet->id);
             goto done;
         }
         hint[f] = v3(facet->normal[0], facet->normal[1], facet->normal[2]);
@@ -501,7 +493,7 @@ static poly *qrun_extract(qrun *r, char *err, size_t errlen)
     }
     nv = drop_edge_vertices(nv, pos, nf, count, cyc);
     if (nv < 0) {
-        set_err(err, errlen, "out of memory");
+        errmsg_set(err, errlen, "out of memory");
         goto done;
     }
     p = poly_assemble(nv, pos, nf, count, cyc, hint, err, errlen);
@@ -649,14 +641,14 @@ static int halfspace_vertices(const vec3 *n, const double *d, int m, vec3 c, vec
     vec3 *dual = malloc((size_t)m * sizeof *dual);
     *out = NULL;
     if (!dual) {
-        set_err(err, errlen, "out of memory");
+        errmsg_set(err, errlen, "out of memory");
         return -1;
     }
     for (int k = 0; k < m; k++) {
         double h = d[k] - v3_dot(n[k], c);
         if (!(h > 0)) {
             free(dual);
-            set_err(err, errlen, "convex hull: flat face merging lost the interior");
+            errmsg_set(err, errlen, "convex hull: flat face merging lost the interior");
             return -1;
         }
         dual[k] = v3_scale(n[k], 1.0 / h);
@@ -677,7 +669,7 @@ static int halfspace_vertices(const vec3 *n, const double *d, int m, vec3 c, vec
             vec3 a = v3(facet->normal[0], facet->normal[1], facet->normal[2]);
             (*out)[nv++] = v3_add(c, v3_scale(a, -1.0 / facet->offset));
         }
-        if (nv < 0) set_err(err, errlen, "convex hull: flat face merging failed");
+        if (nv < 0) errmsg_set(err, errlen, "convex hull: flat face merging failed");
     } else if (r.exitcode > 0) {
         qrun_message(&r, "convex hull (merging flat faces)", err, errlen);
     }
@@ -701,12 +693,12 @@ static poly *merge_flat(const poly *p, double angle, char *err, size_t errlen)
     vec3 *verts = NULL;
     poly *q = NULL;
     if (!n || !d) {
-        set_err(err, errlen, "out of memory");
+        errmsg_set(err, errlen, "out of memory");
     } else {
         region_planes(p, region, nreg, n, d);
         int nv = halfspace_vertices(n, d, nreg, vertex_mean(p), &verts, err, errlen);
         if (nv >= 4) q = hull_once(verts, nv, err, errlen);
-        else if (nv >= 0) set_err(err, errlen, "convex hull: merging left %d vertices", nv);
+        else if (nv >= 0) errmsg_set(err, errlen, "convex hull: merging left %d vertices", nv);
     }
     free(region);
     free(n);
@@ -744,22 +736,22 @@ static double cloud_size(const vec3 *pts, int n, double *coord)
 poly *poly_hull_merge(const vec3 *pts, int n, double angle, char *err, size_t errlen)
 {
     if (n < 4) {
-        set_err(err, errlen, "convex hull needs at least 4 points (got %d)", n);
+        errmsg_set(err, errlen, "convex hull needs at least 4 points (got %d)", n);
         return NULL;
     }
     double coord, size = cloud_size(pts, n, &coord);
     if (isnan(size)) {
-        set_err(err, errlen, "convex hull: a point is not finite");
+        errmsg_set(err, errlen, "convex hull: a point is not finite");
         return NULL;
     }
     if (!(size > 0)) {
-        set_err(err, errlen, "convex hull: all %d points coincide", n);
+        errmsg_set(err, errlen, "convex hull: all %d points coincide", n);
         return NULL;
     }
     poly *p = hull_once(pts, n, err, errlen);
     if (!p) return NULL;
     if (!(poly_mass(p).volume > 1e-12 * size * size * size)) {
-        set_err(err, errlen, "convex hull: the solid is too thin: its volume is under 1e-12 "
+        errmsg_set(err, errlen, "convex hull: the solid is too thin: its volume is under 1e-12 "
                 "of the cube around it");
         poly_free(p);
         return NULL;
@@ -780,7 +772,7 @@ poly *poly_hull_merge(const vec3 *pts, int n, double angle, char *err, size_t er
         }
     }
     if (!planar) {
-        set_err(err, errlen, "convex hull: a face is not planar (off by %.3g)",
+        errmsg_set(err, errlen, "convex hull: a face is not planar (off by %.3g)",
                 poly_planarity(p));
         poly_free(p);
         return NULL;
@@ -879,15 +871,15 @@ static int edge_walked_by(const poly_edge *e, int f, int *tail, int *head)
 static int check_counts(const poly *p, char *err, size_t errlen)
 {
     if (p->nv < 4 || p->ne < 6 || p->nf < 4) {
-        set_err(err, errlen, "too few features (%d v, %d e, %d f)", p->nv, p->ne, p->nf);
+        errmsg_set(err, errlen, "too few features (%d v, %d e, %d f)", p->nv, p->ne, p->nf);
         return -1;
     }
     if (p->nv - p->ne + p->nf != 2) {
-        set_err(err, errlen, "euler: V - E + F = %d, not 2", p->nv - p->ne + p->nf);
+        errmsg_set(err, errlen, "euler: V - E + F = %d, not 2", p->nv - p->ne + p->nf);
         return -1;
     }
     if (face_corners(p) != 2 * p->ne) {
-        set_err(err, errlen, "face corners %d != 2 E = %d", face_corners(p), 2 * p->ne);
+        errmsg_set(err, errlen, "face corners %d != 2 E = %d", face_corners(p), 2 * p->ne);
         return -1;
     }
     return 0;
@@ -900,40 +892,40 @@ static int check_face(const poly *p, int f, double tol, char *err, size_t errlen
     const int *fv = p->face_vert + F->first;
     if (F->count < 3 || (f > 0 && F->first != p->f[f - 1].first + p->f[f - 1].count) ||
         (f == 0 && F->first != 0)) {
-        set_err(err, errlen, "face %d: bad layout (first %d, count %d)", f, F->first, F->count);
+        errmsg_set(err, errlen, "face %d: bad layout (first %d, count %d)", f, F->first, F->count);
         return -1;
     }
     if (fabs(v3_len(F->n) - 1) > 1e-12) {
-        set_err(err, errlen, "face %d: normal not unit (|n| = %.17g)", f, v3_len(F->n));
+        errmsg_set(err, errlen, "face %d: normal not unit (|n| = %.17g)", f, v3_len(F->n));
         return -1;
     }
     for (int k = 0; k < F->count; k++) {
         int a = fv[k], b = fv[(k + 1) % F->count], c = fv[(k + 2) % F->count];
         if (a < 0 || a >= p->nv) {
-            set_err(err, errlen, "face %d: vertex index %d out of range", f, a);
+            errmsg_set(err, errlen, "face %d: vertex index %d out of range", f, a);
             return -1;
         }
         double dist = v3_dot(F->n, p->v[a]) - F->d;
         if (fabs(dist) > tol) {
-            set_err(err, errlen, "face %d: vertex %d is %.3g off the plane", f, a, dist);
+            errmsg_set(err, errlen, "face %d: vertex %d is %.3g off the plane", f, a, dist);
             return -1;
         }
         vec3 turn = v3_cross(v3_sub(p->v[b], p->v[a]), v3_sub(p->v[c], p->v[b]));
         if (v3_dot(turn, F->n) < -tol * v3_dist(p->v[c], p->v[a])) {
-            set_err(err, errlen, "face %d: corner at vertex %d is not convex ccw", f, b);
+            errmsg_set(err, errlen, "face %d: corner at vertex %d is not convex ccw", f, b);
             return -1;
         }
         int e = p->face_edge[F->first + k], t, h;
         if (e < 0 || e >= p->ne || edge_walked_by(&p->e[e], f, &t, &h) < 0 || t != a ||
             h != b) {
-            set_err(err, errlen, "face %d: edge %d does not run %d -> %d with the face on "
+            errmsg_set(err, errlen, "face %d: edge %d does not run %d -> %d with the face on "
                     "its left", f, e, a, b);
             return -1;
         }
     }
     vec3 area = polygon_area2(p->v, fv, F->count, NULL);
     if (!(v3_dot(area, F->n) > 0)) {
-        set_err(err, errlen, "face %d: vertices are clockwise seen from outside", f);
+        errmsg_set(err, errlen, "face %d: vertices are clockwise seen from outside", f);
         return -1;
     }
     return 0;
@@ -946,7 +938,7 @@ static int check_edge(const poly *p, int e, char *err, size_t errlen)
     if (E->v[0] < 0 || E->v[0] >= p->nv || E->v[1] < 0 || E->v[1] >= p->nv ||
         E->v[0] == E->v[1] || E->f[0] < 0 || E->f[0] >= p->nf || E->f[1] < 0 ||
         E->f[1] >= p->nf || E->f[0] == E->f[1]) {
-        set_err(err, errlen, "edge %d: bad indices", e);
+        errmsg_set(err, errlen, "edge %d: bad indices", e);
         return -1;
     }
     for (int s = 0; s < 2; s++) {
@@ -954,7 +946,7 @@ static int check_edge(const poly *p, int e, char *err, size_t errlen)
         int seen = 0;
         for (int k = 0; k < F->count; k++) seen += p->face_edge[F->first + k] == e;
         if (seen != 1) {
-            set_err(err, errlen, "edge %d: listed %d times by face %d", e, seen, E->f[s]);
+            errmsg_set(err, errlen, "edge %d: listed %d times by face %d", e, seen, E->f[s]);
             return -1;
         }
     }
@@ -965,19 +957,19 @@ static int check_edge(const poly *p, int e, char *err, size_t errlen)
 static int check_vertices(const poly *p, char *err, size_t errlen)
 {
     if (p->vert_first[0] != 0 || p->vert_first[p->nv] != 2 * p->ne) {
-        set_err(err, errlen, "vert_first does not span 2 E entries");
+        errmsg_set(err, errlen, "vert_first does not span 2 E entries");
         return -1;
     }
     for (int v = 0; v < p->nv; v++) {
         int deg = p->vert_first[v + 1] - p->vert_first[v];
         if (deg < 3) {
-            set_err(err, errlen, "vertex %d: only %d edges", v, deg);
+            errmsg_set(err, errlen, "vertex %d: only %d edges", v, deg);
             return -1;
         }
         for (int j = p->vert_first[v]; j < p->vert_first[v + 1]; j++) {
             int e = p->vert_edge[j];
             if (e < 0 || e >= p->ne || (p->e[e].v[0] != v && p->e[e].v[1] != v)) {
-                set_err(err, errlen, "vertex %d: lists edge %d not at it", v, e);
+                errmsg_set(err, errlen, "vertex %d: lists edge %d not at it", v, e);
                 return -1;
             }
         }
@@ -992,7 +984,7 @@ static int check_convex(const poly *p, double tol, char *err, size_t errlen)
         for (int v = 0; v < p->nv; v++) {
             double dist = v3_dot(p->f[f].n, p->v[v]) - p->f[f].d;
             if (dist > tol) {
-                set_err(err, errlen, "vertex %d is %.3g outside face %d", v, dist, f);
+                errmsg_set(err, errlen, "vertex %d is %.3g outside face %d", v, dist, f);
                 return -1;
             }
         }

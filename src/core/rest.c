@@ -8,14 +8,14 @@
 #include "contact.h"
 #include "impulse.h"
 #include "pairs.h"
-#include "schedule.h"
+#include "rows.h"
 #include "step.h"
 #include "tolerance.h"
 #include "world.h"
 
 /* ---- who presses on whom ---- */
 
-/* Calls visit for every lasting contact of object i: the pair and the other. */
+/* Walks the lasting contacts of object i: pr the pair, oth the other object. */
 #define FOR_TOUCHING(w, i, pr, oth)                                                        \
     FOR_PAIRS_OF(w, i, link_, pr)                                                         \
         for (int oth = link_->other; pr && pr->touching; pr = NULL)
@@ -24,7 +24,7 @@
  * qualify (dynamic; general when general_only). */
 static int reach(world *w, const int *seeds, int n, int *out, bool general_only)
 {
-    bool *mark = w->step.mark;
+    bool *mark = w->answer.mark;
     int m = 0;
     for (int k = 0; k < n; k++) {
         if (mark[seeds[k]]) continue;
@@ -79,30 +79,30 @@ static bool try_slide(world *w, int mi, int si, pair *p)
 {
     body *m = w->bodies[mi];
     const body *s = w->bodies[si];
-    double scale = 1 + m->shape.r_out + s->shape.r_out;
+    double size = 1 + tol_size(m, s);
     closest_result r = mi == p->a ? pair_query(w, p, m, s) : pair_query(w, p, s, m);
     if (r.status == CLOSEST_INVALID) return false;
     if (mi != p->a) closest_mirror(&r);
     double e = d_min(m->elasticity, s->elasticity);
-    double deep = e < 1 ? REST_LEVEL_DEPTH * scale : SIM_CONTACT_TOL * scale;
-    if (r.distance > SIM_CONTACT_TOL * scale || r.distance < -deep) return false;
+    double thick = SIM_CONTACT_TOL * size, deep = e < 1 ? REST_LEVEL_DEPTH * size : thick;
+    if (r.distance > thick || r.distance < -deep) return false;
     int face;
-    if (!contact_holds(m, s, &r, SIM_CONTACT_TOL * scale, &face)) {
+    if (!contact_holds(m, s, &r, thick, &face)) {
         return false;
     }
     vec3 n = v3_norm(q_rotate(s->q, s->shape.hull->f[face].n));
     /* pressed onto the face, moving along it, turning about its normal only */
-    if (!(v3_dot(world_accel(w), n) < -SIM_ACCEL_ROUND * scale)) return false;
+    if (!(v3_dot(world_accel(w), n) < -tol_accel(m, s))) return false;
     /* a lossy contact ends a rocking too slow to see as a rebound would (impulse's
      * SIM_BOUNCE_SPEED): it lands flat */
-    double tol = e < 1 ? SIM_BOUNCE_SPEED : 1e3 * SIM_SPEED_ROUND * scale;
+    double tol = e < 1 ? SIM_BOUNCE_SPEED : 1e3 * tol_speed(m, s);
     vec3 w_off = v3_mad(m->w, n, -v3_dot(m->w, n));
     if (fabs(v3_dot(m->v, n)) > tol || v3_len(w_off) * m->shape.r_out > tol) {
         return false;
     }
     /* flat on the face, so that a turn about its normal lifts no corner and sinks
      * none */
-    double hover = SIM_HOVER * scale;
+    double hover = tol_hover(m, s);
     m->x = v3_mad(m->x, n, hover - r.distance);
     contact_level(m, s, face, REST_LEVEL_TILT, hover);
     m->mode = MODE_SLIDE;
@@ -117,7 +117,7 @@ static bool try_slide(world *w, int mi, int si, pair *p)
 
 void rest_classify(world *w, const int *list, int n)
 {
-    int *work = w->step.list, nw = 0;
+    int *work = w->answer.classify, nw = 0;
     for (int k = 0; k < n; k++) {
         int i = list[k];
         body *b = w->bodies[i];
@@ -152,15 +152,49 @@ void rest_classify(world *w, const int *list, int n)
     }
 }
 
-/* The first tau > 0 at which g0 + g1 tau + g2 tau^2 (g0 > 0) turns negative, or
+/* A slide goes on across a seam, onto a face of another static object, when the
+ * two faces are coplanar within this angle (rad) and this offset (m); a centre of
+ * mass on the seam that is short of the new face by no more than REST_SEAM_GAP
+ * and moves onto it is over it. */
+#define REST_SEAM_ANGLE 1e-9
+#define REST_SEAM_GAP 1e-9
+
+/* A point's height inside one edge of a face, in the face's plane, as it moves:
+ * g0 + g1 tau + g2 tau^2 at tau from now. */
+typedef struct {
+    double g0, g1, g2;
+} edge_gap;
+
+/* The height of point c inside edge k of face F of static s (n the face's normal),
+ * for a point moving at v with acceleration a.  (Inlined: a slide's exit is asked
+ * for at every internal step.) */
+static inline __attribute__((always_inline)) edge_gap gap_to_edge(const body *s, const poly_face *F,
+                                                                  int k, vec3 n, vec3 c, vec3 v,
+                                                                  vec3 a)
+{
+    const poly *h = s->shape.hull;
+    vec3 p0 = v3_add(s->x, q_rotate(s->q, h->v[h->face_vert[F->first + k]]));
+    vec3 p1 = v3_add(s->x, q_rotate(s->q, h->v[h->face_vert[F->first + (k + 1) % F->count]]));
+    vec3 in = v3_norm(v3_cross(n, v3_sub(p1, p0))); /* into the face, across this edge */
+    return (edge_gap){v3_dot(in, v3_sub(c, p0)), v3_dot(in, v), 0.5 * v3_dot(in, a)};
+}
+
+/* True when a point at g is past its edge: outside it, and not coming onto the
+ * face across it from within REST_SEAM_GAP (a seam's other side). */
+static bool past_edge(edge_gap g)
+{
+    if (g.g0 > 0) return false;
+    bool entering = g.g1 > 0 || (g.g1 == 0 && g.g2 > 0);
+    return !(entering && g.g0 >= -REST_SEAM_GAP);
+}
+
+/* The first tau > 0 at which g0 + g1 tau + g2 tau^2 (g0 >= 0) turns negative, or
  * HUGE_VAL. */
 static double first_below(double g0, double g1, double g2)
 {
     if (g2 == 0) return g1 < 0 ? -g0 / g1 : HUGE_VAL;
-    double disc = g1 * g1 - 4 * g2 * g0;
-    if (disc < 0) return HUGE_VAL;
-    double q = -0.5 * (g1 + copysign(sqrt(disc), g1));
-    double r1 = q / g2, r2 = q != 0 ? g0 / q : HUGE_VAL, best = HUGE_VAL;
+    double r1, r2, best = HUGE_VAL;
+    if (!quad_roots(g2, g1, g0, &r1, &r2)) return HUGE_VAL;
     if (r1 > 0) best = r1;
     if (r2 > 0 && r2 < best) best = r2;
     return best;
@@ -181,14 +215,57 @@ double rest_slide_exit(const world *w, int i, double t)
     const poly_face *F = &h->f[face];
     double best = HUGE_VAL;
     for (int k = 0; k < F->count; k++) {
-        vec3 p0 = v3_add(s->x, q_rotate(s->q, h->v[h->face_vert[F->first + k]]));
-        vec3 p1 = v3_add(s->x, q_rotate(s->q, h->v[h->face_vert[F->first + (k + 1) % F->count]]));
-        vec3 in = v3_norm(v3_cross(n, v3_sub(p1, p0))); /* into the face, across this edge */
-        double g0 = v3_dot(in, v3_sub(c, p0));
-        if (g0 <= 0) return t; /* over the edge already */
-        best = d_min(best, first_below(g0, v3_dot(in, v), 0.5 * v3_dot(in, f->a)));
+        edge_gap g = gap_to_edge(s, F, k, n, c, v, f->a);
+        if (past_edge(g)) return t; /* over the edge already */
+        best = d_min(best, first_below(d_max(g.g0, 0), g.g1, g.g2));
     }
     return best == HUGE_VAL ? best : t + best;
+}
+
+bool rest_slide_on(world *w, int i)
+{
+    body *m = w->bodies[i];
+    int from = m->slide_on;
+    const body *s = w->bodies[from];
+    const poly *h = s->shape.hull;
+    if (!h || m->slide_face < 0 || m->slide_face >= h->nf) return false;
+    vec3 n = m->slide_n, c = body_com(m), a = w->step.fl[i].a;
+    vec3 on = v3_add(s->x, q_rotate(s->q, h->v[h->face_vert[h->f[m->slide_face].first]]));
+    FOR_PAIRS_OF(w, i, link, p) {
+        const body *o = w->bodies[link->other];
+        const poly *ho = o->shape.hull;
+        if (link->other == from || !body_is_static(o) || !ho || o->sp.kind == SHAPE_SPHERE) continue;
+        /* its face that way: coplanar with this one */
+        int face = contact_facing(o, n);
+        const poly_face *F = &ho->f[face];
+        vec3 n2 = v3_norm(q_rotate(o->q, F->n));
+        vec3 on2 = v3_add(o->x, q_rotate(o->q, ho->v[ho->face_vert[F->first]]));
+        if (!(v3_dot(n2, n) > 0) || v3_len(v3_cross(n2, n)) > REST_SEAM_ANGLE ||
+            fabs(v3_dot(v3_sub(on2, on), n)) > REST_SEAM_GAP)
+            continue;
+        /* the centre of mass over it (or coming onto it), pressed onto it */
+        bool over = true;
+        for (int k = 0; k < F->count && over; k++) over = !past_edge(gap_to_edge(o, F, k, n2, c, m->v, a));
+        if (!over || !(v3_dot(world_accel(w), n2) < -tol_accel(m, o))) continue;
+        /* it slides on that face from here, the hover gap above it */
+        long old = pair_index(w, i, from);
+        if (old >= 0) w->pairs.p[old].touching = false;
+        p->touching = true;
+        closest_result r = pair_query(w, p, w->bodies[p->a], w->bodies[p->b]);
+        p->hit = p->cache;
+        if (r.status != CLOSEST_INVALID) m->x = v3_mad(m->x, n2, tol_hover(m, o) - r.distance);
+        m->slide_on = link->other;
+        m->slide_face = face;
+        if (n2.x != n.x || n2.y != n.y || n2.z != n.z) {
+            /* (along it, turning about its normal only) */
+            m->slide_n = n2;
+            m->v = v3_mad(m->v, n2, -v3_dot(m->v, n2));
+            body_set_angular_vel(m, v3_scale(n2, v3_dot(m->w, n2)));
+            m->rot_given = false;
+        }
+        return true;
+    }
+    return false;
 }
 
 /* ---- balance and rest ---- */
@@ -197,14 +274,14 @@ bool rest_balanced(world *w, const int *list, int n)
 {
     /* each object's copy moves as the force alone would make it in a second, and
      * the supports push: what is left is its acceleration */
-    body **bs = w->step.now;
-    bool *mobile = w->step.mark;
+    body **bs = w->answer.now;
+    bool *mobile = w->answer.mark;
     impulse_row rows[SIM_CLUSTER_ROWS] = {{0}};
-    int nr = 0;
+    row_list rl = {rows, NULL, NULL, 0, SIM_CLUSTER_ROWS, false};
     bool ok = true;
     for (int k = 0; k < n; k++) {
         int i = list[k];
-        body *c = &w->step.scratch[STEP_COPIES * list[k] + 3];
+        body *c = &w->answer.balanced[i];
         *c = *w->bodies[i];
         c->v = world_accel(w);
         c->L = c->w = v3(0, 0, 0);
@@ -217,26 +294,14 @@ bool rest_balanced(world *w, const int *list, int n)
             if (mobile[o] && o < i) continue; /* each pair once */
             const body *A = w->bodies[p->a], *B = w->bodies[p->b];
             closest_result r = pair_query(w, p, A, B);
-            cpoint cp[16];
-            double scale = A->shape.r_out + B->shape.r_out;
-            int nc = contact_cpoints(A, B, &r, SIM_CONTACT_TOL * scale, cp, 16);
-            for (int c = 0; c < nc; c++) {
-                if (nr == SIM_CLUSTER_ROWS) {
-                    ok = false;
-                    break;
-                }
-                int P = cp[c].p == 0 ? p->a : p->b, Q = cp[c].p == 0 ? p->b : p->a;
-                impulse_row *row = &rows[nr++];
-                row->p = P;
-                row->q = Q;
-                row->e = 0;
-                cpoint_eval(&cp[c], w->bodies[P], w->bodies[Q], &row->n, &row->at);
-            }
+            rows_add(&rl, p, A, B, &r, tol_contact(A, B), 0, w->bodies);
+            ok = !rl.full;
         }
     }
+    int nr = rl.n;
     double lambda[SIM_CLUSTER_ROWS] = {0}, u[SIM_CLUSTER_ROWS] = {0};
     for (int k = 0; k < nr; k++) u[k] = impulse_speed(&rows[k], bs);
-    if (ok && nr > 0) ok = impulse_solve(rows, nr, bs, mobile, u, lambda, w->step.lcp) == 0;
+    if (ok && nr > 0) ok = impulse_solve(rows, nr, bs, mobile, u, lambda, w->answer.lcp) == 0;
     for (int k = 0; k < n && ok; k++) {
         const body *c = bs[list[k]];
         double scale = 1 + c->shape.r_out;
@@ -274,7 +339,7 @@ static void come_to_rest(body *b)
 
 int rest_frame_end(world *w)
 {
-    int count = 0, *list = w->step.list;
+    int count = 0, *list = w->answer.cluster;
     for (int i = 0; i < w->n; i++) {
         body *b = w->bodies[i];
         if (b->state != STATE_DYNAMIC || b->mode == MODE_FREE) continue;

@@ -10,7 +10,8 @@
  *    its normal, strictly inside the region they touch on (contact_holds); it then
  *    translates along the face under the rest of the force, turning about the
  *    normal only, until its centre of mass leaves the face (an exact event:
- *    rest_slide_exit);
+ *    rest_slide_exit), and on across a seam onto a coplanar face of another
+ *    static object (rest_slide_on);
  *  - general: anything else (tipping over an edge, pivoting on it, stacks and
  *    piles that move): its cluster (the objects pressed together with it) moves
  *    with the contact forces found as it goes (cluster.h).
@@ -29,7 +30,7 @@ typedef struct world world;
 
 /* The objects pressed together with the seeds (n of them), through lasting
  * contacts between dynamic objects (static ones end it), the seeds first: written
- * to out (room for every object), their count returned.  Uses w->step.mark. */
+ * to out (room for every object), their count returned.  Uses w->answer.mark. */
 int rest_component(world *w, const int *seeds, int n, int *out);
 
 /* The same, through the objects in MODE_GENERAL only: a cluster. */
@@ -43,6 +44,14 @@ void rest_classify(world *w, const int *list, int n);
 /* When sliding object i, flying its flight from time t, leaves the face it slides
  * on (its centre of mass passes the face's edge): an absolute time, or +inf. */
 double rest_slide_exit(const world *w, int i, double t);
+
+/* Sliding object i (its state at the instant its centre of mass leaves its face)
+ * goes on sliding onto a face of another static object that is coplanar with its
+ * own within 1e-9 rad and 1e-9 m, and that its centre of mass is over or coming
+ * onto (a seam between tiles): true when it does, its lasting contact moved to
+ * that object, its speed unchanged.  False, and nothing changed, when there is
+ * none. */
+bool rest_slide_on(world *w, int i);
 
 /* True when the supports of the n objects of list (at rest, or nearly) hold them
  * against the force: the contact forces can balance it, pushing only. */

@@ -12,15 +12,15 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "tolerance.h"
 #include "world.h"
 
-/* Relative margins for rounding: a distance is taken SCHED_ROUND of the sizes
- * involved short, and a time found is taken SCHED_EARLY of itself early, then
- * SCHED_ROUND earlier until the bound checks out. */
+/* Relative margins for rounding: a bounding gap is taken SCHED_ROUND of the
+ * pair's size (1 + S, tolerance.h) short, and a time found is taken SCHED_EARLY of
+ * itself early, then SCHED_ROUND earlier until the bound checks out.  (A distance
+ * a query found is taken tol_margin short.) */
 #define SCHED_ROUND 1e-9
 #define SCHED_EARLY 1e-12
-/* The rounding margin of a distance a query found (relative, as SCHED_ROUND). */
-#define SCHED_CA_ROUND 1e-13
 
 /* The first t in [lo, hi) at which p0 + p1 t + p2 t^2 reaches target, known to be
  * short of it at lo; HUGE_VAL when it does not. */
@@ -31,10 +31,9 @@ static double first_reach(double p0, double p1, double p2, double target, double
     if (p2 == 0) {
         if (p1 > 0) t = -q / p1;
     } else {
-        double disc = p1 * p1 - 4 * p2 * q;
-        if (disc < 0) return HUGE_VAL; /* (only when p2 < 0: it never gets there) */
-        double m = -0.5 * (p1 + copysign(sqrt(disc), p1));
-        double r1 = m / p2, r2 = m != 0 ? q / m : r1;
+        /* (no real root only when p2 < 0: it never gets there) */
+        double r1, r2;
+        if (!quad_roots(p2, p1, q, &r1, &r2)) return HUGE_VAL;
         double small = d_min(r1, r2), big = d_max(r1, r2);
         /* convex: the upward crossing is the larger root; concave: the smaller */
         t = p2 > 0 ? big : small;
@@ -79,7 +78,7 @@ double sched_ca_time(const body *a, const sched_move *ma, const body *b, const s
     }
     if (m == 0) return HUGE_VAL;
     /* (the distance is known to far better than the contact distance) */
-    double goal = d - target - SCHED_CA_ROUND * (1 + a->shape.r_out + b->shape.r_out);
+    double goal = d - target - tol_margin(a, b);
     if (goal <= 0) return 0;
     /* breakpoints: where each turn reaches its cap */
     double bp[3];
@@ -152,7 +151,7 @@ double sched_sphere_time(const body *a, const sched_move *ma, const body *b, con
     /* a box turns with its object: all of that object's R - r at once */
     if (turn_a && ma->moves) gap -= a->shape.r_out - a->shape.r_in;
     if (turn_b && mb->moves) gap -= b->shape.r_out - b->shape.r_in;
-    gap -= SCHED_ROUND * (1 + a->shape.r_out + b->shape.r_out);
+    gap -= SCHED_ROUND * (1 + tol_size(a, b)) + tol_round(a, b);
     if (gap <= 0) return 0;
     vec3 va = ma->moves ? ma->v : v3(0, 0, 0), vb = mb->moves ? mb->v : v3(0, 0, 0);
     vec3 aa = ma->moves ? ma->a : v3(0, 0, 0), ab = mb->moves ? mb->a : v3(0, 0, 0);

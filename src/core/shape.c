@@ -19,24 +19,15 @@
 #include "shape.h"
 
 #include "closest.h"
+#include "errmsg.h"
 #include "limits.h"
 
 #include <limits.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 static const double PI = 3.14159265358979323846;
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    if (!err || errlen == 0) return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
 
 /* A hull's failure (poly.h) for a message that names the shape: without the
  * "convex hull: " it starts with. */
@@ -281,7 +272,7 @@ static int build_sphere(shape *s, char *err, size_t errlen)
     ball.a1 = ball.a2 = ball.a3 = r;
     ball.exp1 = ball.exp2 = 1;
     if (sq_count(&ball) < 0 || sq_mesh(&ball, &s->draw) < 0) {
-        set_err(err, errlen, "sphere: resolution %d x %d is too large", s->p.ures,
+        errmsg_set(err, errlen, "sphere: resolution %d x %d is too large", s->p.ures,
                 s->p.vres);
         return -1;
     }
@@ -304,16 +295,16 @@ static int build_box(shape *s, vec3 h, const char *what, char *err, size_t errle
     else
         s->hull = poly_box(h, why, sizeof why); /* (its hull is known: no qhull run) */
     if (!s->hull && strstr(why, "out of memory")) {
-        set_err(err, errlen, "cube: out of memory");
+        errmsg_set(err, errlen, "%s: out of memory", what);
         return -1;
     }
     if (!s->hull) {
-        set_err(err, errlen, "%s (%.6g, %.6g, %.6g) cannot be built: %s", what, h.x, h.y, h.z,
+        errmsg_set(err, errlen, "%s (%.6g, %.6g, %.6g) cannot be built: %s", what, h.x, h.y, h.z,
                 strip_hull(why));
         return -1;
     }
     if (cube_mesh(h, &s->draw) < 0) {
-        set_err(err, errlen, "%s: out of memory", what);
+        errmsg_set(err, errlen, "%s: out of memory", what);
         return -1;
     }
     s->mass = box_mass(h);
@@ -374,14 +365,14 @@ static int build_polyhedron(shape *s, char *err, size_t errlen)
     if (!src) return build_box(s, k, "polyhedron: the box of scale", err, errlen);
     vec3 *pts = malloc((size_t)(src->np > 0 ? src->np : 1) * sizeof *pts);
     if (!pts) {
-        set_err(err, errlen, "polyhedron: out of memory for %d points", src->np);
+        errmsg_set(err, errlen, "polyhedron: out of memory for %d points", src->np);
         return -1;
     }
     for (int i = 0; i < src->np; i++) {
         vec3 p = src->pts[i], q = v3(p.x * k.x, p.y * k.y, p.z * k.z);
         if (!(fabs(q.x) <= LIM_LENGTH_MAX && fabs(q.y) <= LIM_LENGTH_MAX &&
               fabs(q.z) <= LIM_LENGTH_MAX)) {
-            set_err(err, errlen,
+            errmsg_set(err, errlen,
                     "polyhedron: scaled by (%.6g, %.6g, %.6g), the point (%.6g, %.6g, %.6g) lies "
                     "beyond %g m of its origin",
                     k.x, k.y, k.z, q.x, q.y, q.z, LIM_LENGTH_MAX);
@@ -396,13 +387,13 @@ static int build_polyhedron(shape *s, char *err, size_t errlen)
     s->hull = poly_hull_merge(pts, src->np, 0, why, sizeof why);
     free(pts);
     if (!s->hull) {
-        set_err(err, errlen, "polyhedron: its %d points make no solid: %s", src->np,
+        errmsg_set(err, errlen, "polyhedron: its %d points make no solid: %s", src->np,
                 strip_hull(why));
         return -1;
     }
     int rc = src->draw.nt > 0 ? scaled_mesh(s, &src->draw, k) : hull_mesh(s->hull, &s->draw);
     if (rc < 0) {
-        set_err(err, errlen, "polyhedron: out of memory for its mesh");
+        errmsg_set(err, errlen, "polyhedron: out of memory for its mesh");
         return -1;
     }
     s->mass = poly_mass(s->hull);
@@ -438,23 +429,23 @@ long shape_off_hull(const shape *s)
 static int build_superquadric(shape *s, char *err, size_t errlen)
 {
     if (sq_count(&s->p) < 0) {
-        set_err(err, errlen, "superquadric: resolution %d x %d is too large", s->p.ures,
+        errmsg_set(err, errlen, "superquadric: resolution %d x %d is too large", s->p.ures,
                 s->p.vres);
         return -1;
     }
     if (sq_mesh(&s->p, &s->draw) < 0) {
-        set_err(err, errlen, "superquadric: out of memory at resolution %d x %d",
+        errmsg_set(err, errlen, "superquadric: out of memory at resolution %d x %d",
                 s->p.ures, s->p.vres);
         return -1;
     }
     char why[200];
     s->hull = poly_hull(s->draw.pos, s->draw.nv, why, sizeof why);
     if (!s->hull && strstr(why, "out of memory")) { /* not the shape's fault */
-        set_err(err, errlen, "superquadric: out of memory");
+        errmsg_set(err, errlen, "superquadric: out of memory");
         return -1;
     }
     if (!s->hull) {
-        set_err(err, errlen,
+        errmsg_set(err, errlen,
                 "superquadric: a1 %.6g, a2 %.6g, a3 %.6g with exp1 %.6g, exp2 %.6g cannot be "
                 "built: %s",
                 s->p.a1, s->p.a2, s->p.a3, s->p.exp1, s->p.exp2, strip_hull(why));
@@ -482,7 +473,7 @@ int shape_build(shape *s, const shape_params *p, char *err, size_t errlen)
     case SHAPE_SUPERQUADRIC: rc = build_superquadric(s, err, errlen); break;
     case SHAPE_POLYHEDRON: rc = build_polyhedron(s, err, errlen); break;
     default:
-        set_err(err, errlen, "unknown shape kind %d", (int)params.kind);
+        errmsg_set(err, errlen, "unknown shape kind %d", (int)params.kind);
         rc = -1;
     }
     if (rc == 0) { /* one piece, and the bounding box, in body axes */
@@ -499,7 +490,7 @@ int shape_build(shape *s, const shape_params *p, char *err, size_t errlen)
     }
     /* the Voronoi regions of the hull's features, for closest-feature tracking */
     if (rc == 0 && s->hull && !(s->feat = closest_hull_new(s->hull))) {
-        set_err(err, errlen, "out of memory for the closest-feature data");
+        errmsg_set(err, errlen, "out of memory for the closest-feature data");
         rc = -1;
     }
     if (rc < 0) shape_free(s);

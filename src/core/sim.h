@@ -20,7 +20,10 @@
 
 /* Advances the world by one frame.  Returns 0, or -1 with a message in err when the
  * settings ask for more than SIM_MAX_SUBFRAMES internal steps (nothing moves then).
- * With time_step 0 nothing moves and the frame still counts. */
+ * With time_step 0 nothing moves and the frame still counts.  A collision whose
+ * result max_linear or max_angular cut is counted in st.speed_cuts, the world's
+ * first described in st.first_cut (its object's index valid until the objects
+ * change): the caller may say so, since each loses energy. */
 int sim_frame(world *w, char *err, size_t errlen);
 
 /* A caller's say within a frame: the hand, whose trigger and tracker rows act at
@@ -39,6 +42,10 @@ typedef struct {
     void (*at)(void *ctx, world *w);
     void *ctx;
 } sim_hook;
+
+/* The simulated time at which the next frame will end (world.time after it), to
+ * the bit, as long as time_step does not change before it. */
+double sim_frame_end(const world *w);
 
 /* sim_frame with hook (NULL: none, which is sim_frame). */
 int sim_frame_hooked(world *w, const sim_hook *hook, char *err, size_t errlen);

@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "tolerance.h"
+#include "grow.h"
 #include "world.h"
 
 void step_init(step_state *s)
@@ -24,42 +24,25 @@ void step_free(step_state *s)
 {
     free(s->fl);
     free(s->event);
-    free(s->scratch);
+    free(s->flown);
     free(s->flown_id);
     free(s->flown_t);
-    free(s->now);
-    free(s->mark);
-    free(s->list);
     free(s->due);
     free(s->due_next);
-    free(s->lcp);
     step_init(s);
-}
-
-/* The array p resized to n elements of size elem; p itself, and ok set false, when
- * that fails. */
-static void *resized(void *p, size_t elem, long n, bool *ok)
-{
-    void *q = realloc(p, (size_t)(n > 0 ? n : 1) * elem);
-    if (!q) *ok = false;
-    return q ? q : p;
 }
 
 int step_prepare(world *w, bool changed)
 {
     step_state *s = &w->step;
     bool ok = true;
-    if (!s->lcp && !(s->lcp = malloc(lcp_work_size(SIM_CLUSTER_ROWS)))) return -1;
     if (w->n > s->cap) {
         changed = true;
-        s->fl = resized(s->fl, sizeof *s->fl, w->n, &ok);
-        s->event = resized(s->event, sizeof *s->event, w->n, &ok);
-        s->scratch = resized(s->scratch, STEP_COPIES * sizeof *s->scratch, w->n, &ok);
-        s->flown_id = resized(s->flown_id, STEP_FLOWN_COPIES * sizeof *s->flown_id, w->n, &ok);
-        s->flown_t = resized(s->flown_t, STEP_FLOWN_COPIES * sizeof *s->flown_t, w->n, &ok);
-        s->now = resized(s->now, sizeof *s->now, w->n, &ok);
-        s->mark = resized(s->mark, sizeof *s->mark, w->n, &ok);
-        s->list = resized(s->list, sizeof *s->list, w->n, &ok);
+        s->fl = grow_resized(s->fl, sizeof *s->fl, w->n, &ok);
+        s->event = grow_resized(s->event, sizeof *s->event, w->n, &ok);
+        s->flown = grow_resized(s->flown, STEP_FLOWN_COPIES * sizeof *s->flown, w->n, &ok);
+        s->flown_id = grow_resized(s->flown_id, STEP_FLOWN_COPIES * sizeof *s->flown_id, w->n, &ok);
+        s->flown_t = grow_resized(s->flown_t, STEP_FLOWN_COPIES * sizeof *s->flown_t, w->n, &ok);
         if (!ok) return -1;
         s->cap = w->n;
     }
@@ -73,8 +56,8 @@ int step_reserve_due(world *w, long due)
     bool ok = true;
     if (due > s->capdue) {
         due += due / 2;
-        long *d = resized(s->due, sizeof *d, due, &ok);
-        double *dn = resized(s->due_next, sizeof *dn, due, &ok);
+        long *d = grow_resized(s->due, sizeof *d, due, &ok);
+        double *dn = grow_resized(s->due_next, sizeof *dn, due, &ok);
         s->due = d;
         s->due_next = dn;
         if (!ok) return -1;
@@ -87,16 +70,16 @@ int step_reserve_due(world *w, long due)
     return 0;
 }
 
-/* Copies the objects into the scratch when changed (step_prepare). */
+/* Copies the objects into step_flown's copies when changed (step_prepare). */
 static int step_copy(world *w, bool changed)
 {
     step_state *s = &w->step;
     if (!changed) return 0;
     for (int i = 0; i < w->n; i++) {
-        for (int k = 0; k < STEP_COPIES; k++) s->scratch[STEP_COPIES * i + k] = *w->bodies[i];
-        for (int k = 0; k < STEP_FLOWN_COPIES; k++) s->flown_id[STEP_FLOWN_COPIES * i + k] = -1;
-        s->now[i] = w->bodies[i];
-        s->mark[i] = false;
+        for (int k = 0; k < STEP_FLOWN_COPIES; k++) {
+            s->flown[STEP_FLOWN_COPIES * i + k] = *w->bodies[i];
+            s->flown_id[STEP_FLOWN_COPIES * i + k] = -1;
+        }
         s->event[i] = HUGE_VAL;
         flight_start(&s->fl[i], w->bodies[i], FLIGHT_STILL, w->time, v3(0, 0, 0), v3(0, 0, 0),
                      s->flight_count++);
@@ -119,8 +102,8 @@ const body *step_flown(const world *w, int i, double t, int k)
     assert(k >= 0 && k < STEP_FLOWN_COPIES);
     if (!step_moves(w, i)) return w->bodies[i];
     const step_state *s = &w->step;
-    body *b = &s->scratch[STEP_COPIES * i + k];
     long m = STEP_FLOWN_COPIES * i + k;
+    body *b = &s->flown[m];
     if (s->flown_id[m] == s->fl[i].id && s->flown_t[m] == t) return b;
     step_fly(w, i, t, b);
     s->flown_id[m] = s->fl[i].id;

@@ -1,5 +1,5 @@
 /* step.h: the state of the simulation between its events: each object's flight,
- * the times of the objects' own events, and the scratch the events work on.
+ * the times of the objects' own events, and the copies the searches fly.
  *
  * Every moving object flies from its flight's start (flight.h): the start of the
  * internal step, or the last event that changed it.  Its state at any time of the
@@ -16,29 +16,23 @@
 
 #include "body.h"
 #include "flight.h"
-#include "lcp.h"
 #include "schedule.h"
 
 typedef struct world world;
 
-/* Copies of each object the events work on: body i's are scratch[STEP_COPIES i]
- * to scratch[STEP_COPIES i + STEP_COPIES - 1].  Copies 0 and 1 are step_flown's
- * (which remembers what it flew them to); 2 and 3 are the clusters' and rest's. */
-#define STEP_COPIES 4
+/* step_flown's copies of each object (it remembers what it flew each to): body
+ * i's are flown[STEP_FLOWN_COPIES i + k], k = 0, 1.  (The copies that answering
+ * works on are its own: answer.h.) */
 #define STEP_FLOWN_COPIES 2
 
 typedef struct {
     flight *fl;           /* each object's flight (a static object's: still) */
     long flight_count;
     double *event;        /* each object's own next event, or +inf */
-    body *scratch;        /* STEP_COPIES copies of each object */
-    long *flown_id;       /* step_flown's copies: the flight each was flown on, */
+    body *flown;          /* step_flown's copies of each object, */
+    long *flown_id;       /*   the flight each was flown on, */
     double *flown_t;      /*   and to when (-1: none) */
-    body **now;           /* each object's state as the events need it (bodies) */
-    bool *mark;           /* per object: scratch marks (components, mobile) */
-    int *list;            /* per object: a scratch list of objects */
     int cap;              /* objects the arrays above have room for */
-    lcp_work *lcp;        /* room for the largest contact problem (lcp.h) */
     double t_end;         /* the end of the internal step under way */
     long *due;            /* the entries checked in a step, and their new times */
     double *due_next;

@@ -16,11 +16,6 @@
  * run (the objects pass within the contact distance without meeting). */
 #define TOI_MAX_QUERIES 100000
 
-double toi_touch(const body *a, const body *b)
-{
-    return d_max(SIM_TOUCH, SIM_ROUND_REL * (a->shape.r_out + b->shape.r_out));
-}
-
 /* Objects of at most this many vertices are bounded vertex by vertex as well
  * (envelope_time). */
 #define TOI_ENVELOPE_VERTICES 1024
@@ -119,7 +114,7 @@ static double envelope_time(const body *a, const sched_move *ma, const body *b,
     int na = lines_of(a, ma, n, 1, p, la, &qa), nb = lines_of(b, mb, n, -1, p, lb, &qb);
     if (na == 0 || nb == 0) return -1;
     int ka = envelope(la, na, T, pa), kb = envelope(lb, nb, T, pb);
-    double q = qa + qb, margin = SIM_ROUND_REL * (1 + a->shape.r_out + b->shape.r_out);
+    double q = qa + qb, margin = tol_margin(a, b);
     int i = 0, j = 0;
     for (double t0 = 0; t0 < T;) {
         double t1 = T;
@@ -133,10 +128,8 @@ static double envelope_time(const body *a, const sched_move *ma, const body *b,
         if (q == 0) {
             if (c1 < 0) r = -c0 / c1;
         } else {
-            double disc = c1 * c1 - 4 * q * c0;
-            if (disc >= 0) {
-                double m = -0.5 * (c1 + copysign(sqrt(disc), c1));
-                double r1 = m / q, r2 = m != 0 ? c0 / m : r1;
+            double r1, r2;
+            if (quad_roots(q, c1, c0, &r1, &r2)) {
                 if (r1 >= t0 && r1 < r) r = r1;
                 if (r2 >= t0 && r2 < r) r = r2;
             }
@@ -161,11 +154,11 @@ static double envelope_time(const body *a, const sched_move *ma, const body *b,
 static int meeting(const body *a, const sched_move *ma, const body *b, const sched_move *mb,
                    const closest_result *r, double tol)
 {
-    cpoint cp[16];
-    int n = contact_cpoints(a, b, r, tol, cp, 16);
+    cpoint cp[CONTACT_MAX_POINTS];
+    int n = contact_cpoints(a, b, r, tol, cp, CONTACT_MAX_POINTS);
     flight_motion fa = flight_motion_of(a, ma->moves, ma->a, ma->held ? &ma->c : NULL);
     flight_motion fb = flight_motion_of(b, mb->moves, mb->a, mb->held ? &mb->c : NULL);
-    double scale = 1 + a->shape.r_out + b->shape.r_out;
+    double su = tol_speed(a, b), sc = tol_accel(a, b);
     for (int k = 0; k < n; k++) {
         const body *P = cp[k].p == 0 ? a : b, *Q = cp[k].p == 0 ? b : a;
         const flight_motion *fp = cp[k].p == 0 ? &fa : &fb, *fq = cp[k].p == 0 ? &fb : &fa;
@@ -173,7 +166,7 @@ static int meeting(const body *a, const sched_move *ma, const body *b, const sch
         cpoint_eval(&cp[k], P, Q, &nrm, &at);
         double u = v3_dot(v3_sub(flight_point_velocity(fp, at), flight_point_velocity(fq, at)), nrm);
         double c = v3_dot(v3_sub(flight_point_accel(fp, at), flight_point_accel(fq, at)), nrm);
-        if (u < -SIM_SPEED_ROUND * scale || (u <= SIM_SPEED_ROUND * scale && c < -SIM_ACCEL_ROUND * scale))
+        if (u < -su || (u <= su && c < -sc))
             return 1;
     }
     return 0;
@@ -201,7 +194,7 @@ toi_output toi_find(world *w, const toi_input *in)
     closest_cache cache = in->cache;
     double t = in->lo;
     const body *A0 = w->bodies[in->a], *B0 = w->bodies[in->b];
-    double touch = toi_touch(A0, B0);
+    double touch = tol_touch(A0, B0);
     double depth0 = 0; /* how deep in the pair was when first found in (by rounding) */
     while (out.queries < TOI_MAX_QUERIES) {
         const body *a = step_flown(w, in->a, t, 0), *b = step_flown(w, in->b, t, 0);
@@ -236,7 +229,7 @@ toi_output toi_find(world *w, const toi_input *in)
              * distance at their relative speed */
             double s = v3_len(v3_sub(ma.moves ? ma.v : v3(0, 0, 0), mb.moves ? mb.v : v3(0, 0, 0)));
             double depth = d_max(touch, d_max(inside, 0.1 * depth0));
-            double turn = (ma.rate + mb.rate) * (A0->shape.r_out + B0->shape.r_out);
+            double turn = ma.rate * A0->shape.r_out + mb.rate * B0->shape.r_out;
             if (ma.held || mb.held) turn = ma.rate * ma.reach + mb.rate * mb.reach;
             dt = depth / d_max(s + turn, 1e-3);
         }

@@ -41,8 +41,4 @@ typedef struct {
 
 toi_output toi_find(world *w, const toi_input *in);
 
-/* The contact distance between a and b: SIM_TOUCH, or more for objects so large
- * that their distances round to more than it. */
-double toi_touch(const body *a, const body *b);
-
 #endif

@@ -28,6 +28,20 @@ typedef struct {
 static inline double d_min(double a, double b) { return b < a ? b : a; }
 static inline double d_max(double a, double b) { return b > a ? b : a; }
 
+/* The roots of a t^2 + b t + c (a != 0), found without cancellation (Numerical
+ * Recipes, 5.6): with q = -(b + sign(b) sqrt(b^2 - 4 a c)) / 2, they are q / a and
+ * c / q (q / a again when q is 0).  False, and nothing written, when they are not
+ * real. */
+static inline bool quad_roots(double a, double b, double c, double *r1, double *r2)
+{
+    double disc = b * b - 4 * a * c;
+    if (disc < 0) return false;
+    double q = -0.5 * (b + copysign(sqrt(disc), b));
+    *r1 = q / a;
+    *r2 = q != 0 ? c / q : *r1;
+    return true;
+}
+
 static inline vec3 v3(double x, double y, double z) { return (vec3){x, y, z}; }
 static inline vec3 v3_add(vec3 a, vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
 static inline vec3 v3_sub(vec3 a, vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }

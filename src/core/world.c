@@ -9,7 +9,6 @@
 #include <assert.h>
 
 #include <math.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -35,6 +34,7 @@ void world_init(world *w)
     broad_init(&w->broad);
     sched_init(&w->sched);
     step_init(&w->step);
+    answer_init(&w->answer);
 }
 
 void world_free(world *w)
@@ -56,6 +56,7 @@ void world_free(world *w)
     broad_free(&w->broad);
     sched_free(&w->sched);
     step_free(&w->step);
+    answer_free(&w->answer);
 }
 
 void world_event(world *w, const sim_event *e)
@@ -105,16 +106,6 @@ static int names_rebuild(world *w, int cap)
     w->ncap = ncap;
     for (int i = 0; i < w->n; i++) name_put(w, i);
     return 0;
-}
-
-void world_cut(world *w, const body *b, double linear, double angular, bool tell)
-{
-    w->st.speed_cuts++;
-    if (!tell || w->cut.pending) return;
-    w->cut.pending = true;
-    snprintf(w->cut.name, sizeof w->cut.name, "%s", b->name);
-    w->cut.linear = linear;
-    w->cut.angular = angular;
 }
 
 int world_find(const world *w, const char *name)

@@ -7,7 +7,8 @@
  * collision heap).  sim_settings_defaults gives every start-up value in one place.
  * It also holds the state the simulation keeps between frames, each part owned
  * by its own module, which initialises and frees it: the pairs (pairs.h), the
- * schedule (schedule.h) and the internal step's scratch (step.h).  The world knows
+ * schedule (schedule.h), the flights of the internal step (step.h) and the
+ * scratch its events are answered in (answer.h).  The world knows
  * nothing of text, prompts, files or pixels: the shell and the views read it, and
  * read the frame's collisions from `events` (as Box2D's contact events).
  */
@@ -16,6 +17,7 @@
 
 #include <stdbool.h>
 
+#include "answer.h"
 #include "body.h"
 #include "broad.h"
 #include "force.h"
@@ -35,30 +37,40 @@ typedef struct {
     bool collision_heap;    /* the schedule (on), or every pair every step (off) */
 } sim_settings;
 
+/* A collision's result, or a throw (hold.h), that a speed limit cut (sim.h): the
+ * object, the limit, and the speed it would have had. */
+typedef struct {
+    int object;           /* its index then */
+    bool angular;         /* max_angular cut its spin (rad/s); else max_linear its
+                           * speed (m/s) */
+    double speed;         /* what it would have had */
+    double limit;         /* the limit it was cut to */
+    bool thrown;          /* a throw's, not a collision's */
+} sim_cut;
+
 /* The simulation's counters since the world was made. */
 typedef struct {
     long frames;          /* frames advanced */
     long subframes;       /* internal steps taken */
     long pair_checks;     /* pair distance queries */
     long collisions;      /* collisions answered */
-    long restarts;        /* closest-feature walks redone from scratch */
+    long restarts;        /* closest-feature walks redone from scratch (closest.h:
+                           * never expected) */
+    long unsolved;        /* contact problems with no solution (a collision's, a
+                           * cluster's kicks): the impulses are not applied; never
+                           * expected but for a held body, which stops instead */
+    long overflows;       /* internal steps cut short after SIM_MAX_EVENTS_PER_STEP
+                           * events (a guard against a fault; never expected) */
+    long speed_cuts;      /* collisions and throws whose result max_linear or
+                           * max_angular cut: each loses energy (elasticity 1 keeps
+                           * it only within the limits) */
+    sim_cut first_cut;    /* the first of them (when speed_cuts > 0) */
     long heap_pops;       /* pairs taken from the schedule to be checked */
     long events_lost;     /* collisions not reported in events (out of memory) */
     long late_pairs;      /* (heap off) contacts found of pairs the broad phase did
                            * not hold near: it was late; never expected */
-    long speed_cuts;      /* speeds max_linear or max_angular cut where a collision
-                           * or a throw set them (world_cut) */
 } sim_stats;
 
-/* The first throw the speed limits cut since the caller last took it (world_cut):
- * whom it cut, and the speeds asked, so that the caller can name the limit to
- * raise.  (Collisions are only counted: the thesis's max_angular of 4 rad/s cuts
- * spins in most of its scenes.) */
-typedef struct {
-    bool pending;         /* one was made since the caller cleared this */
-    char name[BODY_NAME_MAX];
-    double linear, angular; /* the speeds asked, m/s and rad/s (before the cut) */
-} sim_cut;
 
 /* One collision answered: at time t, bodies a and b (indices) at point p, with
  * normal n (unit, from b towards a), impulse magnitude j (N s) and closing speed
@@ -90,11 +102,11 @@ typedef struct world {
     broad_phase broad;    /* broad.h */
     schedule sched;       /* schedule.h */
     step_state step;      /* step.h */
+    answer_scratch answer; /* answer.h */
     bool sched_dirty;     /* something changed other than by the simulation: every
                            * pair is due, and the simulation copies its bodies
                            * afresh (edit.h sets it) */
     bool out_of_memory;   /* a frame ran out of memory on the way (sim_frame says so) */
-    sim_cut cut;          /* the first speed cut the caller has not yet seen */
 } world;
 
 /* The start-up values of Table A.5 (time_step 0.1, collision_dist 0.25,
@@ -126,11 +138,6 @@ long world_pairs(const world *w);
 /* Appends a collision to the frame's events; counts it in st.events_lost when
  * there is no memory for it. */
 void world_event(world *w, const sim_event *e);
-
-/* The speed limits cut body b's velocities where a collision or a throw set them:
- * counted in st.speed_cuts; a throw's (tell) is kept in cut when it is the first
- * the caller has not seen (linear and angular: the speeds asked). */
-void world_cut(world *w, const body *b, double linear, double angular, bool tell);
 
 /* The global acceleration (force.h). */
 static inline vec3 world_accel(const world *w) { return force_accel(w->set.force); }

@@ -180,7 +180,6 @@ cmd_status cmd_stats(shell *sh, const stmt *st)
     fprintf(sh->out, "internal_steps = %ld\n", w->st.subframes);
     fprintf(sh->out, "heap_pops = %ld\n", w->st.heap_pops);
     fprintf(sh->out, "restarts = %ld\n", w->st.restarts);
-    fprintf(sh->out, "speed_cuts = %ld\n", w->st.speed_cuts);
     double nf = w->st.frames > 0 ? (double)w->st.frames : 1;
     fprintf(sh->out, "pair_checks_per_frame = %.6g\n", (double)w->st.pair_checks / nf);
     fprintf(sh->out, "heap_pops_per_frame = %.6g\n", (double)w->st.heap_pops / nf);
@@ -188,6 +187,9 @@ cmd_status cmd_stats(shell *sh, const stmt *st)
     fprintf(sh->out, "render_time = %.6f\n", sh->view_st.render_time);
     fprintf(sh->out, "files_written = %ld\n", sh->view_st.frames_written);
     fprintf(sh->out, "existing_pairs = %ld\n", w->pairs.live);
+    fprintf(sh->out, "unsolved = %ld\n", w->st.unsolved);
+    fprintf(sh->out, "overflows = %ld\n", w->st.overflows);
+    fprintf(sh->out, "speed_cuts = %ld\n", w->st.speed_cuts);
     return CMD_OK;
 }
 

@@ -47,6 +47,7 @@ cmd_status cmd_restart(struct shell *sh, const stmt *st);
 cmd_status cmd_read(struct shell *sh, const stmt *st);
 cmd_status cmd_display(struct shell *sh, const stmt *st);
 cmd_status cmd_refresh(struct shell *sh, const stmt *st);
+cmd_status cmd_window(struct shell *sh, const stmt *st);
 cmd_status cmd_save(struct shell *sh, const stmt *st);
 
 cmd_status cmd_print(struct shell *sh, const stmt *st);

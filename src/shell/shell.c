@@ -22,6 +22,7 @@
 #include "view/view.h"
 #include "fmt.h"
 #include "media.h"
+#include "viewer.h"
 
 shell_settings shell_settings_defaults(void)
 {
@@ -104,6 +105,7 @@ cmd_status shell_close_outputs(shell *sh)
 
 void shell_free(shell *sh)
 {
+    viewer_free(sh);
     shell_close_outputs(sh);
     media_free(sh);
     world_free(&sh->w);
@@ -185,22 +187,6 @@ void sh_info(shell *sh, const char *fmt, ...)
 
 /* ------------------------------------------------------------ running */
 
-void shell_tell_cut(shell *sh, const stmt *st)
-{
-    sim_cut *c = &sh->w.cut;
-    if (!c->pending) return;
-    c->pending = false;
-    if (sh->cut_told) return;
-    sh->cut_told = true;
-    char a[32], b[32];
-    bool lin = c->linear > sh->w.set.max_linear;
-    sh_warn(sh, st, "the speed limit cut the throw of '%s' from %s to %s = %s %s: raise %s to "
-            "let it go faster; stats counts such cuts (speed_cuts)", c->name,
-            fmt_num(a, lin ? c->linear : c->angular), lin ? "max_linear" : "max_angular",
-            fmt_num(b, lin ? sh->w.set.max_linear : sh->w.set.max_angular), lin ? "m/s" : "rad/s",
-            lin ? "max_linear" : "max_angular");
-}
-
 cmd_status shell_run_program(shell *sh, const program *p)
 {
     for (int i = 0; i < p->n; i++) {
@@ -210,7 +196,7 @@ cmd_status shell_run_program(shell *sh, const program *p)
         cmd_status r = p->s[i].cmd->run(sh, &p->s[i]);
         /* what the hand did: its buttons run after the statement */
         if (r == CMD_OK) r = shell_after_hand(sh);
-        shell_tell_cut(sh, &p->s[i]);
+        shell_check_cuts(sh, &p->s[i]); /* (a throw a statement made) */
         sh->running_st = outer;
         /* whatever a statement changed, the schedule's predictions start afresh */
         edit_done(&sh->w);
@@ -256,7 +242,6 @@ static lang_paths paths_of(const shell *sh) { return (lang_paths){NULL, sh->scen
 
 static cmd_status run_parsed(shell *sh, program *p, const char *err)
 {
-    sh->cut_told = false; /* one warning of a cut per input */
     if (!p) {
         fflush(sh->out);
         fmt_escaped(sh->err, err);
@@ -265,6 +250,7 @@ static cmd_status run_parsed(shell *sh, program *p, const char *err)
     }
     cmd_status r = shell_run_program(sh, p);
     program_free(p);
+    viewer_changed(sh); /* the window shows what the statements did */
     /* what the statements printed is checked like any file written */
     errno = 0;
     if (fflush(sh->out) != 0 || ferror(sh->out)) {
@@ -428,6 +414,28 @@ static cmd_status interrupted(shell *sh, const stmt *st)
     return CMD_ERROR;
 }
 
+/* The world's first collision or throw whose result a speed limit cut (sim.h,
+ * hold.h) warns, naming the object and the limit to raise: each such cut loses
+ * energy. */
+static void warn_speed_cut(shell *sh, const stmt *st)
+{
+    const sim_cut *c = &sh->w.st.first_cut;
+    const char *limit = c->angular ? "max_angular" : "max_linear";
+    const char *name = c->object >= 0 && c->object < sh->w.n ? sh->w.bodies[c->object]->name : "?";
+    sh_warn(sh, st,
+            "%s = %g cut the %s a %s gave '%s' (%.3g %s): each such cut loses energy, and "
+            "stats counts them (speed_cuts); raise %s to keep it",
+            limit, c->limit, c->angular ? "spin" : "speed", c->thrown ? "throw" : "collision", name,
+            c->speed, c->angular ? "rad/s" : "m/s", limit);
+}
+
+void shell_check_cuts(shell *sh, const stmt *st)
+{
+    if (sh->w.st.speed_cuts < sh->cuts_seen) sh->cuts_seen = 0; /* a new world (restart) */
+    if (sh->cuts_seen == 0 && sh->w.st.speed_cuts > 0) warn_speed_cut(sh, st);
+    sh->cuts_seen = sh->w.st.speed_cuts;
+}
+
 /* shell_advance, with a status line when show (progress.h). */
 static cmd_status advance(shell *sh, const stmt *st, long n, bool show)
 {
@@ -453,10 +461,14 @@ static cmd_status advance(shell *sh, const stmt *st, long n, bool show)
             break;
         }
         media_frame_begin(sh); /* a movie's pictures within the frame start here */
-        /* the hand acts at its rows' instants within the frame (hand.h) */
+        /* the hand acts at its rows' instants within the frame (hand.h), and takes
+         * the window's mouse at its boundaries (viewer.h) */
+        viewer_sample(sh);
         hand_frame_begin(&sh->hand, &sh->w);
         int status = sim_frame_hooked(&sh->w, &hook, err, sizeof err);
+        viewer_sample(sh);
         hand_frame_end(&sh->hand, &sh->w);
+        shell_check_cuts(sh, st);
         if (status != 0) {
             sh_error(sh, st, "%s", err);
             r = CMD_ERROR;
@@ -469,6 +481,7 @@ static cmd_status advance(shell *sh, const stmt *st, long n, bool show)
         if (r == CMD_OK && (shell_after_hand(sh) != CMD_OK || (sh->hand_failed && sh->stop_on_error)))
             r = CMD_ERROR;
         if (show) progress_tick(&prog, k + 1, sh->w.time, shell_clock());
+        viewer_frame(sh, k + 1 == n || r != CMD_OK);
     }
     if (show) {
         progress_hide(&prog);
@@ -476,7 +489,6 @@ static cmd_status advance(shell *sh, const stmt *st, long n, bool show)
     }
     /* (a Ctrl-C the last frame's movie took) */
     if (r == CMD_OK && shell_interrupted) r = interrupted(sh, st);
-    shell_tell_cut(sh, st);
     sh->wall_time += shell_clock() - t0;
     return r;
 }

@@ -60,6 +60,7 @@ typedef struct shell {
     view *view;            /* off-screen context, created on first need */
     view_stats view_st;    /* what drawing has cost */
     struct media *media;   /* sound and movie (media.h), made on first need */
+    struct viewer *viewer; /* the live window (viewer.h), or NULL when closed */
     double wall_time;      /* seconds spent advancing time */
     bool running;          /* `start` given and not stopped */
     int current;           /* index of the current object, or -1 */
@@ -81,8 +82,8 @@ typedef struct shell {
     bool line_broken;
     bool found_apart;      /* shell_check_start found no overlap since the last
                             * statement began: time may run on unchecked */
-    bool cut_told;         /* a throw's speed cut was warned of since the input (a
-                            * line, a file, -c) began: shell_tell_cut */
+    long cuts_seen;        /* the world's speed_cuts when last looked at
+                            * (shell_check_cuts) */
     bool fly_told;         /* flying was stopped at the limits, and said so */
 } shell;
 
@@ -140,10 +141,10 @@ cmd_status shell_close_outputs(shell *sh);
  * Returns CMD_ERROR (after saying why) when one failed. */
 cmd_status shell_close_logs(shell *sh, const stmt *st);
 
-/* The first throw the speed limits cut since the input began (world_cut), as one
- * warning naming the object and the limit to raise; later ones, and collisions',
- * are only counted (stats: speed_cuts). */
-void shell_tell_cut(shell *sh, const stmt *st);
+/* The world's first collision or throw whose result a speed limit cut (st.speed_cuts
+ * grew from 0 since the last look) warns once, naming the object and the limit
+ * to raise; later ones are only counted (stats: speed_cuts). */
+void shell_check_cuts(shell *sh, const stmt *st);
 
 /* Messages about statement st (NULL: no location). */
 void sh_error(shell *sh, const stmt *st, const char *fmt, ...)

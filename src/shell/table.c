@@ -170,6 +170,7 @@ const command command_table[] = {
     VIEW("background", VAL_COLOR, R_RANGE, 0, 255, background),
     CHOICE("real", "solid|wire|hidden", cmd_real),
     VIEW("record", VAL_ONOFF, 0, 0, 0, record),
+    OTHER("window", VAL_ONOFF, cmd_window),
     HANDF("hand", VAL_VECTOR, R_RANGE, -POS, POS, hand, cmd_hand),
     HAND_A("hand_rotate", R_NONZERO_VEC | R_RANGE | R_RADIANS, -POS, POS, hand_rotate,
            "angle", -LIM_ANGLE_MAX, LIM_ANGLE_MAX, cmd_hand),

@@ -14,6 +14,7 @@
 #include "handlers.h"
 #include "media.h"
 #include "shell.h"
+#include "viewer.h"
 
 /* n numbers as "(a, b, ...)" in style s. */
 static void write_tuple(FILE *out, const double *v, int n, fmt_style s)
@@ -69,8 +70,12 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
                 path[0] ? path : "off", path[0] ? "\"" : "");
         return;
     }
-    /* how numbers are shown is the console's, not the world's */
+    /* how numbers are shown is the console's, not the world's, as is the window */
     if (for_save && strcmp(n, "precision") == 0) return;
+    if (strcmp(n, "window") == 0) {
+        if (!for_save) fprintf(out, "window = %s\n", viewer_is_open(sh) ? "on" : "off");
+        return;
+    }
     /* what the hand does, after the objects it may hold (hand_write) */
     bool after = strcmp(n, "tracker") == 0 || strcmp(n, "tracker_time") == 0 ||
                  strcmp(n, "grip") == 0 || strcmp(n, "trigger") == 0;
