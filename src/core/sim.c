@@ -25,6 +25,7 @@
 
 #include "answer.h"
 #include "broad.h"
+#include "instant.h"
 #include "pairs.h"
 #include "rest.h"
 #include "retime.h"
@@ -210,7 +211,8 @@ static void find_contacts(world *w)
         closest_result r = pair_query(w, p, a, b);
         if (r.status == CLOSEST_INVALID) continue;
         double touch = tol_touch(a, b);
-        if (r.distance <= touch && r.distance >= -touch) {
+        /* (placed closing: a collision, which its search finds at once) */
+        if (r.distance <= touch && r.distance >= -touch && !instant_closing(w, p, &r)) {
             p->touching = true;
             p->hit = p->cache;
             a->woken = b->woken = true;

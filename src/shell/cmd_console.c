@@ -193,6 +193,7 @@ cmd_status cmd_stats(shell *sh, const stmt *st)
     fprintf(sh->out, "unsolved = %ld\n", w->st.unsolved);
     fprintf(sh->out, "overflows = %ld\n", w->st.overflows);
     fprintf(sh->out, "speed_cuts = %ld\n", w->st.speed_cuts);
+    fprintf(sh->out, "waves_cut = %ld\n", w->st.waves_cut);
     return CMD_OK;
 }
 
