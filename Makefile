@@ -2,6 +2,8 @@
 #
 #   make               build ./vroc
 #   make check         build and run every test: normal, ASan+UBSan and validation builds
+#   make check-long    the long sweeps (tests/long/): every scene saved every 10th
+#                      frame to 300, and 50 random worlds, continued to the bit
 #   make bench         build and run the benchmarks
 #   make demo          the main job: run a thesis scene and write its stereo frames,
 #                      and a movie of them with the collisions' sound
@@ -32,10 +34,11 @@ SCENEDIR = $(PREFIX)/share/vroc/scenes
 
 VERSION  = 0.1.0
 CORE_PKGS = qhull_r
-PKGS     = readline osmesa libpng qhull_r sndfile samplerate libpulse-simple libpulse nettle
+PKGS     = readline osmesa libpng qhull_r sndfile samplerate libpulse-simple libpulse nettle sdl2
 # linked: all but OSMesa, which the views load with dlopen when they first draw
-# (src/view/gl_load.h), so that a run that draws nothing never maps it; nettle
-# gives the SHA-256 that save writes of a polyhedron's file
+# (src/view/gl_load.h), so that a run that draws nothing never maps it, and SDL2,
+# loaded the same way when the live window first opens (src/view/window.h);
+# nettle gives the SHA-256 that save writes of a polyhedron's file
 LINK_PKGS = readline libpng qhull_r sndfile samplerate libpulse-simple libpulse nettle
 CC      ?= cc
 WARN     = -Wall -Wextra -Wpedantic -Werror -Wshadow -Wmissing-prototypes
@@ -83,7 +86,7 @@ core_obj  = $(patsubst src/%.c,$(1)/%.o,$(CORE_SRC))
 mesh_obj  = $(patsubst src/%.c,$(1)/%.o,$(MESH_SRC))
 upper_obj = $(patsubst src/%.c,$(1)/%.o,$(UPPER_SRC)) $(1)/help_data.o
 
-.PHONY: all check check-build bench demo deps install uninstall clean record-hashes fuzz
+.PHONY: all check check-long check-build bench demo deps install uninstall clean record-hashes fuzz
 .DELETE_ON_ERROR:
 
 all: vroc man/vroc.1
@@ -190,6 +193,12 @@ vroc: build/vroc
 check: deps
 	@$(MAKE) --no-print-directory check-build
 	@sh tests/run.sh
+
+# The long sweeps, with the normal build only (tests/long/run.sh); about 15
+# minutes on an idle machine.
+check-long: deps
+	@$(MAKE) --no-print-directory vroc
+	@sh tests/long/run.sh
 
 check-build: vroc man/vroc.1 build-san/vroc build-val/vroc build/tests/wavtool \
              build-san/tests/fuzz_mesh \

@@ -63,3 +63,26 @@ wait_for() {
 check_screen() { # TEXT PATTERN
     if wait_for "$2"; then ok "$1"; else notok "$1" "screen: $(screen | tail -8)"; fi
 }
+
+# An X server of the test's own (window.sh, examples.sh): xvfb_start runs Xvfb at
+# 24-bit depth on a display number it picks itself (-displayfd), sets DISPLAY to
+# it and XPID to its process, or fails (1) saying why; xvfb_stop stops it.  The
+# caller's EXIT trap calls xvfb_stop.
+XPID=
+xvfb_start() {
+    if ! command -v Xvfb >/dev/null 2>&1; then
+        notok "Xvfb is installed (make deps installs it)"
+        return 1
+    fi
+    Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp 3>"$TMP/display" 2>"$TMP/xvfb.log" &
+    XPID=$!
+    i=0
+    while [ ! -s "$TMP/display" ] && [ $i -lt 100 ]; do sleep 0.1; i=$((i + 1)); done
+    if [ ! -s "$TMP/display" ]; then
+        notok "Xvfb starts" "$(cat "$TMP/xvfb.log")"
+        return 1
+    fi
+    DISPLAY=":$(cat "$TMP/display")"
+    export DISPLAY
+}
+xvfb_stop() { [ -n "$XPID" ] && kill "$XPID" 2>/dev/null; XPID=; }

@@ -98,6 +98,31 @@ awk -v a="$d5" -v b="$d4" 'BEGIN { exit !(a < 1 && a < b) }' &&
     ok "frame 4 of the movie is the left view recorded after frame 5 (differs by $d5, from frame 4 by $d4)" ||
     notok "frame 4 of the movie is the left view recorded after frame 5" "mean differences: $d5 (frame 5), $d4 (frame 4)"
 
+# a movie shows what the views show: the tool panel and the hand's pointer too,
+# with record off (issue 31).  panel-demo's frame 4 of a movie made without
+# record against the left view a run with record wrote after frame 5; and its
+# panel's light buttons, counted, against the same movie with panel = off.
+mkdir -p "$TMP/pd"
+pd() { # NAME STATEMENTS: panel-demo at 160x128, one eye, with STATEMENTS
+    "$VROC" -b -q "$S/panel-demo.vroc" -c "image_size = (160, 128); stereo = mono; $2; run 6" 2>/dev/null
+}
+pd on "movie_rate = 10; movie = $TMP/pd/on.mp4"
+pd off "panel = off; movie_rate = 10; movie = $TMP/pd/off.mp4"
+pd rec "output = $TMP/pd; record = on"
+buttons() { # the light grey pixels (the panel's buttons) of frame 4 of movie $1,
+    # which mad then compares
+    ffmpeg -v error -y -i "$1" -vf "select=eq(n\,4)" -frames:v 1 -f rawvideo -pix_fmt rgb24 "$TMP/rec/f4.rgb"
+    od -An -v -tu1 -w3 "$TMP/rec/f4.rgb" | awk '$1 > 170 && $2 > 170 && $3 > 175 && $3 - $1 < 30 { n++ } END { print n + 0 }'
+}
+off=$(buttons "$TMP/pd/off.mp4")
+doff=$(mad "$TMP/pd/frame-000005-left.png")
+on=$(buttons "$TMP/pd/on.mp4")
+don=$(mad "$TMP/pd/frame-000005-left.png")
+awk -v on="$on" -v off="$off" -v d="$don" -v d0="$doff" 'BEGIN { exit !(on > 100 && off < 10 && d < 3 && 2 * d < d0) }' &&
+    ok "a movie without record shows the panel as the views do ($on button pixels, $off without it; differs from the view by $don, by $doff without the panel)" ||
+    notok "a movie without record shows the panel as the views do" \
+        "button pixels: $on with the panel, $off without" "mean difference from the recorded view: $don, $doff without the panel"
+
 # the simulation never depends on the movie or the soundtrack
 # (the hash line alone: the sanitizer build may add LeakSanitizer's list of the
 # suppressions it used, Mesa's memory, when frames were drawn)

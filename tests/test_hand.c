@@ -6,8 +6,11 @@
  * end), bad tracker files that change nothing, and images: the panel and the hand
  * drawn in both eyes where the eyes' projection puts them, with the parallax of
  * their depth, a label legible at 640x512 from 0.6 m, and the hand drawn whatever
- * `real` says.  The physics of holding and throwing is tested through vroc -b
- * (tests/hand.sh), which does not depend on the core's insides.
+ * `real` says; a live source (the window's mouse) whose hand_log, replayed as a
+ * tracker file, gives the same world to the bit; and the ray through a pixel
+ * (view_ray) against an independent projection.  The physics of holding and
+ * throwing is tested through vroc -b (tests/hand.sh), which does not depend on
+ * the core's insides.
  *
  * Projection (view.c): the head at the origin looking along +y with z up, eyes at
  * -+ipd/2 along x, frusta sharing the window at D = |look_at - head|.  A point
@@ -495,6 +498,154 @@ static void a_label_is_legible_at_640x512_from_0_6_m(void **state)
     shell_close(&s);
 }
 
+/* ---- a live source (the window's mouse) ---- */
+
+/* A small generator of the test's own (xorshift64*), in [0, 1). */
+static double uniform(unsigned long long *st)
+{
+    *st ^= *st >> 12;
+    *st ^= *st << 25;
+    *st ^= *st >> 27;
+    return (double)((*st * 2685821657736338717ULL) >> 11) / 9007199254740992.0;
+}
+
+/* The world of the live source's test: a ball at the hand's first place, another
+ * moving, a floor (no gravity: a ball let go stays in reach). */
+static const char *const live_world =
+    "cube floor; size = (4, 4, 0.2); translate = (0, 1, -0.8); mass = -1\n"
+    "sphere ball; radius = 0.1; translate = (0, 1, 0); sphere other; radius = 0.15\n"
+    "translate = (0.6, 1.2, -0.3); linear_vel = (-0.2, 0, -0.3); select on\n";
+
+/* A session of the live source: the hand moves on the wall clock while time
+ * stands still (as at the prompt), then hand_log opens, and for `frames` frames of
+ * time_step h (h2 from frame 12 on) the source grabs the ball at frame 4 (the
+ * trigger down for one sample only: a click shorter than a frame), lets it drop,
+ * grabs it again, wanders with it, throws it at 20, and presses re-select at 25.  Then the log, replayed as a
+ * tracker file from a fresh start with the same frames, must give the same world
+ * to the bit: every object's state and the same hash. */
+static void live_session(double h, double h2, unsigned long long seed)
+{
+    unsigned long long st = seed;
+    shell_fix a, b;
+    shell_open(&a);
+    shell_open(&b);
+    must(&a, live_world);
+    must(&b, live_world);
+    char text[600];
+    snprintf(text, sizeof text, "time_step = %.17g", h);
+    must(&a, text);
+    must(&b, text);
+    hand *ha = &a.sh.hand;
+    /* stood still, on the wall clock: the hand jumps with the source */
+    tracker_row r = {0, v3(0.3, 1, 0.2), q_identity(), false, false};
+    for (int k = 0; k < 5; k++) {
+        hand_wall(ha, &a.sh.w, 0.013 + 0.01 * uniform(&st));
+        r.p.x -= 0.06;
+        r.p.z -= 0.04;
+        hand_live(ha, &a.sh.w, &r);
+        hand_live_act(ha, &a.sh.w);
+    }
+    assert_true(ha->clock > 0);
+    snprintf(text, sizeof text, "hand_log = \"%s\"", in_dir("live.csv"));
+    must(&a, text);
+    int frames = 40, held = 0;
+    for (int k = 0; k < frames; k++) {
+        if (k == 12) {
+            snprintf(text, sizeof text, "time_step = %.17g", h2);
+            must(&a, text);
+        }
+        if (k >= 7) /* (at the ball's centre until it is held again) */
+            r.p = v3_add(r.p, v3(0.05 * (uniform(&st) - 0.3), 0.02 * (uniform(&st) - 0.5), 0.05 * (uniform(&st) - 0.3)));
+        r.trigger = k == 4 || (k >= 6 && k < 20);
+        r.button = k == 25;
+        hand_live(ha, &a.sh.w, &r);
+        if (shell_advance(&a.sh, NULL, 1) != CMD_OK) {
+            fflush(a.sh.err);
+            fail_msg("frame %d: %s", k, a.errs);
+        }
+        held += a.sh.w.bodies[1]->held;
+    }
+    hand_live(ha, &a.sh.w, NULL);
+    assert_true(held >= 8); /* it was held, */
+    assert_true(v3_len(a.sh.w.bodies[1]->v) > 0.1); /* and thrown */
+    must(&a, "hand_log = off");
+
+    snprintf(text, sizeof text, "tracker = \"%s\"", in_dir("live.csv"));
+    must(&b, text);
+    for (int k = 0; k < frames; k++) {
+        if (k == 12) {
+            snprintf(text, sizeof text, "time_step = %.17g", h2);
+            must(&b, text);
+        }
+        assert_int_equal(shell_advance(&b.sh, NULL, 1), CMD_OK);
+    }
+    char *sa = snapshot(&a.sh), *sb = snapshot(&b.sh);
+    /* (the settings of the hand differ: one was told by a tracker file) */
+    const char *oa = strstr(sa, "sphere ball"), *ob = strstr(sb, "sphere ball");
+    assert_non_null(oa);
+    assert_non_null(ob);
+    assert_string_equal(oa, ob);
+    assert_true(world_hash(&a.sh.w) == world_hash(&b.sh.w));
+    free(sa);
+    free(sb);
+    shell_close(&a);
+    shell_close(&b);
+}
+
+static void a_live_source_replays_from_its_log_to_the_bit(void **state)
+{
+    (void)state;
+    live_session(0.1, 0.1, 1);
+    live_session(0.1, 0.05, 2);
+    live_session(1.0 / 3, 1.0 / 7, 3);
+    live_session(0.125, 0.03, 4);
+}
+
+/* What view_ray gives meets the point that an independent projection puts at its
+ * pixel: for an eye at e = s ipd/2 along r (s = -1 left, +1 right, 0 the head's
+ * own) and the window shared at D = |look_at - head|, a point at (x, y, z) in
+ * the head's axes (r, u, f) is at X = e + (x - e) D / z, Y = y D / z on that
+ * window, which spans D tan(fov/2) (W/H) by D tan(fov/2) from its centre. */
+static void a_ray_through_a_pixel_meets_what_projects_there(void **state)
+{
+    (void)state;
+    unsigned long long st = 7;
+    for (int n = 0; n < 200; n++) {
+        view_settings vs = view_settings_defaults();
+        vs.head = v3(4 * uniform(&st) - 2, 4 * uniform(&st) - 2, 4 * uniform(&st) - 2);
+        vs.look_at = v3_add(vs.head, v3(3 * uniform(&st) - 1.5, 3 * uniform(&st) - 1.5, 3 * uniform(&st) - 1.5));
+        vs.up = v3(uniform(&st) - 0.5, uniform(&st) - 0.5, 1);
+        vs.ipd = 0.1 * uniform(&st);
+        vs.fov = 20 + 120 * uniform(&st);
+        vs.image_w = 16 + (int)(700 * uniform(&st));
+        vs.image_h = 16 + (int)(700 * uniform(&st));
+        vec3 f = v3_norm(v3_sub(vs.look_at, vs.head)), r = v3_norm(v3_cross(f, vs.up)), u = v3_cross(r, f);
+        double D = v3_dist(vs.look_at, vs.head), hh = D * tan(vs.fov * M_PI / 360), hw = hh * vs.image_w / vs.image_h;
+        double x = 2 * uniform(&st) - 1, y = 2 * uniform(&st) - 1, z = 0.1 + 5 * uniform(&st);
+        vec3 p = v3_add(vs.head, v3_add(v3_scale(r, x), v3_add(v3_scale(u, y), v3_scale(f, z))));
+        for (int eye = -1; eye <= 1; eye++) {
+            double e = (eye < 0 ? 0 : eye == 0 ? -1 : 1) * vs.ipd / 2;
+            double X = e + (x - e) * D / z, Y = y * D / z;
+            double px = (X / hw + 1) / 2 * vs.image_w, py = (1 - Y / hh) / 2 * vs.image_h;
+            vec3 o, d;
+            char err[256];
+            assert_int_equal(view_ray(&vs, eye, px, py, &o, &d, err, sizeof err), 0);
+            assert_near(v3_len(d), 1, 1e-12);
+            assert_near(v3_dist(o, v3_mad(vs.head, r, e)), 0, 1e-12);
+            vec3 op = v3_sub(p, o);
+            double off = v3_len(v3_sub(op, v3_scale(d, v3_dot(op, d))));
+            assert_true(v3_dot(op, d) > 0);
+            assert_near(off, 0, 1e-9 * (1 + v3_len(op)));
+        }
+    }
+    view_settings bad = view_settings_defaults();
+    bad.look_at = bad.head;
+    vec3 o, d;
+    char err[256];
+    assert_int_equal(view_ray(&bad, 0, 1, 1, &o, &d, err, sizeof err), -1);
+    assert_non_null(strstr(err, "same point"));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -505,6 +656,8 @@ int main(void)
         cmocka_unit_test(a_bad_tracker_file_changes_nothing),
         cmocka_unit_test(the_panel_and_hand_appear_where_the_eyes_project_them),
         cmocka_unit_test(a_label_is_legible_at_640x512_from_0_6_m),
+        cmocka_unit_test(a_live_source_replays_from_its_log_to_the_bit),
+        cmocka_unit_test(a_ray_through_a_pixel_meets_what_projects_there),
     };
     return cmocka_run_group_tests(tests, setup_dir, teardown_dir);
 }

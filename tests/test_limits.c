@@ -117,11 +117,14 @@ static const char *kind_for(const command *c)
     return (c->classes & C_SQ) ? "superquadric" : "polyhedron";
 }
 
-/* What c needs before it: a tracker file playing, for tracker_time (which is an
- * error without one). */
+/* What c needs before it: a tracker file playing, for tracker_time and
+ * tracker_row (an error without one), and o held, for its hold_pivot and
+ * hold_velocity. */
 static const char *context_for(const command *c)
 {
-    return strcmp(c->name, "tracker_time") == 0 ? "tracker = scenes/panel-demo.csv; " : "";
+    if (strcmp(c->name, "tracker_time") == 0 || strcmp(c->name, "tracker_row") == 0)
+        return "tracker = scenes/panel-demo.csv; ";
+    return strncmp(c->name, "hold_", 5) == 0 ? "grip = o; " : "";
 }
 
 /* Runs set (a statement of c) on a fresh world with object o; *accepted gets

@@ -463,9 +463,10 @@ static void random_says_how_many_fit(void **state)
     snprintf(text, sizeof text, "random %ld\n", fit);
     assert_int_equal(run(text), CMD_OK);
     assert_int_equal(g_sh.w.n, fit);
-    assert_int_equal(run("random 1\n"), CMD_ERROR); /* full: the second message */
-    assert_non_null(strstr(g_errbuf, "random: no room for an object in random_box"));
     assert_true(fit > 100 && fit < 2000);
+    /* a box filled by a static block: the second message */
+    assert_int_equal(run("cube block; mass = -1; size = (2.5, 2.5, 2.5); random 1\n"), CMD_ERROR);
+    assert_non_null(strstr(g_errbuf, "random: no room for an object in random_box"));
     /* twice the box, or objects half the size: 2000 fit */
     assert_int_equal(run("restart; random_box = (4, 4, 4); random 2000\n"), CMD_OK);
     assert_int_equal(g_sh.w.n, 2000);
@@ -481,6 +482,44 @@ static void random_says_how_many_fit(void **state)
             const body *a = g_sh.w.bodies[i], *b = g_sh.w.bodies[j];
             assert_true(v3_dist(body_com(a), body_com(b)) >= a->shape.r_out + b->shape.r_out);
         }
+}
+
+/* random in a furnished room (issue 31): a place is tried against the shapes of
+ * what is there (a floor 10 cm below the box, a wall across it, a static
+ * superquadric inside it), not against their circumscribed spheres, which cover
+ * the box.  The room fills, every new object is apart from every shape (the
+ * oracle: the closest-feature distance of each pair), time runs without an
+ * overlap, and the last new object is current. */
+static void random_fills_a_furnished_room(void **state)
+{
+    (void)state;
+    static const char *const rooms[] = {
+        "cube floor; mass = -1; size = (3, 3, 0.05); translate = (0, 0, -2.15); random 30\n",
+        "cube floor; mass = -1; size = (3, 3, 0.05); translate = (0, 0, -2.15)\n"
+        "cube wall; mass = -1; size = (0.05, 3, 3); translate = (1.9, 0, 0); random 40\n",
+        "cube floor; mass = -1; size = (3, 3, 0.05); translate = (0, 0, -2.05)\n"
+        "superquadric rock; mass = -1; a1 = 1.5; a2 = 1.2; a3 = 0.8; exp1 = 0.5; exp2 = 0.5\n"
+        "rotate = (1, 1, 0) 0.4; random 60\n",
+    };
+    static const int made[] = {30, 40, 60};
+    for (int r = 0; r < 3; r++) {
+        char text[512];
+        snprintf(text, sizeof text, "restart; seed = %d; random_box = (2, 2, 2)\n%s", 3 + r, rooms[r]);
+        if (run(text) != CMD_OK) fail_msg("room %d: %s", r, g_errbuf);
+        int nstatic = 0;
+        for (int i = 0; i < g_sh.w.n; i++) nstatic += body_is_static(g_sh.w.bodies[i]);
+        assert_int_equal(g_sh.w.n - nstatic, made[r]);
+        for (int i = 0; i < g_sh.w.n; i++)
+            for (int j = 0; j < nstatic; j++) {
+                const body *a = g_sh.w.bodies[i], *b = g_sh.w.bodies[j];
+                if (body_is_static(a)) continue;
+                closest_result d = body_distance(a, b, NULL);
+                if (!(d.status == CLOSEST_SEPARATED && d.distance > 0))
+                    fail_msg("room %d: %s meets %s (%g)", r, a->name, b->name, d.distance);
+            }
+        assert_int_equal(g_sh.current, g_sh.w.n - 1);
+        assert_int_equal(run("gravity; run 1\n"), CMD_OK);
+    }
 }
 
 static void trace_writes_a_row_per_object_per_frame(void **state)
@@ -704,6 +743,7 @@ int main(void)
         cmocka_unit_test(trace_writes_a_row_per_object_per_frame),
         cmocka_unit_test(failed_logs_are_turned_off),
         cmocka_unit_test(random_says_how_many_fit),
+        cmocka_unit_test(random_fills_a_furnished_room),
         cmocka_unit_test(figures_of_the_run),
         cmocka_unit_test(speed_limits_count_what_they_cut),
     };

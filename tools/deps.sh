@@ -30,11 +30,13 @@ if command -v pkg-config >/dev/null 2>&1; then
     need_pkg samplerate libsamplerate0-dev
     need_pkg libpulse-simple libpulse-dev
     need_pkg nettle nettle-dev # the SHA-256 save writes of a polyhedron's file
+    need_pkg sdl2 libsdl2-dev # the live window (its headers: it is loaded with dlopen)
     need_pkg cmocka libcmocka-dev
     need_pkg bullet libbullet-dev # the peer of the gas benchmark (make bench)
 else
     missing="$missing libreadline-dev libosmesa6-dev libpng-dev libqhull-dev libsndfile1-dev"
     missing="$missing libsamplerate0-dev libpulse-dev nettle-dev libcmocka-dev libbullet-dev"
+    missing="$missing libsdl2-dev"
 fi
 need_cmd tmux tmux
 need_cmd mandoc mandoc
@@ -49,6 +51,11 @@ need_cmd gnuplot gnuplot-nox
 need_cmd pulseaudio pulseaudio
 need_cmd parecord pulseaudio-utils
 need_cmd pgrep procps
+# the window's tests: an X server of their own (Xvfb), xdotool for keys and the
+# mouse, and xwd for screenshots of the window
+need_cmd Xvfb xvfb
+need_cmd xdotool xdotool
+need_cmd xwd x11-apps
 if [ "${1:-}" = fuzz ]; then need_cmd afl-fuzz afl++; fi
 # make bench measures the mesh readers against assimp's `assimp info`
 if [ "${1:-}" = bench ]; then need_cmd assimp assimp-utils; fi

@@ -3,6 +3,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "rest.h"
 
@@ -171,19 +172,33 @@ void edit_delete(world *w, int i)
 void edit_exact_orientation(world *w, int i, quat q)
 {
     body *b = w->bodies[i];
-    double n2 = q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z;
-    b->q = fabs(n2 - 1) <= 1e-12 ? q : q_normalize(q);
+    if (memcmp(&b->q, &q, sizeof q) == 0)
+        return; /* as it stands (an orientation typed with rotate, saved and read back) */
+    q = q_as_unit(q);
+    disturb(w, i, true);
+    b->q = q;
     b->rot_given = false;
-    body_update_w(b);
+    body_set_angular_vel(b, b->w);
 }
 
-void edit_exact_velocity(world *w, int i, vec3 v) { w->bodies[i]->v = v; }
+void edit_exact_velocity(world *w, int i, vec3 v)
+{
+    disturb(w, i, false);
+    w->bodies[i]->v = v;
+}
+
+/* True when a and b are the same vector to the bit. */
+static bool same_bits(vec3 a, vec3 b) { return memcmp(&a, &b, sizeof a) == 0; }
 
 void edit_exact_momentum(world *w, int i, vec3 L)
 {
     body *b = w->bodies[i];
+    disturb(w, i, false);
+    /* the angular velocity as it stands when it gives exactly L (one typed with
+     * angular_vel, saved and read back), else the one L gives */
+    bool as_typed = !body_is_static(b) && same_bits(m3_mulv(body_inertia_world(b), b->w), L);
     b->L = L;
-    body_update_w(b);
+    if (!as_typed) body_update_w(b);
 }
 
 void edit_exact_support(world *w, int i, int support, int face)
@@ -230,16 +245,13 @@ int edit_exact_touching(world *w, int i, int j, char *err, size_t errlen)
                  i == j ? "the same object" : "both are static");
         return -1;
     }
-    if (pairs_update(w) != 0) {
-        snprintf(err, errlen, "out of memory");
-        return -1;
-    }
-    /* a lasting contact keeps its pair whatever the boxes say (pairs.h): an
-     * object resting a hover's gap above its support, further than the contact
-     * distance the boxes are widened by, has it made here as the running world
-     * had it */
-    long k = pair_index(w, i, j);
-    if (k < 0 && (pair_near(w, i, j) != 0 || (k = pair_index(w, i, j)) < 0)) {
+    /* the pairs and the boxes of the objects as placed, then this contact's pair:
+     * a lasting contact is kept a little way apart (SIM_HOVER), where the two
+     * boxes need not meet, and the simulation keeps its pair whatever the boxes
+     * say (pairs.h) */
+    long k = -1;
+    if (pairs_update(w) == 0 && pair_near(w, i, j) == 0) k = pair_index(w, i, j);
+    if (k < 0) {
         snprintf(err, errlen, "out of memory");
         return -1;
     }

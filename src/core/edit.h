@@ -45,19 +45,26 @@ int edit_source(world *w, int i, shape_source *src, char *err, size_t errlen);
 void edit_force(world *w, dir_amount force);
 
 /* ---- exact state (language.md, "Exact state"), as save writes it ----
- * Each sets what it names exactly, with no limit applied and nothing woken.  The
- * contact state (edit_exact_contact, edit_exact_touching) takes object i's contacts
- * and mode as given: they are not found anew when time runs, and i is not checked
- * for overlaps (the state is the simulation's own). */
+ * Each sets what it names exactly, with no limit applied.  A new orientation,
+ * velocity or angular momentum wakes the object and what presses on it, as
+ * edit_property does; a saved world's contact state, which follows its objects,
+ * puts them back as they were.  The contact state (edit_exact_contact,
+ * edit_exact_touching) takes object i's contacts and mode as given: they are not
+ * found anew when time runs, and i is not checked for overlaps (the state is the
+ * simulation's own). */
 
-/* Orientation q (a unit quaternion, scalar first; used as given when within
- * 1e-12 of unit length, else normalised); w is found from L anew. */
+/* Orientation q (a unit quaternion, scalar first; used as given when its length
+ * is within Q_UNIT_TOL of 1, else normalised: q_as_unit).  The angular velocity stays and
+ * the angular momentum follows the new axes, as with rotate; the orientation the
+ * object already has, to the bit, changes nothing. */
 void edit_exact_orientation(world *w, int i, quat q);
 
 /* Linear velocity v, not limited. */
 void edit_exact_velocity(world *w, int i, vec3 v);
 
-/* Angular momentum L (world axes), not limited; w found from it. */
+/* Angular momentum L (world axes), not limited; w is found from it, unless the
+ * angular velocity the object has gives exactly L (one typed, saved and read
+ * back keeps its last digit). */
 void edit_exact_momentum(world *w, int i, vec3 L);
 
 /* The static object (support, an index) and its face that a slide is on; the

@@ -90,7 +90,10 @@ void flight_at(const flight *f, const body *shape_of, double t, body *out)
     if (f->kind == FLIGHT_FREE && f->spins) {
         quat qp;
         spin_at(&f->spin, h, &qp, &out->w);
-        out->q = aligned(shape_of) ? qp : q_mul(qp, q_conj(shape_of->q_principal));
+        /* (normalised: the turns composed here would leave it a few roundings
+         * off unit length, and a saved orientation reads back as it is only
+         * within Q_UNIT_TOL) */
+        out->q = q_normalize(aligned(shape_of) ? qp : q_mul(qp, q_conj(shape_of->q_principal)));
         out->rot_given = false;
     } else if (f->kind == FLIGHT_SLIDE && f->wn != 0) {
         out->q = q_normalize(q_mul(q_axis_angle(f->n, f->wn * h), f->q0));

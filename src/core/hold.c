@@ -41,6 +41,16 @@ void hold_release(world *w, int i, vec3 v, vec3 wv)
     edit_done(w);
 }
 
+int hold_exact(world *w, int i, vec3 pivot, vec3 v)
+{
+    body *b = w->bodies[i];
+    if (!b->held) return -1;
+    b->hold_pivot = pivot;
+    b->hold_v = v;
+    edit_done(w);
+    return 0;
+}
+
 void hold_place(world *w, int i, vec3 x, quat q)
 {
     body *b = w->bodies[i];

@@ -57,6 +57,11 @@ int hold_set(world *w, int i, hold_motion m);
  * body.  Nothing happens to a body that is not held. */
 void hold_release(world *w, int i, vec3 v, vec3 wv);
 
+/* Held body i's pivot and that point's velocity, exactly (save writes them): its
+ * own velocity and angular velocity stay as they are.  Returns 0, or -1 when it
+ * is not held (nothing changes). */
+int hold_exact(world *w, int i, vec3 pivot, vec3 v);
+
 /* Puts body i at once at origin x with orientation q (unit): for a held body whose
  * hand jumped while time stood still (the caller has checked the place is free).
  * Its velocities stay; a held body's pivot keeps its place relative to it. */

@@ -299,6 +299,21 @@ static __attribute__((cold, noinline)) double hook_cut(world *w, const sim_hook 
     return tn;
 }
 
+/* True when a frame starting at t0 counts on from the world's time base (the same
+ * time_step, and t0 where the base's frames put it): its end is then the base's
+ * next multiple, so that frames of 0.1 s end at 0.3, not 0.30000000000000004. */
+static bool frame_continues(const world *w, double t0)
+{
+    return w->set.time_step == w->base_step &&
+           w->time_base + (double)w->base_frames * w->base_step == t0;
+}
+
+double sim_frame_end(const world *w)
+{
+    if (!frame_continues(w, w->time)) return w->time + w->set.time_step;
+    return w->time_base + (double)(w->base_frames + 1) * w->base_step;
+}
+
 int sim_frame(world *w, char *err, size_t errlen)
 {
     return sim_frame_hooked(w, NULL, err, errlen);
@@ -339,7 +354,7 @@ int sim_frame_hooked(world *w, const sim_hook *hook, char *err, size_t errlen)
             retime_object(w, i, w->time);
         }
     }
-    if (w->set.time_step != w->base_step || w->time_base + (double)w->base_frames * w->base_step != t0) {
+    if (!frame_continues(w, t0)) {
         w->time_base = t0;
         w->base_step = w->set.time_step;
         w->base_frames = 0;

@@ -43,6 +43,10 @@ typedef struct {
     void *ctx;
 } sim_hook;
 
+/* The simulated time at which the next frame will end (world.time after it), to
+ * the bit, as long as time_step does not change before it. */
+double sim_frame_end(const world *w);
+
 /* sim_frame with hook (NULL: none, which is sim_frame). */
 int sim_frame_hooked(world *w, const sim_hook *hook, char *err, size_t errlen);
 

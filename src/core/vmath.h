@@ -85,6 +85,14 @@ static inline quat q_normalize(quat a)
     double l = q_len(a);
     return (quat){a.w / l, a.x / l, a.y / l, a.z / l};
 }
+/* A quaternion whose length is within this of 1 is a unit quaternion as it
+ * stands: one the simulation made, written exactly and read back, keeps its bits. */
+#define Q_UNIT_TOL 1e-15
+/* a as it stands when it is a unit quaternion (Q_UNIT_TOL), else normalised */
+static inline quat q_as_unit(quat a)
+{
+    return fabs(q_len(a) - 1) <= Q_UNIT_TOL ? a : q_normalize(a);
+}
 /* sin x and cos x; for |x| <= 1/8 (a step's turn) by their Taylor series to
  * x^13 and x^14, whose remainders are below 1e-17 of the value, without a call */
 static inline void sin_cos(double x, double *s, double *c)

@@ -13,6 +13,13 @@
  * Where the hand jumps (a statement, a tick of the wall clock while time stands
  * still, a row of a live feed), what it holds jumps with it, where nothing is in
  * the way; otherwise the next frame carries it back to the hand.
+ *
+ * A live source (the window's mouse) plays as a path of its own samples, each
+ * added at a frame boundary as the row at the coming frame's end (hand.h), so
+ * that it runs through the same code as a file; its rows are at the clock's own
+ * times (start 0), which hand_log writes as they are, so that its log replays it
+ * to the bit.  A row that rounding puts a hair off a frame's end acts at the end,
+ * after the frame, as a row exactly there does, not within the frame.
  */
 #include "hand.h"
 
@@ -25,6 +32,7 @@
 
 #include "core/closest.h"
 #include "core/hold.h"
+#include "core/sim.h"
 #include "shell/outfile.h"
 
 /* A held object this near the hand's place for it (m, and radians) is carried by
@@ -54,7 +62,7 @@ void hand_init(hand *h, hand_say say, void *ctx)
     memset(h, 0, sizeof *h);
     h->set = hand_settings_defaults();
     h->p = h->set.hand;
-    h->q = q_identity();
+    h->q = h->grip_q = q_identity();
     feed_init(&h->feed);
     h->held = h->last_held = h->make_current = -1;
     h->slider = PANEL_OFF;
@@ -105,6 +113,14 @@ static double row_sim(const hand *h, int k)
     return h->t0 + ((h->start + h->path.rows[k].t) - h->c0);
 }
 
+/* Row k's instant within the frame, where one a hair off the frame's end (by
+ * rounding: the clock and simulated time are summed apart) is at the end. */
+static double row_in_frame(const hand *h, int k)
+{
+    double t = row_sim(h, k);
+    return fabs(t - h->tf) <= HAND_CLOCK_ROUND * (1 + fabs(h->tf)) ? h->tf : t;
+}
+
 /* True when row k is due: within a frame, at or before world.time; outside, at
  * or before the clock. */
 static bool row_due(const hand *h, const world *w, int k)
@@ -152,6 +168,17 @@ static void velocity_now(const hand *h, vec3 *v, vec3 *wv)
     int k = h->next - 1; /* the last row reached */
     if (k >= 0 && h->pose_clock == h->start + h->path.rows[k].t) k--;
     tracker_segment_rates(&h->path, k, v, wv);
+}
+
+/* The live source's rows still to come are dropped: the hand stays where it is,
+ * and moves no more until told. */
+static void live_drop(hand *h)
+{
+    if (!h->live) return;
+    tracker_free(&h->path);
+    h->playing = h->live = false;
+    h->next = 0;
+    h->mv = h->mw = v3(0, 0, 0);
 }
 
 /* ---- what the hand holds ---- */
@@ -281,20 +308,34 @@ static void moved(hand *h, world *w)
     apply_slider(h, w);
 }
 
+/* How far point p is from body b's surface (0 inside it), or -1 when that cannot
+ * be told (a body not built, or not finite). */
+static double point_distance(const body *b, vec3 p)
+{
+    closest_proxy pt = {NULL, NULL, 0, v3(0, 0, 0), p, q_identity()};
+    closest_proxy bp = shape_proxy(&b->shape, b->x, b->q);
+    closest_result r = closest_distance_apart(&pt, &bp, NULL);
+    if (r.status == CLOSEST_INVALID) return -1;
+    return r.status == CLOSEST_SEPARATED ? r.distance : 0;
+}
+
+/* True when the hand may take body b: dynamic, built, not held. */
+static bool graspable(const body *b)
+{
+    return !body_is_static(b) && !b->held && b->built;
+}
+
 /* The dynamic object nearest the hand whose surface is within reach (the hand
  * inside one is at 0), or -1. */
 static int nearest(const hand *h, const world *w)
 {
-    closest_proxy pt = {NULL, NULL, 0, v3(0, 0, 0), h->p, q_identity()};
     int best = -1;
     double bd = HUGE_VAL;
     for (int i = 0; i < w->n; i++) {
         const body *b = w->bodies[i];
-        if (body_is_static(b) || b->held || !b->built) continue;
-        closest_proxy bp = shape_proxy(&b->shape, b->x, b->q);
-        closest_result r = closest_distance_apart(&pt, &bp, NULL);
-        if (r.status == CLOSEST_INVALID) continue;
-        double d = r.status == CLOSEST_SEPARATED ? r.distance : 0;
+        if (!graspable(b)) continue;
+        double d = point_distance(b, h->p);
+        if (d < 0) continue;
         if (d <= h->set.reach && d < bd) {
             bd = d;
             best = i;
@@ -364,11 +405,8 @@ static int reselect(hand *h, world *w)
     h->make_current = h->last_held;
     if (h->set.select_mode && h->set.trigger && h->grip == GRIP_NONE) {
         const body *b = w->bodies[h->last_held];
-        closest_proxy pt = {NULL, NULL, 0, v3(0, 0, 0), h->p, q_identity()};
-        closest_proxy bp = shape_proxy(&b->shape, b->x, b->q);
-        closest_result r = closest_distance_apart(&pt, &bp, NULL);
-        bool reach = r.status == CLOSEST_PENETRATING || (r.status == CLOSEST_SEPARATED && r.distance <= h->set.reach);
-        if (reach && !body_is_static(b)) grab(h, w, h->last_held);
+        double d = point_distance(b, h->p);
+        if (d >= 0 && d <= h->set.reach && !body_is_static(b)) grab(h, w, h->last_held);
     }
     return 0;
 }
@@ -397,6 +435,9 @@ static void log_row(hand *h, bool always)
     tracker_row r = {h->pose_clock - h->log_start, h->p, h->q, h->set.trigger, h->button};
     if (!always && h->have_logged && same_row(&r, &h->logged)) return;
     if (h->have_logged && r.t < h->logged.t) r.t = h->logged.t;
+    /* a row that repeats the last to the bit, its time too, adds nothing (replayed,
+     * it would only stop the hand for an instant between the two) */
+    if (h->have_logged && r.t == h->logged.t && same_row(&r, &h->logged)) return;
     /* (the reason is the failing write's: a later flush may have none) */
     if (tracker_write_row(h->log, &r) < 0)
         outfile_failed(h->set.hand_log, errno, h->log_error, sizeof h->log_error);
@@ -429,6 +470,14 @@ int hand_log_open(hand *h, const char *path, char *err, size_t errlen)
         return -1;
     }
     rc = outfile_close(h->log, h->set.hand_log, err, errlen);
+    /* with no file playing the clock starts again at 0 with the log, so that the
+     * log's times are the clock's own, and a live source's rows, at times of the
+     * clock, are written as they were played (hand.h) */
+    if (!(h->playing && !h->live)) {
+        glide(h, h->clock); /* what flying moved the head, up to now */
+        live_drop(h);
+        h->clock = h->pose_clock = 0;
+    }
     h->log = f;
     h->log_start = h->pose_clock;
     h->logged = r;
@@ -474,7 +523,7 @@ static void act_rows(hand *h, world *w)
         tracker_segment_rates(&h->path, k, &h->mv, &h->mw);
         moved(h, w);
         set_trigger(h, w, r->trigger);
-        set_button(h, w, r->button, h->set.tracker);
+        set_button(h, w, r->button, h->live ? "the mouse" : h->set.tracker);
         log_row(h, false);
     }
 }
@@ -509,7 +558,7 @@ void hand_tracker_off(hand *h)
 {
     tracker_free(&h->path);
     feed_close(&h->feed);
-    h->playing = false;
+    h->playing = h->live = false;
     h->next = 0;
     h->mv = h->mw = h->sv = h->sw = v3(0, 0, 0);
     h->set.tracker[0] = '\0';
@@ -517,7 +566,7 @@ void hand_tracker_off(hand *h)
 
 int hand_seek(hand *h, world *w, double t, char *err, size_t errlen)
 {
-    if (!h->playing) {
+    if (!h->playing || h->live) {
         if (t == 0) return 0; /* as show writes it */
         snprintf(err, errlen, "no tracker file plays (tracker = FILE names one)");
         return -1;
@@ -542,7 +591,7 @@ int hand_seek(hand *h, world *w, double t, char *err, size_t errlen)
 
 double hand_tracker_time(const hand *h)
 {
-    return h->playing ? h->clock - h->start : 0;
+    return h->playing && !h->live ? h->clock - h->start : 0;
 }
 
 /* ---- statements ---- */
@@ -623,6 +672,71 @@ const char *hand_grip_word(const hand *h, const world *w)
     }
 }
 
+void hand_set_clock(hand *h, double clock, double start)
+{
+    h->clock = h->pose_clock = clock;
+    h->start = start;
+}
+
+void hand_clock_of(const hand *h, double *clock, double *start)
+{
+    *clock = h->clock;
+    *start = h->playing ? h->start : 0;
+}
+
+int hand_set_row(hand *h, int n, char *err, size_t errlen)
+{
+    if (!h->playing) {
+        if (n == 0) return 0; /* as show writes it */
+        snprintf(err, errlen, "no tracker file plays (tracker = FILE names one)");
+        return -1;
+    }
+    h->next = n = n < h->path.n ? n : h->path.n;
+    tracker_segment_rates(&h->path, n - 1, &h->mv, &h->mw);
+    if (n > 0) h->button = h->path.rows[n - 1].button;
+    return 0;
+}
+
+int hand_row(const hand *h)
+{
+    return h->playing ? h->next : 0;
+}
+
+void hand_set_velocity(hand *h, vec3 v, double t)
+{
+    h->sv = v;
+    h->stmt_time = t;
+}
+
+void hand_set_spin(hand *h, vec3 wv)
+{
+    h->sw = wv;
+}
+
+void hand_set_grip_pose(hand *h, const vec3 *x, const quat *q)
+{
+    if (x) h->grip_x = *x;
+    if (q) h->grip_q = *q;
+}
+
+void hand_grip_pose(const hand *h, vec3 *x, quat *q)
+{
+    *x = h->grip_x;
+    *q = h->grip_q;
+}
+
+int hand_set_last_held(hand *h, const world *w, const char *name, char *err, size_t errlen)
+{
+    int i = strcmp(name, "none") == 0 ? -1 : world_find(w, name);
+    if (strcmp(name, "none") != 0 && (i < 0 || body_is_static(w->bodies[i]))) {
+        snprintf(err, errlen,
+                 i < 0 ? "no object named '%s'" : "'%s' is static: the hand holds only dynamic objects", name);
+        return -1;
+    }
+    h->last_held = i;
+    return 0;
+}
+
 void hand_object_deleted(hand *h, int i)
 {
     if (h->held == i) {
@@ -643,13 +757,51 @@ void hand_object_deleted(hand *h, int i)
 static double next_update(const hand *h)
 {
     double t = h->tf;
-    if (h->playing && h->next < h->path.n) t = d_min(t, row_sim(h, h->next));
+    if (h->playing && h->next < h->path.n) t = d_min(t, row_in_frame(h, h->next));
     return t;
+}
+
+/* At a frame boundary, before the rows due there act: the live source's sample
+ * becomes the row at the end of the coming frame, whose time on the clock is what
+ * hand_frame_end will make it to the bit (sim_frame_end), so that it acts at that
+ * end and the log writes it as it was.  The path starts with the hand where it is
+ * now; a row still ahead is moved to where the frame now ends (time_step changed
+ * since it was added). */
+static void live_sample(hand *h, const world *w)
+{
+    if (!h->live_on || hand_tracked(h)) return;
+    h->live_have_last = false; /* the next sample taken at once starts afresh */
+    double end = h->clock + (sim_frame_end(w) - w->time);
+    tracker_row *last = h->playing && h->live && h->path.n > 0 ? &h->path.rows[h->path.n - 1] : NULL;
+    if (last && last->t > h->clock) {
+        if (last->t != end) {
+            last->t = end;
+            if (h->next == h->path.n - 1) tracker_segment_rates(&h->path, h->next - 1, &h->mv, &h->mw);
+        }
+        return;
+    }
+    if (!last || last->t < h->clock) {
+        tracker_free(&h->path);
+        if (!h->live) h->set.tracker[0] = '\0'; /* a file that ended */
+        h->playing = h->live = true;
+        h->start = 0;
+        h->next = 0;
+        tracker_row now = {h->clock, h->p, h->q, h->set.trigger, h->button};
+        if (tracker_append(&h->path, &now) != 0) {
+            live_drop(h);
+            return;
+        }
+    }
+    tracker_row r = h->live_now;
+    r.t = end;
+    if (tracker_append(&h->path, &r) != 0) live_drop(h); /* (out of memory: the hand stays) */
+    else h->live_taken++;
 }
 
 void hand_frame_begin(hand *h, world *w)
 {
     hand_poll(h, w);
+    live_sample(h, w);
     h->in_frame = false;
     h->jump = false;
     act_rows(h, w);
@@ -665,7 +817,9 @@ double hand_hook_next(void *ctx, const world *w)
 {
     (void)w;
     const hand *h = ctx;
-    return h->playing && h->next < h->path.n ? row_sim(h, h->next) : HUGE_VAL;
+    if (!h->playing || h->next >= h->path.n) return HUGE_VAL;
+    double t = row_in_frame(h, h->next);
+    return t < h->tf ? t : HUGE_VAL; /* (one at the frame's end acts after it) */
 }
 
 void hand_hook_at(void *ctx, world *w)
@@ -681,6 +835,7 @@ void hand_frame_end(hand *h, world *w)
     if (c > h->clock) h->clock = c;
     h->in_frame = false;
     h->jump = false;
+    live_sample(h, w); /* before the rows at the boundary act, which look ahead */
     act_rows(h, w);
     glide(h, h->clock);
     moved(h, w);
@@ -713,25 +868,32 @@ typedef struct {
     world *w;
 } feed_ctx;
 
-/* A row of the live feed: the hand jumps there, and what it holds with it where
- * nothing is in the way; its velocity is the change from the row before over
- * their times. */
-static void feed_row(void *ctx, const tracker_row *r)
+/* A row that acts as it comes (a live feed's, a live source's while time stands
+ * still): the hand jumps there, and what it holds with it where nothing is in the
+ * way; its velocity is the change from the row before (*last) over their times. */
+static void jump_to(hand *h, world *w, const tracker_row *r, tracker_row *last, bool *have_last,
+                    const char *from)
 {
-    hand *h = ((feed_ctx *)ctx)->h;
-    world *w = ((feed_ctx *)ctx)->w;
-    double dt = h->have_last ? r->t - h->last.t : 0;
-    h->sv = dt > 0 ? v3_scale(v3_sub(r->p, h->last.p), 1 / dt) : v3(0, 0, 0);
-    h->sw = dt > 0 ? v3_scale(tracker_turn(h->last.q, r->q), 1 / dt) : v3(0, 0, 0);
-    h->last = *r;
-    h->have_last = true;
+    double dt = *have_last ? r->t - last->t : 0;
+    h->sv = dt > 0 ? v3_scale(v3_sub(r->p, last->p), 1 / dt) : v3(0, 0, 0);
+    h->sw = dt > 0 ? v3_scale(tracker_turn(last->q, r->q), 1 / dt) : v3(0, 0, 0);
+    *last = *r;
+    *have_last = true;
+    h->in_frame = false;
+    h->jump = true;
     h->p = r->p;
     h->q = r->q;
     show_pose(h);
     moved(h, w);
     set_trigger(h, w, r->trigger);
-    set_button(h, w, r->button, h->feed.path);
+    set_button(h, w, r->button, from);
     log_row(h, false);
+}
+
+static void feed_row(void *ctx, const tracker_row *r)
+{
+    hand *h = ((feed_ctx *)ctx)->h;
+    jump_to(h, ((feed_ctx *)ctx)->w, r, &h->last, &h->have_last, h->feed.path);
 }
 
 static void feed_bad(void *ctx, const char *msg)
@@ -754,6 +916,69 @@ void hand_poll(hand *h, world *w)
     else
         tell(h, HAND_ERROR, "tracker: reading the live feed failed: %s", err);
     hand_tracker_off(h);
+}
+
+/* ---- a live source ---- */
+
+void hand_live(hand *h, world *w, const tracker_row *now)
+{
+    (void)w;
+    h->live_on = now != NULL;
+    if (now) {
+        h->live_now = *now;
+        h->used = true;
+    } else {
+        live_drop(h);
+    }
+}
+
+void hand_live_act(hand *h, world *w)
+{
+    if (!h->live_on || hand_tracked(h)) return;
+    live_drop(h); /* the frames' path ends where the hand is */
+    tracker_row r = h->live_now;
+    r.t = h->clock;
+    glide(h, h->clock);
+    jump_to(h, w, &r, &h->live_last, &h->live_have_last, "the mouse");
+    h->live_taken++;
+}
+
+long hand_live_taken(const hand *h)
+{
+    return h->live_taken;
+}
+
+bool hand_tracked(const hand *h)
+{
+    return (h->playing && !h->live && h->next < h->path.n) || h->feed.fd >= 0;
+}
+
+int hand_pick(const hand *h, const world *w, vec3 o, vec3 dir, double max, double *t)
+{
+    double tol = d_min(1e-4, 0.5 * h->set.reach), s = 0;
+    if (!(tol > 1e-12)) tol = 1e-12;
+    /* sphere tracing: no object is nearer the point than the least distance, so
+     * the ray may go that far and meet none on the way */
+    for (int it = 0; it < 256 && s <= max; it++) {
+        vec3 p = v3_mad(o, dir, s);
+        int best = -1;
+        double bd = HUGE_VAL;
+        for (int i = 0; i < w->n; i++) {
+            if (!graspable(w->bodies[i])) continue;
+            double d = point_distance(w->bodies[i], p);
+            if (d >= 0 && d < bd) {
+                bd = d;
+                best = i;
+            }
+        }
+        if (best < 0) return -1;
+        if (bd <= tol) {
+            *t = s;
+            return best;
+        }
+        s += bd;
+    }
+    return -1;
 }
 
 /* ---- for the caller ---- */

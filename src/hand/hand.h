@@ -103,6 +103,14 @@ typedef struct hand {
     double slid[2];         /* the values the sliders were dragged to, which their
                              * settings get at the end of the frame (NAN: none) */
 
+    bool live;              /* the path playing is the live source's own (start 0:
+                             * its rows are at times of the clock) */
+    bool live_on;           /* a live source has the hand (hand_live) */
+    tracker_row live_now;   /*   its pose and buttons now */
+    tracker_row live_last;  /*   its last sample taken at once (hand_live_act) */
+    bool live_have_last;
+    long live_taken;        /*   samples the hand has taken from it */
+
     vec3 fly;               /* head movement not yet given (hand_take_fly) */
     double pose_clock;      /* the clock at which p and q are (fly counted up to it) */
 
@@ -166,6 +174,37 @@ int hand_set_grip(hand *h, world *w, const char *what, char *err, size_t errlen)
 /* The word grip = would take for the hand now (an object's name points into w). */
 const char *hand_grip_word(const hand *h, const world *w);
 
+/* ---- the hand's exact state (save writes it after the tracker's place; each
+ * sets what it names as it was, pressing, grabbing and moving nothing) ---- */
+
+/* tracker_clock = (clock, start): the tracker clock, and its reading at the
+ * playing file's time 0 (tracker_time is their difference). */
+void hand_set_clock(hand *h, double clock, double start);
+/* The clock and that reading, as hand_set_clock takes them. */
+void hand_clock_of(const hand *h, double *clock, double *start);
+
+/* tracker_row = n: the file's first n rows (all, when it has fewer) have acted:
+ * the hand moves on from row n - 1 to row n, and its button is as row n - 1 says.
+ * Returns 0, or -1 with a message when no file plays (but for n = 0). */
+int hand_set_row(hand *h, int n, char *err, size_t errlen);
+/* The rows that have acted (0 without a file). */
+int hand_row(const hand *h);
+
+/* hand_velocity = v t, hand_spin = wv: the velocity and angular velocity the
+ * hand's statements gave it, the last of them at simulated time t. */
+void hand_set_velocity(hand *h, vec3 v, double t);
+void hand_set_spin(hand *h, vec3 wv);
+
+/* grip_at = x, grip_orientation = q (either may be NULL): where what the hand
+ * holds (an object or the panel) is in the hand's own axes; the next grab makes
+ * them anew.  hand_grip_pose gives them. */
+void hand_set_grip_pose(hand *h, const vec3 *x, const quat *q);
+void hand_grip_pose(const hand *h, vec3 *x, quat *q);
+
+/* last_held = NAME or none: the object the re-select button takes.  Returns 0, or
+ * -1 with a message (no such dynamic object). */
+int hand_set_last_held(hand *h, const world *w, const char *name, char *err, size_t errlen);
+
 /* Object i was deleted: indices above it move down. */
 void hand_object_deleted(hand *h, int i);
 
@@ -194,6 +233,42 @@ void hand_poll(hand *h, world *w);
 /* True when something moves on the tracker clock while time stands still (a
  * file still playing, or flying): the prompt should wake to call hand_wall. */
 bool hand_busy(const hand *h);
+
+/* ---- a live source: the window's mouse (shell/viewer.h) ----
+ *
+ * A live source follows the named pipe's rules, with its samples taken at frame
+ * boundaries: at each boundary, before the rows due there act, its sample becomes
+ * a row at the end of the coming frame, so that the hand moves to it in a straight
+ * line over the frame, as between two rows of a file (a frame behind the source),
+ * and its velocity is that segment's.  While time stands still, hand_live_act takes
+ * the sample at once, as a row of a live feed.  hand_log writes the rows as they
+ * act, at the clock's times, and the clock starts again at 0 when hand_log opens
+ * with no file playing: so the log of a session whose time ran from the log's
+ * opening, replayed as a tracker file from clock 0, moves the hand, and so the
+ * world, to the bit as the source did. */
+
+/* The live source's pose and buttons now (now->t is not used), or NULL when it does
+ * not have the hand (a path of its rows still to come is dropped: the hand stays
+ * where it is).  Between frames. */
+void hand_live(hand *h, world *w, const tracker_row *now);
+
+/* While time stands still: the hand takes the live source's sample now, at the
+ * clock's time, as it takes a row of a live feed (it jumps there, and what it
+ * holds with it where nothing is in the way; its velocity is the change from the
+ * sample before over the clock's time between them). */
+void hand_live_act(hand *h, world *w);
+
+/* How many samples of the live source the hand has taken so far. */
+long hand_live_taken(const hand *h);
+
+/* True when a tracker file with rows still to come, or a live feed, has the hand
+ * (a live source then has not). */
+bool hand_tracked(const hand *h);
+
+/* The first dynamic object, not held, that the ray from o along the unit vector
+ * dir meets within max metres (to within half of reach, and 1e-4 m at most), or
+ * -1; *t is how far along the ray. */
+int hand_pick(const hand *h, const world *w, vec3 o, vec3 dir, double max, double *t);
 
 /* ---- what the caller does for the hand ---- */
 

@@ -107,7 +107,7 @@ void tracker_free(tracker_path *tp)
     tp->n = tp->cap = 0;
 }
 
-static int append(tracker_path *tp, const tracker_row *r)
+int tracker_append(tracker_path *tp, const tracker_row *r)
 {
     tracker_row *rows = grow_for_one(tp->rows, tp->n, &tp->cap, sizeof *rows, 64);
     if (!rows) return -1;
@@ -174,7 +174,7 @@ int tracker_load(const char *path, tracker_path *out, char *err, size_t errlen)
                      path, lineno, r.t, out->rows[out->n - 1].t);
             return load_fails(out, f, line);
         }
-        if (append(out, &r) != 0) {
+        if (tracker_append(out, &r) != 0) {
             snprintf(err, errlen, "%s:%d: out of memory", path, lineno);
             return load_fails(out, f, line);
         }

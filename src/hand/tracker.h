@@ -54,6 +54,10 @@ int tracker_load(const char *path, tracker_path *out, char *err, size_t errlen);
 
 void tracker_free(tracker_path *tp);
 
+/* Adds row r at the end of the path (in time order: the caller's care).  Returns
+ * 0, or -1 when out of memory (the path unchanged). */
+int tracker_append(tracker_path *tp, const tracker_row *r);
+
 /* The hand at time t on the path: before the first row, the first row's pose;
  * between rows k and k+1 interpolated; at or after the last, the last. */
 void tracker_pose(const tracker_path *tp, double t, vec3 *p, quat *q);

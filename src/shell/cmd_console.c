@@ -65,7 +65,7 @@ cmd_status cmd_list(shell *sh, const stmt *st)
 cmd_status cmd_show(shell *sh, const stmt *st)
 {
     if (!st->word) {
-        settings_write(sh->out, sh, 0);
+        settings_write(sh->out, sh, NULL);
         return CMD_OK;
     }
     const command *c = command_find(st->word);
@@ -103,7 +103,7 @@ cmd_status cmd_save(shell *sh, const stmt *st)
     fprintf(f, "# vroc %s: world saved at time = %s (frame %ld)\n", VROC_VERSION,
             fmt_num(a, sh->w.time), sh->w.frame);
     fprintf(f, "# settings\n");
-    settings_write(f, sh, 1);
+    settings_write(f, sh, st->word);
     fprintf(f, "\n# objects\n");
     for (int i = 0; i < sh->w.n; i++) {
         body_write(f, sh->w.bodies[i], (write_style){FMT_EXACT, false, st->word});
@@ -117,7 +117,7 @@ cmd_status cmd_save(shell *sh, const stmt *st)
         contact_write(f, &sh->w, i, 1);
     }
     /* the hand last: what it holds is gripped again */
-    hand_write(f, sh);
+    hand_write(f, sh, st->word);
     if (sh->current >= 0) fprintf(f, "\n# the current object\n%s %s\n",
                                   body_type_name(sh->w.bodies[sh->current]->sp.kind),
                                   sh->w.bodies[sh->current]->name);

@@ -1,8 +1,10 @@
 /* cmd_hand.c: the handlers of the hand-held tracker and the tool panel (thesis
  * Appendix A.1; language.md, "The hand and the tool panel"): hand, hand_rotate,
- * trigger, select, reselect, tracker, tracker_time, hand_log and grip.  The hand
+ * trigger, select, reselect, tracker, tracker_time, hand_log and grip, and the
+ * hand's exact state as save writes it (hand_orientation, tracker_clock, ...).  The hand
  * itself (src/hand/) does what they ask; the tool panel's settings (panel,
  * panel_at, panel_rotate) and reach and fly_speed are plain settings. */
+#include <limits.h>
 #include <string.h>
 
 #include "handlers.h"
@@ -16,6 +18,15 @@ cmd_status cmd_hand(shell *sh, const stmt *st)
     if (strcmp(st->cmd->name, "hand") == 0) {
         p = stmt_vec(st);
         h->set.hand = p;
+    } else if (strcmp(st->cmd->name, "hand_orientation") == 0) { /* exactly */
+        q = q_as_unit((quat){st->num[0], st->num[1], st->num[2], st->num[3]});
+        /* show's hand_rotate stays as typed when it gives this orientation */
+        quat typed = q_axis_angle(h->set.hand_rotate.dir, h->set.hand_rotate.amount);
+        if (memcmp(&typed, &q, sizeof q) != 0) {
+            vec3 axis;
+            q_to_axis_angle(q, &axis, &h->set.hand_rotate.amount);
+            h->set.hand_rotate.dir = axis;
+        }
     } else {
         h->set.hand_rotate = (dir_amount){stmt_vec(st), st->num[3]};
         q = q_axis_angle(stmt_vec(st), st->num[3]);
@@ -86,4 +97,31 @@ cmd_status cmd_grip(shell *sh, const stmt *st)
 {
     char err[BODY_NAME_MAX + 200];
     return answer(sh, st, hand_set_grip(&sh->hand, &sh->w, st->word, err, sizeof err), err);
+}
+
+/* The hand's exact state, as save writes it (hand.h). */
+cmd_status cmd_hand_exact(shell *sh, const stmt *st)
+{
+    hand *h = &sh->hand;
+    const char *n = st->cmd->name;
+    char err[BODY_NAME_MAX + 200];
+    int rc = 0;
+    if (strcmp(n, "tracker_clock") == 0) {
+        hand_set_clock(h, st->num[0], st->num[1]);
+    } else if (strcmp(n, "tracker_row") == 0) {
+        rc = hand_set_row(h, st->num[0] < INT_MAX ? (int)st->num[0] : INT_MAX, err, sizeof err);
+    } else if (strcmp(n, "hand_velocity") == 0) {
+        hand_set_velocity(h, stmt_vec(st), st->num[3]);
+    } else if (strcmp(n, "hand_spin") == 0) {
+        hand_set_spin(h, stmt_vec(st));
+    } else if (strcmp(n, "grip_at") == 0) {
+        vec3 x = stmt_vec(st);
+        hand_set_grip_pose(h, &x, NULL);
+    } else if (strcmp(n, "grip_orientation") == 0) {
+        quat q = q_as_unit((quat){st->num[0], st->num[1], st->num[2], st->num[3]});
+        hand_set_grip_pose(h, NULL, &q);
+    } else { /* last_held */
+        rc = hand_set_last_held(h, &sh->w, st->word, err, sizeof err);
+    }
+    return answer(sh, st, rc, err);
 }

@@ -11,6 +11,7 @@
 #include <strings.h>
 
 #include "core/edit.h"
+#include "core/hold.h"
 #include "handlers.h"
 #include "mesh/meshfile.h"
 #include "shell.h"
@@ -146,6 +147,12 @@ cmd_status cmd_exact(shell *sh, const stmt *st)
         edit_exact_velocity(w, i, stmt_vec(st));
     } else if (strcmp(n, "angular_momentum") == 0) {
         edit_exact_momentum(w, i, stmt_vec(st));
+    } else if (strcmp(n, "hold_pivot") == 0 || strcmp(n, "hold_velocity") == 0) {
+        bool pivot = strcmp(n, "hold_pivot") == 0;
+        if (hold_exact(w, i, pivot ? stmt_vec(st) : b->hold_pivot, pivot ? b->hold_v : stmt_vec(st)) != 0) {
+            sh_error(sh, st, "'%s' is not held: grip = %s holds it", b->name, b->name);
+            return CMD_ERROR;
+        }
     } else if (strcmp(n, "slide_on") == 0) {
         int s = world_find(w, st->word);
         if (s < 0 || !body_is_static(w->bodies[s])) {

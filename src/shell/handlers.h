@@ -38,6 +38,7 @@ cmd_status cmd_tracker(struct shell *sh, const stmt *st);
 cmd_status cmd_tracker_time(struct shell *sh, const stmt *st);
 cmd_status cmd_hand_log(struct shell *sh, const stmt *st);
 cmd_status cmd_grip(struct shell *sh, const stmt *st);
+cmd_status cmd_hand_exact(struct shell *sh, const stmt *st);
 
 cmd_status cmd_step(struct shell *sh, const stmt *st);
 cmd_status cmd_run(struct shell *sh, const stmt *st);
@@ -47,6 +48,7 @@ cmd_status cmd_restart(struct shell *sh, const stmt *st);
 cmd_status cmd_read(struct shell *sh, const stmt *st);
 cmd_status cmd_display(struct shell *sh, const stmt *st);
 cmd_status cmd_refresh(struct shell *sh, const stmt *st);
+cmd_status cmd_window(struct shell *sh, const stmt *st);
 cmd_status cmd_save(struct shell *sh, const stmt *st);
 
 cmd_status cmd_print(struct shell *sh, const stmt *st);

@@ -26,6 +26,7 @@
 #include "expr.h"
 #include "fmt.h"
 #include "lex.h"
+#include "sound/synth.h"
 #include "suggest.h"
 
 /* Files larger than this are refused (a scene is a few kilobytes). */
@@ -374,7 +375,9 @@ static int read_numbers(stmt *st, cursor *cu, const where *at)
         if (get_tuple(cu, n, c, st->num, at) != 0) return -1;
         char what[96];
         snprintf(what, sizeof what, "%s components", c->name);
-        for (int k = 0; k < n; k++)
+        /* (a quaternion's length is its check: a unit one the simulation made may
+         * have a component a rounding above 1) */
+        for (int k = 0; k < n && c->arg != VAL_QUAT; k++)
             if (check_range_of(what, c->range, c->lo, c->hi, st->num[k], at) != 0) return -1;
         if (c->arg == VAL_QUAT) {
             double n2 = 0;
@@ -788,7 +791,17 @@ static bool is_sha256(const char *s)
     return n == 64 && strspn(s, "0123456789abcdefABCDEF") == 64;
 }
 
-/* A file the statement reads (a tracker file, a polyhedron's file) is found as read finds its file:
+/* True when statement st names a file it reads: a tracker file, a polyhedron's
+ * file, or a sound file (not off or a built-in sound). */
+static bool names_file(const stmt *st)
+{
+    const char *n = st->cmd->name;
+    if (strcmp(n, "tracker") == 0) return st->n == 0;
+    if (strcmp(n, "file") == 0) return true;
+    return strcmp(n, "collision_sound") == 0 && strcmp(st->word, "off") != 0 && synth_find(st->word) < 0;
+}
+
+/* A file the statement reads (a tracker file, a polyhedron's file, a sound file) is found as read finds its file:
  * st->word becomes the path found, or stays as written when there is none (its
  * handler then says so).  Returns 0, or -1 when out of memory. */
 static int resolve_word(stmt *st, const lang_paths *paths)
@@ -840,9 +853,7 @@ program *lang_parse(const char *text, size_t len, const char *name, int first_li
                     goto fail;
                 }
                 st.file = prog->path;
-                bool names_file = (strcmp(st.cmd->name, "tracker") == 0 && st.n == 0) ||
-                                  strcmp(st.cmd->name, "file") == 0;
-                if (names_file && resolve_word(&st, paths) != 0) {
+                if (names_file(&st) && resolve_word(&st, paths) != 0) {
                     stmt_clear(&st);
                     goto oom;
                 }

@@ -11,10 +11,12 @@
  * shell: readline only on a terminal, a signal handler that only sets a flag.)
  * While time runs the prompt says so, with the time: vroc[t=12.3]>.
  *
- * One turn of the loop: the hand's wall clock, the frames that are due, the
- * live sound, the prompt, then select() on the keyboard and the hand's feed
- * until the next thing is due.  A new source of events adds its descriptor to
- * the select and its work to the turn.
+ * One turn of the loop: the hand's wall clock, the live window (what the user
+ * did in it: viewer.h), the frames that are due, the live sound, the prompt,
+ * then select() on the keyboard and the hand's feed until the next thing is due
+ * (with the window open, at most VIEWER_TICK: SDL gives no descriptor to wait
+ * on).  A new source of events adds its descriptor to the select and its work to
+ * the turn.
  */
 #define _GNU_SOURCE /* sigaction in <signal.h> with readline's headers */
 #include <errno.h>
@@ -32,6 +34,7 @@
 #include "media.h"
 #include "shell.h"
 #include "fmt.h"
+#include "viewer.h"
 
 static shell *g_sh;     /* the shell readline's callbacks work on */
 static bool g_done;     /* quit or end of input */
@@ -175,12 +178,14 @@ static int loop_readline(shell *sh)
     g_wall = shell_clock();
     while (!g_done) {
         hand_tick(sh); /* it may press Start */
+        viewer_turn(sh); /* keys and the mouse in the window */
         double wait = media_pump(sh, run_due_frames(sh, &next)); /* frames, live sound */
         mend_line(sh);
         prompt_update(sh, true);
         if (!sh->running) next = 0;
         if (sh->running && (wait < 0 || wait > PROMPT_EVERY)) wait = PROMPT_EVERY;
         if (hand_busy(&sh->hand) && (wait < 0 || wait > HAND_TICK)) wait = HAND_TICK;
+        wait = viewer_wait(sh, wait);
         int in = fileno(rl_instream ? rl_instream : stdin), feed = hand_feed_fd(&sh->hand);
         fd_set fds;
         FD_ZERO(&fds);

@@ -7,8 +7,11 @@
  * Placing is output-sensitive: a place is tried against the objects near it only,
  * found in a uniform grid of cells as wide as the largest new object (objects
  * larger than that, a wall say, are few and tried one by one), so that N objects
- * are placed in O(N) tries' work rather than N^2.  The objects join the world
- * only once all have found room, so that a refusal adds none. */
+ * are placed in O(N) tries' work rather than N^2.  A place is kept clear of the
+ * balls about the new objects (which are turned at random once placed), and of
+ * the shapes of the objects already there, so that a furnished room is filled up
+ * to its walls and floor.  The objects join the world only once all have found
+ * room, so that a refusal adds none. */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -44,11 +47,14 @@ static vec3 rng_unit(unsigned long long *s)
 
 /* ---- the grid of what is placed ---- */
 
-/* A ball to keep clear of: an object's centre of mass and outer radius. */
+/* A ball to keep clear of: an object's centre of mass and outer radius, and for
+ * an object already in the world, the object: a place inside its ball is tried
+ * against its shape. */
 typedef struct {
     vec3 c;
     double r;
-    int next; /* the next ball in its cell, or -1 */
+    const body *obj; /* NULL: an object random is placing */
+    int next;        /* the next ball in its cell, or -1 */
 } ball;
 
 typedef struct {
@@ -108,11 +114,12 @@ static void grid_free(grid *g)
     free(g->big);
 }
 
-/* Adds the ball of radius r at c (room was made by grid_init). */
-static void grid_add(grid *g, vec3 c, double r)
+/* Adds the ball of radius r at c, of object obj already in the world or NULL
+ * (room was made by grid_init). */
+static void grid_add(grid *g, vec3 c, double r, const body *obj)
 {
     int k = g->nballs++;
-    g->balls[k] = (ball){c, r, -1};
+    g->balls[k] = (ball){c, r, obj, -1};
     if (2 * r > g->h) {
         g->big[g->nbig++] = k;
         return;
@@ -127,14 +134,25 @@ static void grid_add(grid *g, vec3 c, double r)
     at->first = k;
 }
 
-/* True when a ball of radius r at c is clear of every ball of the grid's:
- * the same test, ball by ball, as trying all of them. */
+/* True when a ball of radius r at c is clear of ball b: of its ball for an
+ * object random places (it is turned at random after), of its shape for one that
+ * was there (a wall, a floor, a table, a polyhedron: its ball may be far larger). */
+static bool clear_of(const ball *b, vec3 c, double r)
+{
+    if (v3_dist(c, b->c) >= r + b->r) return true;
+    if (!b->obj) return false;
+    closest_proxy place = {NULL, NULL, r, v3(0, 0, 0), c, q_identity()};
+    closest_proxy there = shape_proxy(&b->obj->shape, b->obj->x, b->obj->q);
+    return closest_distance_apart(&place, &there, NULL).status == CLOSEST_SEPARATED;
+}
+
+/* True when a ball of radius r at c is clear of every ball of the grid's (and of
+ * the shapes of those of objects that were there): the same test, ball by ball,
+ * as trying all of them. */
 static bool grid_free_at(grid *g, vec3 c, double r)
 {
-    for (int k = 0; k < g->nbig; k++) {
-        const ball *b = &g->balls[g->big[k]];
-        if (v3_dist(c, b->c) < r + b->r) return false;
-    }
+    for (int k = 0; k < g->nbig; k++)
+        if (!clear_of(&g->balls[g->big[k]], c, r)) return false;
     double reach = r + 0.5 * g->h; /* no ball in a cell is larger than h / 2 */
     long long x0 = cell_of(c.x - reach, g->h), x1 = cell_of(c.x + reach, g->h);
     long long y0 = cell_of(c.y - reach, g->h), y1 = cell_of(c.y + reach, g->h);
@@ -143,7 +161,7 @@ static bool grid_free_at(grid *g, vec3 c, double r)
         for (long long y = y0; y <= y1; y++)
             for (long long z = z0; z <= z1; z++)
                 for (int k = cell_at(g, x, y, z)->first; k >= 0; k = g->balls[k].next)
-                    if (v3_dist(c, g->balls[k].c) < r + g->balls[k].r) return false;
+                    if (!clear_of(&g->balls[k], c, r)) return false;
     return true;
 }
 
@@ -202,7 +220,8 @@ cmd_status cmd_random(shell *sh, const stmt *st)
         sh_error(sh, st, "out of memory");
         goto done;
     }
-    for (int i = 0; i < w->n; i++) grid_add(&g, body_com(w->bodies[i]), w->bodies[i]->shape.r_out);
+    for (int i = 0; i < w->n; i++)
+        grid_add(&g, body_com(w->bodies[i]), w->bodies[i]->shape.r_out, w->bodies[i]);
     for (; made < n; made++) {
         body *b = random_body(sh, &id, err, sizeof err);
         if (!b) {
@@ -237,7 +256,7 @@ cmd_status cmd_random(shell *sh, const stmt *st)
                          "random_size holds more)");
             goto done;
         }
-        grid_add(&g, body_com(b), r);
+        grid_add(&g, body_com(b), r, NULL);
         body_set_rotation(b, rng_unit(&sh->rng), rng_uniform(&sh->rng, 0, M_PI));
         b->v = v3_scale(rng_unit(&sh->rng), rng_uniform(&sh->rng, 0, fmin(2, w->set.max_linear)));
         body_set_angular_vel(
@@ -259,6 +278,7 @@ cmd_status cmd_random(shell *sh, const stmt *st)
     }
     made = 0;
     rc = CMD_OK;
+    if (n > 0) sh->current = w->n - 1; /* the last made, as when an object is created */
 done:
     for (long k = 0; k < made; k++) {
         body_free(made_b[k]);

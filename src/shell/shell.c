@@ -20,6 +20,7 @@
 #include "view/view.h"
 #include "fmt.h"
 #include "media.h"
+#include "viewer.h"
 
 volatile sig_atomic_t shell_interrupted;
 
@@ -104,6 +105,7 @@ cmd_status shell_close_outputs(shell *sh)
 
 void shell_free(shell *sh)
 {
+    viewer_free(sh);
     shell_close_outputs(sh);
     media_free(sh);
     world_free(&sh->w);
@@ -212,6 +214,7 @@ static cmd_status run_parsed(shell *sh, program *p, const char *err)
     }
     cmd_status r = shell_run_program(sh, p);
     program_free(p);
+    viewer_changed(sh); /* the window shows what the statements did */
     /* what the statements printed is checked like any file written */
     errno = 0;
     if (fflush(sh->out) != 0 || ferror(sh->out)) {
@@ -301,7 +304,8 @@ static cmd_status write_frame(shell *sh, const stmt *st)
         log_trace_close(&sh->logs, ignored, sizeof ignored);
         r = shell_output_failed(sh, st, "trace", err);
     }
-    if (r == CMD_OK && sh->view_set.record) shell_overlay(sh);
+    /* the hand and the panel, for whatever draws the frame: record, the movie */
+    if (r == CMD_OK) shell_overlay(sh);
     if (r == CMD_OK && sh->view_set.record &&
         view_refresh(&sh->view, &sh->w, &sh->view_set, sh->w.frame, &sh->view_st, err,
                      sizeof err) != 0) {
@@ -350,9 +354,12 @@ static cmd_status advance(shell *sh, const stmt *st, long n, bool show)
             break;
         }
         media_frame_begin(sh); /* a movie's pictures within the frame start here */
-        /* the hand acts at its rows' instants within the frame (hand.h) */
+        /* the hand acts at its rows' instants within the frame (hand.h), and takes
+         * the window's mouse at its boundaries (viewer.h) */
+        viewer_sample(sh);
         hand_frame_begin(&sh->hand, &sh->w);
         int status = sim_frame_hooked(&sh->w, &hook, err, sizeof err);
+        viewer_sample(sh);
         hand_frame_end(&sh->hand, &sh->w);
         if (cuts == 0 && sh->w.st.speed_cuts > 0) warn_speed_cut(sh, st);
         cuts = sh->w.st.speed_cuts;
@@ -367,6 +374,7 @@ static cmd_status advance(shell *sh, const stmt *st, long n, bool show)
         if (r == CMD_OK && (shell_after_hand(sh) != CMD_OK || (sh->hand_failed && sh->stop_on_error)))
             r = CMD_ERROR;
         if (show) progress_tick(&prog, k + 1, sh->w.time, shell_clock());
+        viewer_frame(sh, k + 1 == n || r != CMD_OK);
     }
     if (show) {
         progress_hide(&prog);

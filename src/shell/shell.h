@@ -60,6 +60,7 @@ typedef struct shell {
     view *view;            /* off-screen context, created on first need */
     view_stats view_st;    /* what drawing has cost */
     struct media *media;   /* sound and movie (media.h), made on first need */
+    struct viewer *viewer; /* the live window (viewer.h), or NULL when closed */
     double wall_time;      /* seconds spent advancing time */
     bool running;          /* `start` given and not stopped */
     int current;           /* index of the current object, or -1 */

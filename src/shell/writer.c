@@ -6,6 +6,7 @@
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "mesh/meshfile.h"
 
@@ -14,6 +15,8 @@
 #include "handlers.h"
 #include "media.h"
 #include "shell.h"
+#include "sound/synth.h"
+#include "viewer.h"
 
 /* n numbers as "(a, b, ...)" in style s. */
 static void write_tuple(FILE *out, const double *v, int n, fmt_style s)
@@ -30,6 +33,11 @@ void writer_vec(FILE *out, vec3 v, fmt_style s)
     write_tuple(out, (const double[3]){v.x, v.y, v.z}, 3, s);
 }
 
+static void write_quat(FILE *out, quat q, fmt_style s)
+{
+    write_tuple(out, (const double[4]){q.w, q.x, q.y, q.z}, 4, s);
+}
+
 /* The k-th word of choices ("a|b|c"). */
 static void write_choice(FILE *out, const char *choices, int k)
 {
@@ -38,8 +46,57 @@ static void write_choice(FILE *out, const char *choices, int k)
     fprintf(out, "%.*s", (int)strcspn(p, "|"), p);
 }
 
-static void write_setting(FILE *out, const shell *sh, const command *c, int for_save)
+/* The hand's exact state (hand.h), the setting named n, in style num; false when
+ * n is none of them. */
+static bool write_hand_exact(FILE *out, const shell *sh, const char *n, fmt_style num)
 {
+    const hand *h = &sh->hand;
+    char a[32], b[32];
+    vec3 x;
+    quat q;
+    hand_grip_pose(h, &x, &q);
+    if (strcmp(n, "tracker_clock") == 0) {
+        double clock, start;
+        hand_clock_of(h, &clock, &start);
+        fprintf(out, "tracker_clock = (%s, %s)\n", fmt_shown(a, clock, num), fmt_shown(b, start, num));
+        return true;
+    }
+    if (strcmp(n, "tracker_row") == 0) {
+        fprintf(out, "tracker_row = %d\n", hand_row(h));
+        return true;
+    }
+    if (strcmp(n, "last_held") == 0) {
+        fprintf(out, "last_held = %s\n", h->last_held >= 0 && h->last_held < sh->w.n
+                                               ? sh->w.bodies[h->last_held]->name : "none");
+        return true;
+    }
+    bool quat_ = strcmp(n, "hand_orientation") == 0 || strcmp(n, "grip_orientation") == 0;
+    bool vec = strcmp(n, "hand_velocity") == 0 || strcmp(n, "hand_spin") == 0 || strcmp(n, "grip_at") == 0;
+    if (!quat_ && !vec) return false;
+    fprintf(out, "%s = ", n);
+    if (quat_) write_quat(out, n[0] == 'h' ? h->q : q, num);
+    else writer_vec(out, n[0] == 'g' ? x : n[5] == 'v' ? h->sv : h->sw, num);
+    if (strcmp(n, "hand_velocity") == 0) fprintf(out, " %s", fmt_shown(a, h->stmt_time, num));
+    fputc('\n', out);
+    return true;
+}
+
+/* The settings save leaves to hand_write: the hand's, after the objects it may
+ * hold. */
+static bool hand_later(const char *n)
+{
+    static const char *const later[] = {"hand", "hand_rotate", "trigger", "tracker", "tracker_time",
+                                        "grip", "tracker_clock", "tracker_row", "hand_orientation",
+                                        "hand_velocity", "hand_spin", "grip_at", "grip_orientation",
+                                        "last_held"};
+    for (size_t k = 0; k < sizeof later / sizeof *later; k++)
+        if (strcmp(n, later[k]) == 0) return true;
+    return false;
+}
+
+static void write_setting(FILE *out, const shell *sh, const command *c, const char *save_path)
+{
+    int for_save = save_path != NULL;
     const shell_settings *s = &sh->set;
     const view_settings *vs = &sh->view_set;
     fmt_style num = for_save ? FMT_EXACT : shell_shown(sh);
@@ -59,13 +116,24 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
                 path[0] ? path : "off", path[0] ? "\"" : "");
         return;
     }
-    /* how numbers are shown is the console's, not the world's */
+    /* how numbers are shown is the console's, not the world's, as is the window */
     if (for_save && strcmp(n, "precision") == 0) return;
-    /* what the hand does, after the objects it may hold (hand_write) */
-    bool after = strcmp(n, "tracker") == 0 || strcmp(n, "tracker_time") == 0 ||
-                 strcmp(n, "grip") == 0 || strcmp(n, "trigger") == 0;
-    if (for_save && (after || (!sh->hand.used && (strcmp(n, "hand") == 0 || strcmp(n, "hand_rotate") == 0))))
+    if (strcmp(n, "window") == 0) {
+        if (!for_save) fprintf(out, "window = %s\n", viewer_is_open(sh) ? "on" : "off");
         return;
+    }
+    /* what the hand does, after the objects it may hold (hand_write) */
+    /* (the clock runs whether or not the hand was used) */
+    if (for_save && hand_later(n) && (sh->hand.used || strcmp(n, "tracker_clock") != 0)) return;
+    if (write_hand_exact(out, sh, n, num)) return;
+    if (strcmp(n, "collision_sound") == 0 && for_save) {
+        char rel[PATH_MAX];
+        const char *snd = sh->sound_set.collision_sound;
+        bool file = strcmp(snd, "off") != 0 && synth_find(snd) < 0;
+        if (file) writer_path(snd, save_path, rel, sizeof rel);
+        fprintf(out, "collision_sound = \"%s\"\n", file ? rel : snd);
+        return;
+    }
     if (strcmp(n, "tracker") == 0) {
         if (hs->tracker[0]) fprintf(out, "tracker = \"%s\"\n", hs->tracker);
         else fprintf(out, "tracker = off\n");
@@ -92,7 +160,16 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
         return;
     }
     if (strcmp(n, "clock") == 0) {
-        fprintf(out, "clock = (%s, %ld)\n", fmt_shown(a, sh->w.time_base, num), sh->w.base_frames);
+        /* the clock counts frames of the time_step it had when they ran; one
+         * changed since (a slider of the panel, at a frame's end) counts from the
+         * next frame on (with no frames counted, the step does not matter) */
+        const world *w = &sh->w;
+        bool changed =
+            w->base_frames > 0 && memcmp(&w->base_step, &w->set.time_step, sizeof w->base_step) != 0;
+        char b[32];
+        if (changed) fprintf(out, "time_step = %s\n", fmt_shown(b, w->base_step, num));
+        fprintf(out, "clock = (%s, %ld)\n", fmt_shown(a, w->time_base, num), w->base_frames);
+        if (changed) fprintf(out, "time_step = %s\n", fmt_shown(b, w->set.time_step, num));
         return;
     }
     if (strcmp(n, "frame") == 0) {
@@ -141,38 +218,69 @@ static void write_setting(FILE *out, const shell *sh, const command *c, int for_
 void setting_write(FILE *out, const shell *sh, const command *c)
 {
     if (c->run == cmd_select) fprintf(out, "select %s\n", sh->hand.set.select_mode ? "on" : "off");
-    else write_setting(out, sh, c, 0);
+    else write_setting(out, sh, c, NULL);
 }
 
-void settings_write(FILE *out, const shell *sh, int for_save)
+void settings_write(FILE *out, const shell *sh, const char *save_path)
 {
     for (int i = 0; i < command_count; i++) {
         const command *c = &command_table[i];
-        if (c->form == FORM_SETTING) write_setting(out, sh, c, for_save);
+        if (c->form == FORM_SETTING) write_setting(out, sh, c, save_path);
         else if (c->run == cmd_select) /* the hand's select mode is a setting too */
             setting_write(out, sh, c);
     }
 }
 
-void hand_write(FILE *out, const shell *sh)
+void hand_write(FILE *out, const shell *sh, const char *save_path)
 {
     const hand *h = &sh->hand;
-    char a[32];
+    const fmt_style x = FMT_EXACT;
+    char a[32], rel[PATH_MAX];
     if (!h->used) return;
-    fprintf(out, "# the hand\n");
+    fprintf(out, "# the hand: its tracker and the place in it, its pose, what it holds\n");
     if (h->playing) {
-        fprintf(out, "tracker = \"%s\"\ntracker_time = %s\n", h->set.tracker,
-                fmt_num(a, hand_tracker_time(h)));
+        writer_path(h->set.tracker, save_path, rel, sizeof rel);
+        fprintf(out, "tracker = \"%s\"\ntracker_time = %s\n", rel, fmt_shown(a, hand_tracker_time(h), x));
     } else if (h->set.tracker[0]) {
         fprintf(out, "# tracker = \"%s\" (a live feed: not opened again)\n", h->set.tracker);
     }
+    write_hand_exact(out, sh, "tracker_clock", x);
+    if (h->playing) write_hand_exact(out, sh, "tracker_row", x);
+    fprintf(out, "hand = ");
+    writer_vec(out, h->p, x);
+    fprintf(out, "\nhand_rotate = ");
+    writer_vec(out, h->set.hand_rotate.dir, x);
+    fprintf(out, " %s\n", fmt_shown(a, h->set.hand_rotate.amount, x));
+    write_hand_exact(out, sh, "hand_orientation", x);
+    write_hand_exact(out, sh, "hand_velocity", x);
+    write_hand_exact(out, sh, "hand_spin", x);
     fprintf(out, "grip = %s\n", hand_grip_word(h, &sh->w));
+    if (h->grip == GRIP_OBJECT || h->grip == GRIP_PANEL) {
+        write_hand_exact(out, sh, "grip_at", x);
+        write_hand_exact(out, sh, "grip_orientation", x);
+    }
+    if (h->grip == GRIP_OBJECT && h->held >= 0 && h->held < sh->w.n) {
+        /* the held object's motion as it was: the grip above gave it the hand's */
+        const body *b = sh->w.bodies[h->held];
+        const char *what[] = {"velocity", "angular_vel", "angular_momentum", "hold_pivot", "hold_velocity"};
+        const vec3 value[] = {b->v, b->w, b->L, b->hold_pivot, b->hold_v};
+        for (int k = 0; k < 5; k++) {
+            fprintf(out, "%s.%s = ", b->name, what[k]);
+            writer_vec(out, value[k], x);
+            fputc('\n', out);
+        }
+    }
+    write_hand_exact(out, sh, "last_held", x);
 }
 
 void writer_path(const char *path, const char *save_path, char *out, size_t outlen)
 {
-    char real[PATH_MAX], dir[PATH_MAX];
-    if (!realpath(path, real)) snprintf(real, sizeof real, "%s", path);
+    char real[PATH_MAX], dir[PATH_MAX], cwd[PATH_MAX];
+    if (!realpath(path, real)) { /* (a file gone since: its path from here) */
+        bool joined = path[0] != '/' && getcwd(cwd, sizeof cwd) &&
+                      snprintf(real, sizeof real, "%s/%s", cwd, path) < (int)sizeof real;
+        if (!joined) snprintf(real, sizeof real, "%s", path);
+    }
     snprintf(dir, sizeof dir, "%s", save_path);
     char *slash = strrchr(dir, '/');
     if (!slash) snprintf(dir, sizeof dir, ".");
@@ -229,11 +337,6 @@ static void body_axis_angle(const body *b, vec3 *axis, double *angle)
     *axis = b->rot_axis;
     *angle = b->rot_angle;
     if (!b->rot_given) q_to_axis_angle(b->q, axis, angle);
-}
-
-static void write_quat(FILE *out, quat q, fmt_style s)
-{
-    write_tuple(out, (const double[4]){q.w, q.x, q.y, q.z}, 4, s);
 }
 
 void body_write(FILE *out, const body *b, write_style st)
@@ -348,6 +451,22 @@ void property_write(FILE *out, const world *w, int i, const command *c, fmt_styl
     fputc('\n', out);
 }
 
+static int cmp_int(const void *x, const void *y)
+{
+    int a = *(const int *)x, b = *(const int *)y;
+    return (a > b) - (a < b);
+}
+
+/* The other object of pair k when it is a lasting contact of object i (and the
+ * other comes before i, when only_later), else -1. */
+static int contact_other(const world *w, long k, int i, int only_later)
+{
+    const pair *p = &w->pairs.p[k];
+    if (!p->touching || (p->a != i && p->b != i)) return -1;
+    int o = p->a == i ? p->b : p->a;
+    return only_later && o > i ? -1 : o;
+}
+
 void contact_write(FILE *out, const world *w, int i, int only_later)
 {
     static const char *modes[] = {"free", "slide", "general"};
@@ -357,10 +476,19 @@ void contact_write(FILE *out, const world *w, int i, int only_later)
                 b->slide_face);
     fprintf(out, "mode = %s\n", body_is_static(b) ? "free" : modes[b->mode]);
     if (!body_is_static(b)) fprintf(out, "resting = %s\n", b->state == STATE_RESTING ? "on" : "off");
+    /* in the order of the other objects, whatever the order the pairs were made
+     * in: a world saved, read back and saved again gives the same file (in the
+     * pairs' order when there is no memory to sort them: the same contacts) */
+    int m = 0;
+    for (long k = 0; k < w->pairs.n; k++) m += contact_other(w, k, i, only_later) >= 0;
+    int local[32], *other = m <= 32 ? local : malloc((size_t)m * sizeof *other), n = 0;
     for (long k = 0; k < w->pairs.n; k++) {
-        const pair *p = &w->pairs.p[k];
-        if (!p->touching || (p->a != i && p->b != i)) continue;
-        int o = p->a == i ? p->b : p->a;
-        if (!only_later || o < i) fprintf(out, "touching = %s\n", w->bodies[o]->name);
+        int o = contact_other(w, k, i, only_later);
+        if (o < 0) continue;
+        if (other) other[n++] = o;
+        else fprintf(out, "touching = %s\n", w->bodies[o]->name);
     }
+    if (n > 1) qsort(other, (size_t)n, sizeof *other, cmp_int);
+    for (int k = 0; k < n; k++) fprintf(out, "touching = %s\n", w->bodies[other[k]]->name);
+    if (other != local) free(other);
 }

@@ -30,18 +30,21 @@ typedef struct {
 void writer_vec(FILE *out, vec3 v, fmt_style s);
 
 /* Writes every setting as statements of the language, in the command table's
- * order; for `save` the log files (trace, events, hand_log) are written as
- * comments, since reading them back would truncate the logs, the hand's pose only
- * when the hand has been used, and what the hand holds is left to hand_write. */
-void settings_write(FILE *out, const struct shell *sh, int for_save);
+ * order: for show (save_path NULL), or for a world saved to save_path, where the
+ * log files (trace, events, hand_log) are written as comments, since reading
+ * them back would truncate the logs, a sound file's path is written as
+ * writer_path says, and the hand is left to hand_write. */
+void settings_write(FILE *out, const struct shell *sh, const char *save_path);
 
 /* Writes the setting c (a FORM_SETTING, or select) as show does, "NAME = value". */
 void setting_write(FILE *out, const struct shell *sh, const command *c);
 
-/* For `save`, after the objects and their contact state: the tracker, its place
- * in its file, and what the trigger holds (grip), which read back without
- * pressing or grabbing anything. */
-void hand_write(FILE *out, const struct shell *sh);
+/* For a world saved to save_path, after the objects and their contact state:
+ * the hand's exact state (when it has been used): the tracker file (writer_path)
+ * and the place in it, the pose, the velocity its statements gave it, what the
+ * trigger holds (grip) and how, the held object's motion, and the object the
+ * re-select button takes; all read back without pressing or grabbing anything. */
+void hand_write(FILE *out, const struct shell *sh, const char *save_path);
 
 /* Writes body b as statements that recreate it (its creation line first): as
  * typed (rotate, linear_vel, angular_vel), then exactly (orientation, velocity,
@@ -53,9 +56,12 @@ void body_write(FILE *out, const body *b, write_style s);
  * touched) is written as a comment that says so. */
 void property_write(FILE *out, const struct world *w, int i, const command *c, fmt_style s);
 
-/* The path of path as a saved file at save_path names it: relative to save_path's
- * folder when path lies under it (both taken through realpath), else absolute.
- * (Issue 31 writes one such helper for every path save writes.) */
+/* The path of path (absolute, or from the current folder) as a saved file at
+ * save_path names it: relative to save_path's folder when path lies under it
+ * (both taken through realpath), else absolute; read takes a relative path in a
+ * file from that file's folder, so the saved world finds its files from any
+ * folder.  The one rule for every file save names: a polyhedron's, the tracker's,
+ * the collision sound's. */
 void writer_path(const char *path, const char *save_path, char *out, size_t outlen);
 
 /* Writes the contact state of body i of w (language.md, "Exact state"): its mode,

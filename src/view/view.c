@@ -105,8 +105,8 @@ static double view_far(const world *w, const view_settings *vs)
     return far;
 }
 
-/* Both eyes from the head pose.  Returns 0, or -1 with a message when the pose or
- * the optics cannot give a view. */
+/* Both eyes from the head pose (w NULL: the far plane at VIEW_FAR_MIN).  Returns 0,
+ * or -1 with a message when the pose or the optics cannot give a view. */
 static int view_eyes(const world *w, const view_settings *s, view_eye eye[2], char *err,
                      size_t errlen)
 {
@@ -140,7 +140,7 @@ static int view_eyes(const world *w, const view_settings *s, view_eye eye[2], ch
     vec3 u = v3_cross(r, f);
     double top = VIEW_NEAR * tan(0.5 * s->fov * M_PI / 180.0);
     double half_w = top * (double)s->image_w / (double)s->image_h;
-    double far = view_far(w, s);
+    double far = w ? view_far(w, s) : VIEW_FAR_MIN;
     for (int i = 0; i < 2; i++) {
         double side_sign = i == 0 ? -1.0 : 1.0; /* left eye at -r */
         double shift = -side_sign * 0.5 * s->ipd * VIEW_NEAR / dist;
@@ -158,7 +158,9 @@ static int view_eyes(const world *w, const view_settings *s, view_eye eye[2], ch
  * OSMesaDestroyContext never frees (its st manager and each context's last
  * framebuffer).  Under LeakSanitizer that would fail every program that draws, so a
  * sanitizer build tells LSan to ignore allocations made inside libOSMesa (LSan calls
- * this hook at start-up; it exists only in sanitizer builds). */
+ * this hook at start-up; it exists only in sanitizer builds).  So too libdbus's:
+ * SDL2 (the window, window.h) opens D-Bus for the screen saver and input methods,
+ * and the SDL of Debian 12 (2.26) cannot be told to shut it down at SDL_Quit. */
 #if defined(__SANITIZE_ADDRESS__)
 #define VIEW_LSAN_HOOK 1
 #elif defined(__has_feature)
@@ -168,7 +170,7 @@ static int view_eyes(const world *w, const view_settings *s, view_eye eye[2], ch
 #endif
 #ifdef VIEW_LSAN_HOOK
 const char *__lsan_default_suppressions(void);
-const char *__lsan_default_suppressions(void) { return "leak:libOSMesa.so\n"; }
+const char *__lsan_default_suppressions(void) { return "leak:libOSMesa.so\nleak:libdbus-1.so\n"; }
 #endif
 
 /* Fixed state: lights, material, depth test, culling, arrays.  The lights are given
@@ -504,6 +506,23 @@ int view_render_posed(view **v, const world *w, const view_pose *poses, const vi
     return view_render_eyes(v, w, poses, vs, 2, err, errlen);
 }
 
+int view_ray(const view_settings *vs, int eye, double px, double py, vec3 *origin, vec3 *dir,
+             char *err, size_t errlen)
+{
+    view_settings one = *vs;
+    if (eye < 0) one.ipd = 0; /* the head's own eye, midway: both frusta in one */
+    view_eye e[2];
+    if (view_eyes(NULL, &one, e, err, errlen) != 0) return -1;
+    const view_eye *c = &e[eye > 0 ? 1 : 0];
+    /* the point on the near plane under the pixel (glViewport maps the frustum's
+     * left..right onto 0..image_w, top..bottom onto 0..image_h) */
+    double x = c->left + (c->right - c->left) * px / (double)vs->image_w;
+    double y = c->top - (c->top - c->bottom) * py / (double)vs->image_h;
+    *origin = c->pos;
+    *dir = v3_norm(v3_add(v3_scale(c->f, c->near), v3_add(v3_scale(c->r, x), v3_scale(c->u, y))));
+    return 0;
+}
+
 const unsigned char *view_pixels(const view *v, int eye, int *width, int *height)
 {
     if (!v || eye < 0 || eye > 1 || !v->have[eye]) return NULL;
@@ -679,6 +698,20 @@ static int view_write_files(view_file *f, int n, int *files, char *err, size_t e
     return rc;
 }
 
+const unsigned char *view_picture(view *v, stereo_mode mode, int *width, int *height)
+{
+    bool two = mode != STEREO_MONO;
+    if (!v || !v->have[0] || (two && !v->have[1])) return NULL;
+    *width = mode == STEREO_PAIR || mode == STEREO_SBS ? 2 * v->w : v->w;
+    *height = v->h;
+    switch (mode) {
+    case STEREO_PAIR:
+    case STEREO_SBS: view_compose_sbs(v); return v->out;
+    case STEREO_ANAGLYPH: view_compose_anaglyph(v); return v->out;
+    default: return v->eye[0];
+    }
+}
+
 /* Renders and writes the frame's files; *files counts those written. */
 static int view_frame(view **v, const world *w, const view_settings *s, long frame, int *files,
                       char *err, size_t errlen)
@@ -697,13 +730,12 @@ static int view_frame(view **v, const world *w, const view_settings *s, long fra
         n = 2;
         break;
     case STEREO_SBS:
-        view_compose_sbs(vw);
-        view_file_init(&f[0], s->output, frame, "sbs", vw->out, 2 * vw->w, vw->h);
+    case STEREO_ANAGLYPH: {
+        int pw, ph;
+        const unsigned char *pic = view_picture(vw, s->stereo, &pw, &ph);
+        view_file_init(&f[0], s->output, frame, s->stereo == STEREO_SBS ? "sbs" : "anaglyph", pic, pw, ph);
         break;
-    case STEREO_ANAGLYPH:
-        view_compose_anaglyph(vw);
-        view_file_init(&f[0], s->output, frame, "anaglyph", vw->out, vw->w, vw->h);
-        break;
+    }
     case STEREO_MONO:
         view_file_init(&f[0], s->output, frame, "left", vw->eye[0], vw->w, vw->h);
         break;

@@ -133,6 +133,21 @@ int view_refresh(view **v, const world *w, const view_settings *vs, long frame, 
  * yet, or the last refresh was mono and eye is 1).  Valid until the next view_* call. */
 const unsigned char *view_pixels(const view *v, int eye, int *width, int *height);
 
+/* The last rendering as `stereo` mode lays it out: pair and sbs the two eyes side
+ * by side (2 image_w x image_h, left eye on the left), anaglyph view_anaglyph's
+ * image, mono the left eye: what the window shows, and the PNG files hold (a pair's
+ * two halves).  NULL when an eye it needs has not been rendered.  Valid until the
+ * next view_* call. */
+const unsigned char *view_picture(view *v, stereo_mode mode, int *width, int *height);
+
+/* The ray through the point (px, py) of eye `eye`'s image (0 left, 1 right, -1 the
+ * head's own, midway between them, as if ipd were 0), in pixels from its top left
+ * corner (a pixel's centre is at +0.5): its origin (the eye) and unit direction, in
+ * world coordinates.  What lies along it is drawn there.  Returns 0, or -1 with a
+ * message when the head pose or the optics give no view. */
+int view_ray(const view_settings *vs, int eye, double px, double py, vec3 *origin, vec3 *dir,
+             char *err, size_t errlen);
+
 /* Destroys the context and the buffers (NULL is fine). */
 void view_free(view *v);
 
