@@ -143,15 +143,23 @@ void answer_object(world *w, int i, double t, double t_end)
     }
     int n = rest_cluster(w, i, mine);
     for (int j = 0; j < n; j++) step_sync(w, mine[j], t);
-    /* its step ends where a new support point lands: an instant, which goes on
-     * to the modes and the next step itself */
+    /* the step ends with its last kicks, which stop its closed points
+     * approaching; where it ends at a new support point's landing, that is
+     * then an instant, which goes on to the modes and the next step itself (so
+     * that the landing meets the closed points at rest, as in the limit of short
+     * steps: answered together with their approach, of order the step's
+     * acceleration times its length, it would lose energy in proportion to the
+     * landing's speed) */
     instant_seed *seeds = w->answer.seeds;
     int ns = landings(w, mine, n, seeds);
+    cluster_settle(w, mine, n);
     if (ns > 0) {
+        /* (their flights from the kicked states, which the instant brings its
+         * objects to t by) */
+        for (int j = 0; j < n; j++) step_start(w, mine[j], t);
         instant_answer(w, seeds, ns, t, t_end);
         return;
     }
-    cluster_settle(w, mine, n);
     rest_classify(w, mine, n);
     for (int j = 0; j < n; j++) {
         const body *o = w->bodies[mine[j]];
