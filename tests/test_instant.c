@@ -271,6 +271,45 @@ static void cradles_send_k_out_for_k_in(void **state)
     }
 }
 
+/* The same on a floor under gravity: five touching balls resting on it, the
+ * first sent at the others at 1.5 m/s as time starts, e = 1.  The blow passes
+ * along the row as without the floor, which takes none of it (it is
+ * horizontal); the last ball slides off at 1.5 m/s along the floor, which holds
+ * it without a bounce, and the others stand.  Four collisions in 10 frames,
+ * the floor's in none of them. */
+static void cradle_on_a_floor_slides_the_last_ball_off(void **state)
+{
+    (void)state;
+    world w;
+    instant_world(&w, G);
+    add_static_box(&w, "floor", v3(2, 2, 0.5))->x = v3(0, 0, -0.5);
+    body *b[5];
+    for (int i = 0; i < 5; i++) {
+        char name[16];
+        snprintf(name, sizeof name, "b%d", i);
+        b[i] = add_ball(&w, name, 0.05);
+        b[i]->x = v3(0.1 * i - 0.2, 0, 0.05);
+    }
+    const double v = 1.5;
+    b[0]->v = v3(v, 0, 0);
+    w.set.time_step = 0.05;
+    long hops = 0;
+    for (int f = 0; f < 10; f++) {
+        frames(&w, 1);
+        for (long k = 0; k < w.nevents; k++) hops += w.events[k].a == 0 || w.events[k].b == 0;
+    }
+    print_message("cradle on a floor: %ld collisions (%ld with the floor), the last at (%.15g, %.3g, %.3g), "
+                  "mode %d\n", w.st.collisions, hops, b[4]->v.x, b[4]->v.y, b[4]->v.z, b[4]->mode);
+    assert_int_equal(w.st.collisions, 4);
+    assert_int_equal(hops, 0);
+    assert_int_equal(b[4]->mode, MODE_SLIDE);
+    assert_near(b[4]->v.x, v, 1e-8 * v);
+    assert_near(b[4]->v.z, 0, 1e-12);
+    assert_near(b[4]->x.z, 0.05, 1e-6);
+    for (int i = 0; i < 4; i++) assert_near(b[i]->v.x, 0, 1e-8 * v);
+    world_free(&w);
+}
+
 /* A stack of two touching balls (radius 0.1, mass 1) on a floor, and a third
  * thrown down onto it at v, e = 1.  The blow goes down in waves and back up: the
  * thrown ball stops and the top one takes v (m v), the top one stops and the
@@ -465,6 +504,7 @@ int main(void)
         cmocka_unit_test(ball_lands_on_two_balls_alike),
         cmocka_unit_test(ball_lands_in_grooves_alike),
         cmocka_unit_test(cradles_send_k_out_for_k_in),
+        cmocka_unit_test(cradle_on_a_floor_slides_the_last_ball_off),
         cmocka_unit_test(blow_on_a_touching_stack_goes_down_and_back_up),
         cmocka_unit_test(leaning_cube_lands_and_rocks_back),
         cmocka_unit_test(pinched_ball_ends_its_instant),

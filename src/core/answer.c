@@ -40,6 +40,7 @@ void answer_free(answer_scratch *s)
     free(s->now);
     free(s->mark);
     free(s->landing);
+    free(s->kicks);
     free(s->seeds);
     free(s->lcp);
     instant_free(s->instant);
@@ -64,6 +65,7 @@ int answer_prepare(world *w, bool changed)
         s->now = grow_resized(s->now, sizeof *s->now, w->n, &ok);
         s->mark = grow_resized(s->mark, sizeof *s->mark, w->n, &ok);
         s->landing = grow_resized(s->landing, sizeof *s->landing, w->n, &ok);
+        s->kicks = grow_resized(s->kicks, sizeof *s->kicks, w->n, &ok);
         s->seeds = grow_resized(s->seeds, sizeof *s->seeds, w->n, &ok);
         if (!ok) return -1;
         s->cap = w->n;
@@ -74,6 +76,7 @@ int answer_prepare(world *w, bool changed)
         s->now[i] = w->bodies[i];
         s->mark[i] = false;
         s->landing[i] = -1;
+        s->kicks[i].h = 0;
     }
     return 0;
 }
@@ -142,7 +145,10 @@ void answer_object(world *w, int i, double t, double t_end)
         return;
     }
     int n = rest_cluster(w, i, mine);
-    for (int j = 0; j < n; j++) step_sync(w, mine[j], t);
+    for (int j = 0; j < n; j++) {
+        step_sync(w, mine[j], t);
+        w->answer.kicks[mine[j]].h = 0;
+    }
     /* the step ends with its last kicks, which stop its closed points
      * approaching; where it ends at a new support point's landing, that is
      * then an instant, which goes on to the modes and the next step itself (so

@@ -26,6 +26,14 @@ typedef struct world world;
  * calls: cluster.c, rest.c), sized by answer_prepare when the step is prepared,
  * so that no event allocates.  Each list and copy has the one user named here,
  * so that none is borrowed while another holds it. */
+/* The start kick of a cluster's step (cluster.h) that is under way: when it began
+ * (t0), its length h (0: none under way), and the velocity and angular momentum
+ * the kick gave the object (dv, dL). */
+typedef struct {
+    double t0, h;
+    vec3 dv, dL;
+} kick_record;
+
 typedef struct {
     int *objects;     /* per object: the objects an event answers (answer_contact's
                        * component, answer_object's cluster; and the objects sim.c's
@@ -41,6 +49,7 @@ typedef struct {
                        * works on it */
     bool *mark;       /* per object: marks, all false between uses (the objects
                        * reached, the mobile objects of a contact problem) */
+    kick_record *kicks; /* per object: its cluster's step under way (cluster_kick) */
     long *landing;    /* per object: the pair whose new support point its cluster's
                        * step ends at (cluster_kick), or -1 */
     instant_seed *seeds; /* per object: the landings one cluster's step ends at */

@@ -344,7 +344,10 @@ static void newton(world *w, const int *list, int n, points *pts, double *lam, d
 
 double cluster_kick(world *w, const int *list, int n, double t, double t_end)
 {
-    for (int k = 0; k < n; k++) w->answer.landing[list[k]] = -1;
+    for (int k = 0; k < n; k++) {
+        w->answer.landing[list[k]] = -1;
+        w->answer.kicks[list[k]].h = 0;
+    }
     double h = d_min(SIM_CLUSTER_STEP, t_end - t);
     double s = fastest(w, list, n) + v3_len(world_accel(w)) * h;
     if (s * h > SIM_CLUSTER_MOVE) h = SIM_CLUSTER_MOVE / s;
@@ -372,8 +375,21 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end)
         newton(w, list, n, &pts, lam, t, h);
     }
     if (which >= 0) note_landing(w, &pts, which);
+    /* the kicks, and what they gave each object (answer.h: an instant within
+     * the step takes back the share not yet spent) */
+    kick_record *rec = w->answer.kicks;
+    for (int k = 0; k < n; k++) {
+        const body *b = w->bodies[list[k]];
+        rec[list[k]] = (kick_record){t, h, b->v, b->L};
+    }
     impulse_apply(pts.row, pts.nclosed, w->answer.now, mobile, lam);
-    for (int k = 0; k < n; k++) mobile[list[k]] = false;
+    for (int k = 0; k < n; k++) {
+        const body *b = w->bodies[list[k]];
+        kick_record *r = &rec[list[k]];
+        r->dv = v3_sub(b->v, r->dv);
+        r->dL = v3_sub(b->L, r->dL);
+        mobile[list[k]] = false;
+    }
     return h;
 }
 

@@ -111,13 +111,30 @@ static bool mobile(const world *w, int i)
     return !body_is_static(b) && !b->held;
 }
 
-/* Object i joins the instant: brought to its time. */
+/* Object i joins the instant: brought to its time.  One within a cluster's step
+ * has its velocities as the step's contact forces would have them there: the
+ * step's start kick gave it at once the impulse of the forces over the first
+ * half of the step (cluster.h), and by a fraction s of the step they have
+ * given it their impulse over s of it, so a share 1 - 2 s of the kick is taken
+ * back (a share given ahead).  Without it, an object struck as its step begins
+ * (a row of touching balls on a floor) would leave with the kick that was to
+ * hold it up against gravity, and hop. */
 static void join(world *w, instant_work *I, int i)
 {
     if (I->joined[i]) return;
     I->joined[i] = true;
     I->objects[I->nobj++] = i;
     step_sync(w, i, I->t);
+    kick_record *k = &w->answer.kicks[i];
+    if (k->h > 0 && I->t >= k->t0 && I->t < k->t0 + k->h) {
+        body *b = w->bodies[i];
+        double back = 1 - 2 * (I->t - k->t0) / k->h;
+        b->v = v3_mad(b->v, k->dv, -back);
+        b->L = v3_mad(b->L, k->dL, -back);
+        body_update_w(b);
+        step_start(w, i, I->t);
+    }
+    k->h = 0;
 }
 
 /* Object i's centre of mass at the instant, without bringing it there (for a
