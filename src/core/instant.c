@@ -75,6 +75,10 @@ struct instant_work {
     int *objects;   /* the objects joined, in the order they joined */
     int nobj, cap;
     double t;
+    bool take_back; /* the joining objects' cluster kicks are taken back (join) */
+    bool checked;   /* and instant_answer has seen that the seeds close without */
+    int *backs;     /* the seeds' objects they were taken back from, nbacks */
+    int nbacks;
 };
 
 int instant_prepare(instant_work **iw, int n)
@@ -86,6 +90,7 @@ int instant_prepare(instant_work **iw, int n)
     I->joined = grow_resized(I->joined, sizeof *I->joined, n, &ok);
     I->opened = grow_resized(I->opened, sizeof *I->opened, n, &ok);
     I->objects = grow_resized(I->objects, sizeof *I->objects, n, &ok);
+    I->backs = grow_resized(I->backs, sizeof *I->backs, n, &ok);
     if (!ok) return -1;
     for (int i = I->cap; i < n; i++) I->joined[i] = I->opened[i] = false;
     I->cap = n;
@@ -98,8 +103,11 @@ void instant_free(instant_work *iw)
     free(iw->joined);
     free(iw->opened);
     free(iw->objects);
+    free(iw->backs);
     free(iw);
 }
+
+static double closing_of(const world *w, const instant_work *I, const contact *c);
 
 /* ------------------------------------------------------------ who joins */
 
@@ -111,6 +119,19 @@ static bool mobile(const world *w, int i)
     return !body_is_static(b) && !b->held;
 }
 
+/* The share of object i's cluster kick that is not yet spent at the instant
+ * (join), added back times `sign` (-1 takes it back, +1 gives it again). */
+static void kick_share(world *w, const instant_work *I, int i, double sign)
+{
+    const kick_record *k = &w->answer.kicks[i];
+    body *b = w->bodies[i];
+    double share = 1 - 2 * (I->t - k->t0) / k->h;
+    b->v = v3_mad(b->v, k->dv, sign * share);
+    b->L = v3_mad(b->L, k->dL, sign * share);
+    body_update_w(b);
+    step_start(w, i, I->t);
+}
+
 /* Object i joins the instant: brought to its time.  One within a cluster's step
  * has its velocities as the step's contact forces would have them there: the
  * step's start kick gave it at once the impulse of the forces over the first
@@ -118,7 +139,8 @@ static bool mobile(const world *w, int i)
  * given it their impulse over s of it, so a share 1 - 2 s of the kick is taken
  * back (a share given ahead).  Without it, an object struck as its step begins
  * (a row of touching balls on a floor) would leave with the kick that was to
- * hold it up against gravity, and hop. */
+ * hold it up against gravity, and hop.  (Not where the kicks themselves made the
+ * instant: instant_answer.) */
 static void join(world *w, instant_work *I, int i)
 {
     if (I->joined[i]) return;
@@ -126,13 +148,12 @@ static void join(world *w, instant_work *I, int i)
     I->objects[I->nobj++] = i;
     step_sync(w, i, I->t);
     kick_record *k = &w->answer.kicks[i];
-    if (k->h > 0 && I->t >= k->t0 && I->t < k->t0 + k->h) {
-        body *b = w->bodies[i];
-        double back = 1 - 2 * (I->t - k->t0) / k->h;
-        b->v = v3_mad(b->v, k->dv, -back);
-        b->L = v3_mad(b->L, k->dL, -back);
-        body_update_w(b);
-        step_start(w, i, I->t);
+    if (I->take_back && k->h > 0 && I->t >= k->t0 && I->t < k->t0 + k->h) {
+        kick_share(w, I, i, -1);
+        if (!I->checked) { /* (the seeds' objects: instant_answer decides) */
+            I->backs[I->nbacks++] = i;
+            return;
+        }
     }
     k->h = 0;
 }
@@ -433,7 +454,9 @@ void instant_answer(world *w, const instant_seed *seeds, int n, double t, double
 {
     instant_work *I = w->answer.instant;
     I->t = t;
-    I->nc = I->nr = I->nobj = 0;
+    I->nc = I->nr = I->nobj = I->nbacks = 0;
+    I->take_back = true;
+    I->checked = false;
     w->time = t;
     for (int s = 0; s < n; s++) {
         const pair *p = &w->pairs.p[seeds[s].slot];
@@ -442,6 +465,21 @@ void instant_answer(world *w, const instant_seed *seeds, int n, double t, double
         if (!listed(I, seeds[s].slot)) add_contact(w, I, seeds[s].slot, &seeds[s].r, seeds[s].hit);
     }
     I->nseeds = I->nc;
+    /* where none of the seeds approaches without the kicks taken back, the
+     * kicks made the instant (a cluster pressed onto something new): it is
+     * answered with them, as they are, else the next step's kicks would make it
+     * again */
+    bool closes = false;
+    for (int k = 0; k < I->nseeds && !closes; k++) {
+        const body *A = w->bodies[I->c[k].p->a], *B = w->bodies[I->c[k].p->b];
+        closes = closing_of(w, I, &I->c[k]) > tol_speed(A, B);
+    }
+    for (int k = 0; k < I->nbacks; k++) {
+        if (!closes) kick_share(w, I, I->backs[k], 1);
+        w->answer.kicks[I->backs[k]].h = 0;
+    }
+    I->take_back = closes;
+    I->checked = true;
     bool any = false;
     for (int k = 0; k < I->nobj; k++) any = any || mobile(w, I->objects[k]);
     if (!any) {
