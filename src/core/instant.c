@@ -125,22 +125,23 @@ static void kick_share(world *w, const instant_work *I, int i, double sign)
 {
     const kick_record *k = &w->answer.kicks[i];
     body *b = w->bodies[i];
-    double share = 1 - 2 * (I->t - k->t0) / k->h;
+    double share = d_max(0, 1 - 2 * (I->t - k->t0) / k->h);
     b->v = v3_mad(b->v, k->dv, sign * share);
     b->L = v3_mad(b->L, k->dL, sign * share);
     body_update_w(b);
     step_start(w, i, I->t);
 }
 
-/* Object i joins the instant: brought to its time.  One within a cluster's step
- * has its velocities as the step's contact forces would have them there: the
- * step's start kick gave it at once the impulse of the forces over the first
- * half of the step (cluster.h), and by a fraction s of the step they have
- * given it their impulse over s of it, so a share 1 - 2 s of the kick is taken
- * back (a share given ahead).  Without it, an object struck as its step begins
- * (a row of touching balls on a floor) would leave with the kick that was to
- * hold it up against gravity, and hop.  (Not where the kicks themselves made the
- * instant: instant_answer.) */
+/* Object i joins the instant: brought to its time.  One within the first half
+ * of a cluster's step has its velocities as the step's contact forces would
+ * have them there: the step's start kick gave it at once the impulse of the
+ * forces over the first half of the step (cluster.h), and by a fraction s of the
+ * step they have given it their impulse over s of it, so a share 1 - 2 s of the
+ * kick is taken back.  Without it, an object struck as its step begins (a row of
+ * touching balls on a floor) would leave with the kick that was to hold it up
+ * against gravity, and hop.  (Not in the second half: the kick may also have
+ * stopped an approach left from before, which is no force to extrapolate; nor
+ * where the kicks themselves made the instant: instant_answer.) */
 static void join(world *w, instant_work *I, int i)
 {
     if (I->joined[i]) return;
