@@ -40,6 +40,20 @@ static void frames(world *w, int n)
     for (int i = 0; i < n; i++) assert_int_equal(sim_frame(w, err, sizeof err), 0);
 }
 
+/* A static floor whose top is the plane z = 0, 4 m square. */
+static void add_floor(world *w)
+{
+    add_static_box(w, "floor", v3(2, 2, 0.5))->x = v3(0, 0, -0.5);
+}
+
+/* Ball number i of a row, radius r, named b0, b1, ... */
+static body *numbered_ball(world *w, int i, double r)
+{
+    char name[16];
+    snprintf(name, sizeof name, "b%d", i);
+    return add_ball(w, name, r);
+}
+
 /* The frame's event between objects named a and b (either order), or NULL. */
 static const sim_event *event_of(const world *w, const char *a, const char *b)
 {
@@ -235,9 +249,7 @@ static void cradle(int n, int k, double gap)
     const double v = 1.5;
     body *b[7];
     for (int i = 0; i < n; i++) {
-        char name[16];
-        snprintf(name, sizeof name, "b%d", i);
-        b[i] = add_ball(&w, name, 0.05);
+        b[i] = numbered_ball(&w, i, 0.05);
         b[i]->x = v3((0.1 + gap) * i, 0, 1);
         if (i < k) b[i]->v = v3(v, 0, 0);
     }
@@ -282,12 +294,10 @@ static void cradle_on_a_floor_slides_the_last_ball_off(void **state)
     (void)state;
     world w;
     instant_world(&w, G);
-    add_static_box(&w, "floor", v3(2, 2, 0.5))->x = v3(0, 0, -0.5);
+    add_floor(&w);
     body *b[5];
     for (int i = 0; i < 5; i++) {
-        char name[16];
-        snprintf(name, sizeof name, "b%d", i);
-        b[i] = add_ball(&w, name, 0.05);
+        b[i] = numbered_ball(&w, i, 0.05);
         b[i]->x = v3(0.1 * i - 0.2, 0, 0.05);
     }
     const double v = 1.5;
@@ -321,7 +331,7 @@ static void stack_struck(double g)
 {
     world w;
     instant_world(&w, g);
-    add_static_box(&w, "floor", v3(2, 2, 0.5))->x = v3(0, 0, -0.5);
+    add_floor(&w);
     body *low = add_ball(&w, "low", 0.1), *top = add_ball(&w, "top", 0.1), *ball = add_ball(&w, "ball", 0.1);
     low->x = v3(0, 0, 0.1);
     top->x = v3(0, 0, 0.3);
@@ -391,7 +401,7 @@ static void rock(double a, double theta0, double e, int landings, double *top)
 {
     world w;
     instant_world(&w, G);
-    add_static_box(&w, "floor", v3(2, 2, 0.5))->x = v3(0, 0, -0.5);
+    add_floor(&w);
     body *c = add_box(&w, "cube", v3(a, a, a));
     c->elasticity = e;
     body_set_rotation(c, v3(0, 1, 0), theta0);
@@ -472,12 +482,10 @@ static void lossy_stack_ends_its_instant(void **state)
     (void)state;
     world w;
     instant_world(&w, 0);
-    add_static_box(&w, "floor", v3(2, 2, 0.5))->x = v3(0, 0, -0.5);
+    add_floor(&w);
     body *b[3];
     for (int i = 0; i < 3; i++) {
-        char name[16];
-        snprintf(name, sizeof name, "b%d", i);
-        b[i] = add_ball(&w, name, 0.1);
+        b[i] = numbered_ball(&w, i, 0.1);
         b[i]->elasticity = 0.5;
         body_set_mass(b[i], i < 2 ? 0.1 : 10);
         b[i]->x = v3(0, 0, 0.1 + 0.2 * i);
