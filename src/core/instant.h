@@ -5,7 +5,11 @@
  * found by its search; the landing of a cluster's new support point: answer.h),
  * among any set of bodies, and takes in every contact of the bodies it sets
  * moving: their lasting contacts, and their pairs within the contact distance.
- * It is answered as in the limit of vanishing gaps:
+ * An object struck within the first half of its cluster's step joins with the
+ * share of the step's start kick not yet spent taken back (cluster.h: the kick
+ * is the contact forces' impulse over half the step, given at its start), unless
+ * the kicks themselves made the instant.  It is answered as in the limit of
+ * vanishing gaps:
  *  - a wave solves together the contacts that approach (impulse.h: each point
  *    with Newton's restitution, the impulses of least norm), so that parallel
  *    contacts (a plank dropped on two supports, a ball into a groove) are one
