@@ -75,6 +75,7 @@ struct instant_work {
     int *objects;   /* the objects joined, in the order they joined */
     int nobj, cap;
     double t;
+    bool cut;       /* the speed limits cut its result (limit_all) */
     bool take_back; /* the joining objects' cluster kicks are taken back (join) */
     bool checked;   /* and instant_answer has seen that the seeds close without */
     int *backs;     /* the seeds' objects they were taken back from, nbacks */
@@ -394,6 +395,7 @@ static void limit_all(world *w, instant_work *I)
         }
     }
     for (int k = 0; k < I->nobj; k++) done[I->objects[k]] = false;
+    I->cut = cut;
     if (!cut) return;
     if (w->st.speed_cuts++ == 0) w->st.first_cut = first;
     for (int k = 0; k < I->nc; k++) I->wave[k] = true;
@@ -424,10 +426,12 @@ static void stay_or_part(world *w, const instant_work *I)
         pair *p = c->p;
         p->hit = c->hit;
         bool stays = false;
-        /* (a lossy contact, or one kept closed, that opens too slowly to see a
-         * rebound: none) */
+        /* (a lossy contact, one kept closed, or one whose result the speed
+         * limits cut (it lost energy, and its points were stopped where they
+         * would approach again), that opens too slowly to see a rebound: none;
+         * else a cut spinning pair parts and meets again, ever more slowly) */
         const body *A = w->bodies[p->a], *B = w->bodies[p->b];
-        double open = c->e < 1 || c->lasting ? SIM_BOUNCE_SPEED : 1e3 * tol_speed(A, B);
+        double open = c->e < 1 || c->lasting || I->cut ? SIM_BOUNCE_SPEED : 1e3 * tol_speed(A, B);
         for (int r = c->first; r < c->first + c->n && !c->held; r++)
             stays = stays || impulse_speed(&I->row[r], w->bodies) <= open;
         p->touching = stays;
