@@ -18,16 +18,7 @@ frames=$(seq 0 40)
 [ "${BUILD:-build}" = build-san ] && frames="0 3 17"
 sweep instants "$W" "$frames" 20
 
-h11=$("$VROC" -b -q "$W" -c "run 11; hash" 2>&1)
-h10=$("$VROC" -b -q "$W" -c "run 10; step; hash" 2>&1)
-h20=$("$VROC" -b -q "$W" -c "run 20; hash" 2>&1)
-h713=$("$VROC" -b -q "$W" -c "run 7; run 13; hash" 2>&1)
-if [ "$h11" = "$h10" ] && [ "$h20" = "$h713" ] && [ "$h11" != "$h20" ]; then
-    ok "instants: run 10 then step equals run 11, run 7 then run 13 equals run 20"
-else
-    notok "instants: run 10 then step equals run 11, run 7 then run 13 equals run 20" \
-        "run 11: $h11" "run 10; step: $h10" "run 20: $h20" "run 7; run 13: $h713"
-fi
+split_runs "instants" "$W"
 
 n=100
 [ "${BUILD:-build}" = build-san ] && n=20
