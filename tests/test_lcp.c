@@ -926,6 +926,14 @@ static void least_norm_answers_ignore_the_order(void **state)
     free(wk);
 }
 
+/* Solves the n-contact problem A, q and makes z its least-norm answer. */
+static void solve_least(int n, const double *A, const double *q, double *z, lcp_work *wk)
+{
+    double w[MAXN];
+    assert_int_equal(lcp_solve(n, A, q, z, w, wk), 0);
+    lcp_least_norm(n, A, q, z, wk);
+}
+
 /* A box on a floor, and the box landing flat: the four corners share the force
  * equally in the least-norm answer; a box off centre on its corners shares it as
  * the lever rule and least norm say. */
@@ -934,24 +942,21 @@ static void least_norm_shares_a_face_evenly(void **state)
     (void)state;
     tbody bs[1];
     tcontact cs[4];
-    double A[16], q[4], z[4], w[4];
+    double A[16], q[4], z[4];
     lcp_work *wk = work_for(4);
     int n = box_on_floor(bs, cs, 0);
     contact_problem(bs, 1, cs, n, A, q);
-    assert_int_equal(lcp_solve(n, A, q, z, w, wk), 0);
-    lcp_least_norm(n, A, q, z, wk);
+    solve_least(n, A, q, z, wk);
     for (int i = 0; i < n; i++) assert_near(z[i], G / 4, 1e-14 * G);
     for (int i = 0; i < n; i++) q[i] = 1.5 * -1;
-    assert_int_equal(lcp_solve(n, A, q, z, w, wk), 0);
-    lcp_least_norm(n, A, q, z, wk);
+    solve_least(n, A, q, z, wk);
     for (int i = 0; i < n; i++) assert_near(z[i], 1.5 / 4, 1e-14);
     /* the centre of mass at (0.25, 0.1) over the unit square's corners: the
      * forces f_i = G (1/4 + x_i cx + y_i cy) (x_i, y_i = +-1/2, the corner), the
      * least-norm ones that balance the weight and its moments; all positive */
     bs[0].x = v3(0.25, 0.1, 0.5);
     contact_problem(bs, 1, cs, n, A, q);
-    assert_int_equal(lcp_solve(n, A, q, z, w, wk), 0);
-    lcp_least_norm(n, A, q, z, wk);
+    solve_least(n, A, q, z, wk);
     const double sx[] = {-0.5, 0.5, 0.5, -0.5}, sy[] = {-0.5, -0.5, 0.5, 0.5};
     for (int i = 0; i < n; i++) assert_near(z[i], G * (0.25 + sx[i] * 0.25 + sy[i] * 0.1), 1e-13 * G);
     free(wk);
