@@ -23,6 +23,7 @@
 #include "rest.h"
 #include "retime.h"
 #include "rows.h"
+#include "squeeze.h"
 #include "step.h"
 #include "tolerance.h"
 #include "world.h"
@@ -115,7 +116,8 @@ static void rows_of(world *w, row_list *l, const pair *p, const closest_result *
 }
 
 /* The rows of collision c: its pair's own points (with the pair's restitution),
- * then the lasting contacts of its objects (none), each pair once.  Marks its
+ * then the lasting contacts of its objects (none), each pair once; with a held
+ * object, also their pairs within the squeeze gap (squeeze.h).  Marks its
  * objects mobile. */
 static void gather(world *w, collision *c)
 {
@@ -128,8 +130,11 @@ static void gather(world *w, collision *c)
         int i = c->objects[j];
         FOR_PAIRS_OF(w, i, link, o) {
             int other = link->other;
-            if (!o->touching || o == c->p || (mobile[other] && other < i)) continue;
-            closest_result r = pair_query(w, o, w->bodies[o->a], w->bodies[o->b]);
+            if (o == c->p || (mobile[other] && other < i)) continue;
+            if (!o->touching && !(c->held >= 0 && o->near)) continue;
+            const body *A = w->bodies[o->a], *B = w->bodies[o->b];
+            closest_result r = pair_query(w, o, A, B);
+            if (!o->touching && (r.status == CLOSEST_INVALID || r.distance > squeeze_gap(A, B))) continue;
             rows_of(w, &rl, o, &r, 0);
         }
     }
@@ -187,7 +192,9 @@ static bool solve(world *w, collision *c)
         if (hand && r < c->own && rows[r].e == 0) c->u[r] -= SIM_BOUNCE_SPEED;
     }
     bool solved = impulse_solve(rows, c->nr, now, mobile, c->u, c->lambda, w->answer.lcp) == 0;
-    if (!solved && c->own < c->nr) /* too many: the contact's own points alone */
+    /* too many: the contact's own points alone (but what a held object pushes
+     * and cannot give way is jammed: squeeze.h) */
+    if (!solved && c->own < c->nr && !hand)
         solved = impulse_solve(rows, c->own, now, mobile, c->u, c->lambda, w->answer.lcp) == 0;
     if (solved && limit_all(w, c->objects, c->n)) {
         /* the limits must not turn a point back into its contact: those that would
@@ -234,15 +241,15 @@ static void stay_or_part(world *w, const collision *c)
     }
 }
 
-/* Held body i stops where it is at time t, until the hand sets its motion again
- * (hold.h): it met what cannot give way. */
-static void hold_stop(world *w, int i, double t)
+/* Collision c's held object pushes what cannot give way (squeeze.h): it stops
+ * at time t, and what it pressed is answered against it standing still. */
+static void jammed(world *w, collision *c, double t)
 {
-    body *b = w->bodies[i];
-    step_sync(w, i, t);
-    b->hold_v = b->v = v3(0, 0, 0);
-    body_set_angular_vel(b, v3(0, 0, 0));
-    retime_object(w, i, t);
+    bool *mobile = w->answer.mark;
+    squeeze_hold_stop(w, c->held, t);
+    for (int j = 0; j < c->n; j++) mobile[c->objects[j]] = true;
+    if (!squeeze_settle(w, c->rows, c->nr, c->objects, c->n, mobile)) w->st.unsolved++;
+    for (int j = 0; j < c->n; j++) mobile[c->objects[j]] = false;
 }
 
 void answer_contact(world *w, long k, double t, double t_end)
@@ -254,12 +261,13 @@ void answer_contact(world *w, long k, double t, double t_end)
     if (!body_is_static(w->bodies[p->b]) && !hb) seeds[ns++] = p->b;
     if (hand && ns == 0) {
         w->time = t;
-        if (ha) hold_stop(w, p->a, t);
-        if (hb) hold_stop(w, p->b, t);
+        if (ha) squeeze_hold_stop(w, p->a, t);
+        if (hb) squeeze_hold_stop(w, p->b, t);
         return;
     }
     int n = rest_component(w, seeds, ns, mine);
     for (int j = 0; j < n; j++) step_sync(w, mine[j], t);
+    if (hand) n = squeeze_reach(w, mine, n, t);
     int held = ha ? p->a : hb ? p->b : -1;
     if (hand) step_sync(w, held, t);
     w->time = t;
@@ -275,7 +283,7 @@ void answer_contact(world *w, long k, double t, double t_end)
     c.closing = 0;
     gather(w, &c);
     if (solve(w, &c)) report(w, &c, t);
-    else if (hand) hold_stop(w, held, t); /* what it pushes cannot give way */
+    else if (hand) jammed(w, &c, t);
     else w->st.unsolved++;
     stay_or_part(w, &c);
     rest_classify(w, mine, n);
