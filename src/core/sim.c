@@ -13,7 +13,8 @@
  * pairs holds.  Events at the same instant are answered in a fixed order (pairs
  * before objects, each by index), and which pairs are searched (the heap's due
  * ones, or all of them) changes no answer: a search depends on its pair's flights
- * alone.  The frame ends with the thesis's rule of rest (rest_frame_end).  As
+ * alone.  The frame ends with what overlaps moved apart (apart.h) and the
+ * thesis's rule of rest (rest_frame_end).  As
  * Box2D's b2World_Step sits beside its contact_solver.c, this file keeps the
  * frame, the step and the loop over the events; answering them is answer.c's.
  */
@@ -24,6 +25,7 @@
 #include <stdio.h>
 
 #include "answer.h"
+#include "apart.h"
 #include "broad.h"
 #include "pairs.h"
 #include "rest.h"
@@ -180,6 +182,9 @@ static void internal_step(world *w, double t_end, bool fresh)
         }
         if (e.kind == 0) answer_contact(w, e.index, e.t, t_end);
         else answer_object(w, (int)e.index, e.t, t_end);
+#ifdef VROC_VALIDATE
+        apart_watch(w, e.t); /* (st.deepest: that nothing passes into anything) */
+#endif
     }
     for (int i = 0; i < w->n; i++) step_sync(w, i, t_end);
     w->time = t_end;
@@ -346,6 +351,7 @@ int sim_frame_hooked(world *w, const sim_hook *hook, char *err, size_t errlen)
         internal_step(w, t_end, k == 0 || cut);
         w->st.subframes++;
     }
+    apart_frame_end(w);
     if (rest_frame_end(w) > 0) {
         for (int i = 0; i < w->n; i++) {
             if (w->bodies[i]->state != STATE_RESTING) continue;

@@ -69,6 +69,11 @@ typedef struct {
     long events_lost;     /* collisions not reported in events (out of memory) */
     long late_pairs;      /* (heap off) contacts found of pairs the broad phase did
                            * not hold near: it was late; never expected */
+    long separations;     /* pairs moved apart at frames' ends (apart.h) */
+    double deepest;       /* (validation build) the deepest overlap of any pair
+                           * after any event (m; 0: none), of objects deepest_a and
+                           * deepest_b (apart_watch) */
+    int deepest_a, deepest_b;
 } sim_stats;
 
 

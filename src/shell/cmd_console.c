@@ -190,6 +190,11 @@ cmd_status cmd_stats(shell *sh, const stmt *st)
     fprintf(sh->out, "unsolved = %ld\n", w->st.unsolved);
     fprintf(sh->out, "overflows = %ld\n", w->st.overflows);
     fprintf(sh->out, "speed_cuts = %ld\n", w->st.speed_cuts);
+    fprintf(sh->out, "separations = %ld\n", w->st.separations);
+#ifdef VROC_VALIDATE
+    /* (the validation build's watch: that nothing passes into anything) */
+    fprintf(sh->out, "deepest = %.17g\n", w->st.deepest);
+#endif
     return CMD_OK;
 }
 
