@@ -17,8 +17,8 @@ int squeeze_reach(world *w, int *list, int n, double t)
             const body *bo = w->bodies[o];
             if (mark[o] || !p->near || body_is_static(bo) || bo->held) continue;
             /* (o as it is at t, without touching its flight unless it is taken) */
-            body at;
-            step_fly(w, o, t, &at);
+            body at = *bo;
+            if (step_moves(w, o)) step_fly(w, o, t, &at);
             const body *a = p->a == i ? w->bodies[i] : &at, *b = p->a == i ? &at : w->bodies[i];
             closest_result r = pair_query(w, p, a, b);
             if (r.status == CLOSEST_INVALID || r.distance > squeeze_gap(a, b)) continue;
