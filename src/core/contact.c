@@ -3,6 +3,8 @@
  */
 #include "contact.h"
 
+#include "pieces.h"
+
 #include <assert.h>
 
 #include <stdlib.h>
@@ -371,8 +373,10 @@ static vec3 region_world(const region *z, vec3 n, p2 c)
     return v3_add(v3_add(v3_scale(z->u, c.x), v3_scale(z->v, c.y)), v3_scale(n, z->h));
 }
 
-vec3 contact_point(const body *a, const body *b, const closest_result *r, double tol)
+vec3 contact_point(const body *a0, const body *b0, const closest_result *r, double tol)
 {
+    body ta, tb;
+    const body *a = pieces_view(a0, r->ka, &ta), *b = pieces_view(b0, r->kb, &tb);
     region z;
     vec3 p = v3_scale(v3_add(r->pa, r->pb), 0.5);
     if (region_of(a, b, r, tol, &z) && z.n > 0) p = region_world(&z, z.n_used, z.c);
@@ -380,9 +384,11 @@ vec3 contact_point(const body *a, const body *b, const closest_result *r, double
     return p;
 }
 
-vec3 contact_closing_corner(const body *a, const body *b, const closest_result *r, double tol,
+vec3 contact_closing_corner(const body *a0, const body *b0, const closest_result *r, double tol,
                             vec3 p)
 {
+    body ta, tb;
+    const body *a = pieces_view(a0, r->ka, &ta), *b = pieces_view(b0, r->kb, &tb);
     region z;
     if (region_of(a, b, r, tol, &z)) {
         double best = 0;
@@ -415,20 +421,69 @@ int contact_facing(const body *o, vec3 d)
     return best;
 }
 
+/* Where the line xb + s mb (P's frame) crosses the plane of P's face f inwards:
+ * s, or -inf for a face it does not cross inwards (nearly parallel, or facing
+ * away). */
+static double entry(const poly *h, int f, vec3 xb, vec3 mb)
+{
+    double dn = v3_dot(h->f[f].n, mb);
+    return dn < -1e-3 ? (h->f[f].d - v3_dot(h->f[f].n, xb)) / dn : -HUGE_VAL;
+}
+
+/* True when every point of P's supporting set s lies on the plane of its face f
+ * (to the rounding of P's size r). */
+static bool on_face(const poly *h, const support *s, int f, double r)
+{
+    const poly_face *F = &h->f[f];
+    double tol = 1e-12 * (1 + r);
+    for (int i = 0; i < s->n; i++)
+        if (fabs(v3_dot(F->n, h->v[s->idx[i]]) - F->d) > tol) return false;
+    return true;
+}
+
 /* Moves world point *x along m onto P's surface facing the other object (along
  * -m): the plane of its face f there when its supporting set s (np points in
- * the region's hull) is a face, the line of its edge when an edge, its vertex when a
- * vertex. */
+ * the region's hull) is that face; where s spans several faces (a thick region
+ * over a curved side), where the line along m enters P, so that no point is put
+ * on a face's plane beyond the face, under P's surface, where P does not reach;
+ * the line of its edge when an edge, its vertex when a vertex. */
 static void lift(const body *P, const support *s, int np, int f, vec3 m, vec3 *x)
 {
     const poly *h = P->shape.hull;
     if (!h || P->sp.kind == SHAPE_SPHERE || s->n < 1) return;
-    if (np >= 3 && f >= 0) {
+    if (np >= 3 && f >= 0 && on_face(h, s, f, P->shape.r_out)) {
         vec3 nf = q_rotate(P->q, h->f[f].n);
         double dn = v3_dot(nf, m);
         if (fabs(dn) < 1e-3) return;
         vec3 on = v3_add(P->x, q_rotate(P->q, h->v[h->face_vert[h->f[f].first]]));
         *x = v3_mad(*x, m, v3_dot(nf, v3_sub(on, *x)) / dn);
+        return;
+    }
+    if (np >= 3 && f >= 0) {
+        /* P is the faces' half-spaces n . y <= d: the line y = x + s m enters
+         * it at the largest s over the faces it crosses inwards (n . m < 0).
+         * Across each edge of the face found so far, the neighbour's plane is
+         * the higher where the line meets P on its side of that edge, so the
+         * walk from f up to the largest ends at the face the line enters by
+         * (its values only grow, and P's facing side is convex) */
+        vec3 xb = q_unrotate(P->q, v3_sub(*x, P->x)), mb = q_unrotate(P->q, m);
+        int cur = f;
+        double in = entry(h, f, xb, mb);
+        for (bool moved = in > -HUGE_VAL; moved;) {
+            moved = false;
+            const poly_face *F = &h->f[cur];
+            for (int k = 0; k < F->count && !moved; k++) {
+                const poly_edge *e = &h->e[h->face_edge[F->first + k]];
+                int g = e->f[0] == cur ? e->f[1] : e->f[0];
+                double sg = entry(h, g, xb, mb);
+                if (sg > in) {
+                    in = sg;
+                    cur = g;
+                    moved = true;
+                }
+            }
+        }
+        if (in > -HUGE_VAL) *x = v3_mad(*x, m, in);
         return;
     }
     /* an edge or a vertex: its points furthest apart across m */
@@ -530,8 +585,9 @@ static void sphere_against(const body *s, const body *o, closest_feature f, vec3
     }
 }
 
-int contact_cpoints(const body *a, const body *b, const closest_result *r, double tol, cpoint *out,
-                    int max)
+/* contact_cpoints for one convex piece of each. */
+static int cpoints_of(const body *a, const body *b, const closest_result *r, double tol, cpoint *out,
+                      int max)
 {
     if (max < 1) return 0;
     vec3 n = r->normal;
@@ -584,7 +640,11 @@ int contact_cpoints(const body *a, const body *b, const closest_result *r, doubl
          * so that their gaps are the objects' own, however thick the region */
         const support *sp = pside == 0 ? &z.sa : &z.sb;
         int fp = np >= 3 ? contact_facing(P, v3_neg(m)) : -1;
-        for (int i = 0; i < z.n && count < max; i++) {
+        /* (more corners than room: every so many, around the whole region, so
+         * that what they hold is still about its centre) */
+        int take = z.n < max ? z.n : max;
+        for (int k = 0; k < take; k++) {
+            int i = z.n <= max ? k : (int)((long)k * z.n / take);
             vec3 x = v3_mad(region_world(&z, n, z.p[i]), m, half);
             lift(P, sp, np, fp, m, &x);
             out[count] = base;
@@ -611,6 +671,31 @@ int contact_cpoints(const body *a, const body *b, const closest_result *r, doubl
     }
     free_points(z.pts, z.local);
     return count;
+}
+
+int contact_cpoints(const body *a, const body *b, const piece_pairs *pp, const closest_result *r,
+                    double tol, cpoint *out, int max)
+{
+    if (!body_compound(a) && !body_compound(b)) return cpoints_of(a, b, r, tol, out, max);
+    /* bodies of several pieces: the points of every pair of their pieces that
+     * touch, one contact problem (pieces.h); r's own pair first, as r has it */
+    closest_result near[CONTACT_MAX_POINTS];
+    int n = pieces_touching(a, b, pp, d_max(tol, r->distance), near, CONTACT_MAX_POINTS), count = 0;
+    body ta, tb;
+    count = cpoints_of(pieces_view(a, r->ka, &ta), pieces_view(b, r->kb, &tb), r, tol, out, max);
+    for (int k = 0; k < n && count < max; k++) {
+        if (near[k].ka == r->ka && near[k].kb == r->kb) continue;
+        const body *va = pieces_view(a, near[k].ka, &ta), *vb = pieces_view(b, near[k].kb, &tb);
+        count += cpoints_of(va, vb, &near[k], tol, out + count, max - count);
+    }
+    return count;
+}
+
+int contact_cpoints_of_pieces(const body *a, const body *b, const closest_result *r, double tol,
+                              cpoint *out, int max)
+{
+    body ta, tb;
+    return cpoints_of(pieces_view(a, r->ka, &ta), pieces_view(b, r->kb, &tb), r, tol, out, max);
 }
 
 /* The gap of EDGES point cp (see cpoint_eval), its normal and point. */
@@ -664,11 +749,25 @@ double cpoint_eval(const cpoint *cp, const body *P, const body *Q, vec3 *n, vec3
     }
     }
     *n = q_rotate(Q->q, m);
-    *at = v3_mad(pw, *n, -cp->r);
+    /* (on P's surface: two spheres' radii together less Q's) */
+    double rp = cp->kind == CPT_POINT && Q->sp.kind == SHAPE_SPHERE ? cp->r - Q->sp.radius : cp->r;
+    *at = v3_mad(pw, *n, -rp);
     return gap;
 }
 
-bool contact_holds(const body *m, const body *s, const closest_result *r, double tol, int *face)
+static bool holds(const body *m, const body *s, const closest_result *r, double tol, int *face);
+
+bool contact_holds(const body *m0, const body *s0, const closest_result *r, double tol, int *face)
+{
+    body tm, ts;
+    const body *m = pieces_view(m0, r->ka, &tm), *s = pieces_view(s0, r->kb, &ts);
+    bool held = holds(m, s, r, tol, face);
+    if (*face >= 0) *face = shape_face_number(&s0->shape, r->kb, *face);
+    return held;
+}
+
+/* contact_holds for one convex piece of each. */
+static bool holds(const body *m, const body *s, const closest_result *r, double tol, int *face)
 {
     *face = -1;
     const poly *h = s->shape.hull;
@@ -733,8 +832,12 @@ double contact_closing_speed(const body *a, const body *b, vec3 p, vec3 n)
     return -v3_dot(rel, n);
 }
 
-bool contact_level(body *m, const body *s, int face, double max_tilt, double gap)
+bool contact_level(body *m, const body *s0, int face, double max_tilt, double gap)
 {
+    body ts;
+    int k = shape_face_piece(&s0->shape, face, &face);
+    if (k < 0) return false;
+    const body *s = pieces_view(s0, k, &ts);
     const poly *hs = s->shape.hull, *hm = m->shape.hull;
     if (!hs || !hm || m->sp.kind == SHAPE_SPHERE || face < 0 || face >= hs->nf) return false;
     vec3 n = q_rotate(s->q, hs->f[face].n);

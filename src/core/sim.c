@@ -10,11 +10,14 @@
  *  - the end of a cluster's step (cluster.h).
  * Each event changes the flights of the objects it touches from its instant on
  * (retime.h); every other object flies on as it did, and what was found of its
- * pairs holds.  Events at the same instant are answered in a fixed order (pairs
- * before objects, each by index), and which pairs are searched (the heap's due
- * ones, or all of them) changes no answer: a search depends on its pair's flights
- * alone.  The frame ends with what overlaps moved apart (apart.h) and the
- * thesis's rule of rest (rest_frame_end).  As
+ * pairs holds.  Events at the same instant are taken in a fixed order (pairs
+ * before objects, each by index), but the first contact answered is an instant
+ * that takes in every other contact beginning with it (instant.h: within the
+ * contact distance and closing), so that the answer does not depend on that
+ * order; and which pairs are searched (the heap's due ones, or all of them)
+ * changes no answer: a search depends on its pair's flights alone.  The frame
+ * ends with what overlaps moved apart (apart.h) and the thesis's rule of rest
+ * (rest_frame_end).  As
  * Box2D's b2World_Step sits beside its contact_solver.c, this file keeps the
  * frame, the step and the loop over the events; answering them is answer.c's.
  */
@@ -27,6 +30,7 @@
 #include "answer.h"
 #include "apart.h"
 #include "broad.h"
+#include "instant.h"
 #include "pairs.h"
 #include "rest.h"
 #include "retime.h"
@@ -80,7 +84,8 @@ static double search(world *w, long k, double t_step, double t_end, double *agai
     if (step_moves(w, p->b)) from = d_max(from, fb->t0);
     /* no further than either flight lasts: an object's own event ends it */
     double to = d_min(t_end, d_min(w->step.event[p->a], w->step.event[p->b]));
-    toi_output o = toi_find(w, &(toi_input){p->a, p->b, p->hit, from, d_max(from, to)});
+    toi_output o = toi_find(w, &(toi_input){p->a, p->b, p->hit, from, d_max(from, to),
+                                            pair_pieces(w, p)});
     w->st.pair_checks += o.queries;
     p->toi_fa = fa->id;
     p->toi_fb = fb->id;
@@ -215,9 +220,10 @@ static void find_contacts(world *w)
         closest_result r = pair_query(w, p, a, b);
         if (r.status == CLOSEST_INVALID) continue;
         double touch = tol_touch(a, b);
-        if (r.distance <= touch && r.distance >= -touch) {
+        /* (placed closing: a collision, which its search finds at once) */
+        if (r.distance <= touch && r.distance >= -touch && !instant_closing(w, p, &r)) {
             p->touching = true;
-            p->hit = p->cache;
+            pair_hit_from_query(w, p);
             a->woken = b->woken = true;
         }
     }
@@ -368,7 +374,7 @@ int sim_frame_hooked(world *w, const sim_hook *hook, char *err, size_t errlen)
     /* the pairs' closest features only speed queries up, but where features are
      * equally close they pick which is reported: every frame starts from none, so
      * that a world read back from save (which has none) goes on to the bit */
-    for (long k = 0; k < w->pairs.n; k++) w->pairs.p[k].cache.valid = w->pairs.p[k].hit.valid = false;
+    for (long k = 0; k < w->pairs.n; k++) pair_forget(w, &w->pairs.p[k]);
     /* and each object's w is the one its L and orientation give, as when read back */
     for (int i = 0; i < w->n; i++)
         if (!body_is_static(w->bodies[i])) body_update_w(w->bodies[i]);

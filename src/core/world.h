@@ -65,6 +65,9 @@ typedef struct {
                            * max_angular cut: each loses energy (elasticity 1 keeps
                            * it only within the limits) */
     sim_cut first_cut;    /* the first of them (when speed_cuts > 0) */
+    long waves_cut;       /* instants whose waves were ended by a last solve with
+                           * no restitution, after 4 n waves of n contacts (a ball
+                           * pinched between two walls, a lossy stack: instant.h) */
     long heap_pops;       /* pairs taken from the schedule to be checked */
     long events_lost;     /* collisions not reported in events (out of memory) */
     long late_pairs;      /* (heap off) contacts found of pairs the broad phase did

@@ -111,6 +111,9 @@ cmd_status cmd_save(shell *sh, const stmt *st)
     fprintf(f, "# the contact state: modes, rest and lasting contacts, as the simulation left "
                "them\n");
     for (int i = 0; i < sh->w.n; i++) {
+        /* (one a command placed has its contacts found by the next frame, as the
+         * read-back world's does: objects made touching, a cradle's balls) */
+        if (sh->w.bodies[i]->moved) continue;
         fprintf(f, "%s %s\n", body_type_name(sh->w.bodies[i]->sp.kind), sh->w.bodies[i]->name);
         contact_write(f, &sh->w, i, 1);
     }
@@ -161,6 +164,9 @@ cmd_status cmd_distance(shell *sh, const stmt *st)
     writer_vec(sh->out, r.normal, s);
     fprintf(sh->out, "\nfeature_A = %s\nfeature_B = %s\n", feature_name(r.fa, fa),
             feature_name(r.fb, fb));
+    /* (bodies of several pieces: whose hull the feature is of) */
+    if (sh->w.bodies[ia]->shape.pieces > 1) fprintf(sh->out, "piece_A = %d\n", r.ka + 1);
+    if (sh->w.bodies[ib]->shape.pieces > 1) fprintf(sh->out, "piece_B = %d\n", r.kb + 1);
     return CMD_OK;
 }
 
@@ -190,6 +196,7 @@ cmd_status cmd_stats(shell *sh, const stmt *st)
     fprintf(sh->out, "unsolved = %ld\n", w->st.unsolved);
     fprintf(sh->out, "overflows = %ld\n", w->st.overflows);
     fprintf(sh->out, "speed_cuts = %ld\n", w->st.speed_cuts);
+    fprintf(sh->out, "waves_cut = %ld\n", w->st.waves_cut);
     fprintf(sh->out, "separations = %ld\n", w->st.separations);
 #ifdef VROC_VALIDATE
     /* (the validation build's watch: that nothing passes into anything) */
