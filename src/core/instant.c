@@ -195,7 +195,9 @@ static void add_contact(world *w, instant_work *I, long slot, const closest_resu
     pair *p = &w->pairs.p[slot];
     if (I->nc == INSTANT_MAX_CONTACTS || r->status == CLOSEST_INVALID) return;
     const body *A = w->bodies[p->a], *B = w->bodies[p->b];
-    double e = d_min(A->elasticity, B->elasticity);
+    /* (a crowded object's contacts do not bounce: guard.h) */
+    bool crowd = guard_crowded(&w->guard, p->a) || guard_crowded(&w->guard, p->b);
+    double e = crowd ? 0 : d_min(A->elasticity, B->elasticity);
     row_list rl = {I->row + I->nr, NULL, NULL, 0, INSTANT_MAX_ROWS - I->nr, false};
     int n = rows_add(&rl, p, A, B, r, tol_region(A, B, r->distance), e, w->bodies);
     if (n == 0) return;

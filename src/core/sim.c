@@ -30,6 +30,7 @@
 #include "answer.h"
 #include "apart.h"
 #include "broad.h"
+#include "guard.h"
 #include "instant.h"
 #include "pairs.h"
 #include "rest.h"
@@ -178,19 +179,18 @@ static void internal_step(world *w, double t_end, bool fresh)
         if (step_moves(w, i) && b->mode == MODE_GENERAL && w->step.event[i] == HUGE_VAL)
             answer_clusters(w, &i, 1, t, t_end);
     }
-    for (int n = 0;; n++) {
+    for (long n = 0;; n++) {
         next_event e = find_next(w, t, t_end);
         if (e.kind < 0) break;
-        if (n >= SIM_MAX_EVENTS_PER_STEP) {
-            w->st.overflows++;
-            break;
-        }
+        const pair *p = e.kind == 0 ? &w->pairs.p[e.index] : NULL;
+        if (!guard_event(w, p ? p->a : (int)e.index, p ? p->b : -1, n, e.t)) break;
         if (e.kind == 0) answer_contact(w, e.index, e.t, t_end);
         else answer_object(w, (int)e.index, e.t, t_end);
 #ifdef VROC_VALIDATE
         apart_watch(w, e.t); /* (st.deepest: that nothing passes into anything) */
 #endif
     }
+    guard_step_end(w);
     for (int i = 0; i < w->n; i++) step_sync(w, i, t_end);
     w->time = t_end;
 #ifdef VROC_VALIDATE
@@ -275,7 +275,8 @@ int sim_prepare(world *w)
 {
     if (update_pairs(w) != 0) return -1;
     bool changed = w->sched_dirty;
-    if (step_prepare(w, changed) != 0 || answer_prepare(w, changed) != 0) return -1;
+    if (step_prepare(w, changed) != 0 || answer_prepare(w, changed) != 0 || guard_prepare(w) != 0)
+        return -1;
     if (!changed) return 0;
     /* the boxes for the first internal step */
     long n = world_subframes(w);
