@@ -10,7 +10,6 @@
 # stats counts the crowd, and no guard, overflow, restart or unsolved contact.
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/sweep.sh"
-VAL="$(cd "$(dirname "$0")/.." && pwd)/build-val/vroc"
 cd "$TMP" || exit 1
 W="$TMP/box78.vroc"
 cat > "$W" <<'V'
@@ -36,17 +35,7 @@ if same_hash; then ok "crowds: run 7 then run 1 equals run 8 (the crowd's frame)
 else notok "crowds: run 7 then run 1 equals run 8 (the crowd's frame)" "run 8: $h8" "run 7; run 1: $h71"; fi
 
 n=12
-"$VROC" -b -q "$W" -c "collision_heap = on; trace = on.csv; run $n; stats" > out-on 2>&1
-"$VROC" -b -q "$W" -c "collision_heap = off; trace = off.csv; run $n" > out-off 2>&1
-same "crowds: the heap changes no trajectory ($n frames)" on.csv off.csv
-if [ "${BUILD:-build}" = build ]; then
-    if [ -x "$VAL" ]; then
-        "$VAL" -b -q "$W" -c "trace = val.csv; run $n" > out-val 2>&1
-        same "crowds: the validation build keeps every invariant, with the same trace" on.csv val.csv
-    else
-        notok "crowds: the validation build runs it" "$VAL is missing"
-    fi
-fi
+same_traces crowds "$W" "$n" stats
 if grep -q '^crowds = [1-9]' out-on && grep -q '^guards = 0$' out-on && grep -q '^overflows = 0$' out-on &&
     grep -q '^restarts = 0$' out-on && grep -q '^unsolved = 0$' out-on && ! grep -q 'ran away' out-on; then
     ok "crowds: stats counts the crowd, and no guard, overflow, restart or unsolved contact"
