@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "cluster.h"
+#include "friction.h"
 #include "grow.h"
 #include "impulse.h"
 #include "pairs.h"
@@ -42,6 +43,7 @@ void answer_free(answer_scratch *s)
     free(s->now);
     free(s->mark);
     free(s->lcp);
+    free(s->fw);
     answer_init(s);
 }
 
@@ -50,6 +52,7 @@ int answer_prepare(world *w, bool changed)
     answer_scratch *s = &w->answer;
     int rows = IMPULSE_MAX_ROWS > SIM_CLUSTER_ROWS ? IMPULSE_MAX_ROWS : SIM_CLUSTER_ROWS;
     if (!s->lcp && !(s->lcp = malloc(lcp_work_size(rows)))) return -1;
+    if (!s->fw && !(s->fw = malloc(sizeof *s->fw))) return -1;
     if (w->n > s->cap) {
         bool ok = true;
         changed = true;
@@ -171,6 +174,37 @@ static bool limit_all(world *w, const int *list, int n)
     return cut;
 }
 
+void answer_count(world *w, friction_flags f, int object)
+{
+    if (f.energy_cut) w->st.energy_cuts++;
+    if (f.unconverged) w->st.cone_unconverged++;
+    if (f.painleve && w->st.painleve++ == 0) w->st.first_painleve = object;
+}
+
+/* Collision c's impulses with friction (friction.h), of its first n rows: one
+ * point struck alone by Mirtich's integration, points together by the cones'
+ * compression and then restitution.  Applies them; false when the problem is
+ * too large (nothing applied). */
+static bool solve_rough(world *w, collision *c, int n)
+{
+    body **now = w->answer.now;
+    bool *mobile = w->answer.mark;
+    friction_flags f = {false, false, false};
+    int who = body_is_static(w->bodies[c->p->a]) || w->bodies[c->p->a]->held ? c->p->b : c->p->a;
+    if (n == 1 && c->held < 0) {
+        f = friction_impact(&c->rows[0], now, mobile, &c->lambda[0]);
+    } else {
+        double ke = friction_energy(c->rows, n, now, mobile);
+        if (friction_compress(c->rows, n, now, mobile, c->u, c->lambda, w->answer.fw, &f) != 0)
+            return false;
+        friction_restitute(c->rows, n, now, mobile, c->lambda, c->held < 0 ? ke : HUGE_VAL,
+                           w->answer.fw, &f);
+    }
+    for (int r = n; r < c->nr; r++) c->lambda[r] = 0;
+    answer_count(w, f, who);
+    return true;
+}
+
 /* Solves collision c's impulses and applies them, then the speed limits: true
  * when solved (nothing is applied when not).  Its objects are mobile no more. */
 static bool solve(world *w, collision *c)
@@ -186,9 +220,15 @@ static bool solve(world *w, collision *c)
         /* but nothing stays on a held object: it parts at that speed */
         if (hand && r < c->own && rows[r].e == 0) c->u[r] -= SIM_BOUNCE_SPEED;
     }
-    bool solved = impulse_solve(rows, c->nr, now, mobile, c->u, c->lambda, w->answer.lcp) == 0;
-    if (!solved && c->own < c->nr) /* too many: the contact's own points alone */
-        solved = impulse_solve(rows, c->own, now, mobile, c->u, c->lambda, w->answer.lcp) == 0;
+    bool solved;
+    if (friction_any(rows, c->nr)) {
+        solved = solve_rough(w, c, c->nr);
+        if (!solved && c->own < c->nr) solved = solve_rough(w, c, c->own);
+    } else {
+        solved = impulse_solve(rows, c->nr, now, mobile, c->u, c->lambda, w->answer.lcp) == 0;
+        if (!solved && c->own < c->nr) /* too many: the contact's own points alone */
+            solved = impulse_solve(rows, c->own, now, mobile, c->u, c->lambda, w->answer.lcp) == 0;
+    }
     if (solved && limit_all(w, c->objects, c->n)) {
         /* the limits must not turn a point back into its contact: those that would
          * approach again stop there */

@@ -16,6 +16,7 @@
 #include <stdbool.h>
 
 #include "body.h"
+#include "friction.h"
 #include "lcp.h"
 
 typedef struct world world;
@@ -39,6 +40,7 @@ typedef struct {
     bool *mark;       /* per object: marks, all false between uses (the objects
                        * reached, the mobile objects of a contact problem) */
     lcp_work *lcp;    /* room for the largest contact problem (lcp.h) */
+    friction_work *fw; /* room for the largest one with friction (friction.h) */
     int cap;          /* objects the arrays have room for */
 } answer_scratch;
 
@@ -50,6 +52,10 @@ void answer_free(answer_scratch *s);
  * nothing and touch no fresh memory (sim_prepare calls it).  Returns 0, or -1
  * when out of memory. */
 int answer_prepare(world *w, bool changed);
+
+/* Counts in the world's stats what a contact problem with friction met (object:
+ * one of its objects, named by the first Painleve warning). */
+void answer_count(world *w, friction_flags f, int object);
 
 /* Answers pair k's contact (found by its search, pairs.hits[k]) at time t, in the
  * internal step that ends at t_end: the impulses of its points and of every

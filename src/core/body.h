@@ -40,6 +40,8 @@ typedef struct body {
 
     double mass;       /* > 0 dynamic; < 0 static (infinite mass) */
     double elasticity; /* [0, 1] */
+    double friction;   /* Coulomb's coefficient, >= 0 (friction.h) */
+    double rolling_friction; /* rolling resistance, >= 0 (friction.h) */
     double volume;     /* loudness of collision sounds, >= 0 */
     int color[3];      /* 0..255 */
 
@@ -88,7 +90,7 @@ static inline void body_copy_state(body *dst, const body *src)
 }
 
 /* A fresh body of the given kind named name, with the thesis's defaults:
- * mass 1, elasticity 1, volume 1, colour (255,0,0), at the origin, identity
+ * mass 1, elasticity 1, no friction (the thesis's), volume 1, colour (255,0,0), at the origin, identity
  * orientation, at rest; the shape is not built yet (body_build does it). */
 void body_init(body *b, const char *name, shape_kind kind);
 

@@ -8,6 +8,7 @@
 #include "impulse.h"
 
 #include <assert.h>
+#include <math.h>
 
 #include "lcp.h"
 
@@ -67,7 +68,7 @@ void impulse_apply(const impulse_row *rows, int n, body *const *bs, const bool *
                    const double *lambda)
 {
     for (int k = 0; k < n; k++) {
-        if (!(lambda[k] > 0)) continue;
+        if (lambda[k] == 0 || !isfinite(lambda[k])) continue;
         const impulse_row *r = &rows[k];
         vec3 J = v3_scale(r->n, lambda[k]);
         for (int side = 0; side < 2; side++) {

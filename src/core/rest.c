@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include "contact.h"
+#include "friction.h"
 #include "impulse.h"
 #include "pairs.h"
 #include "rows.h"
@@ -80,6 +81,8 @@ static bool try_slide(world *w, int mi, int si, pair *p)
     body *m = w->bodies[mi];
     const body *s = w->bodies[si];
     double size = 1 + tol_size(m, s);
+    /* (a slide is frictionless: with friction, the cluster's cones decide) */
+    if (friction_mu(m, s) > 0) return false;
     closest_result r = mi == p->a ? pair_query(w, p, m, s) : pair_query(w, p, s, m);
     if (r.status == CLOSEST_INVALID) return false;
     if (mi != p->a) closest_mirror(&r);
@@ -301,7 +304,12 @@ bool rest_balanced(world *w, const int *list, int n)
     int nr = rl.n;
     double lambda[SIM_CLUSTER_ROWS] = {0}, u[SIM_CLUSTER_ROWS] = {0};
     for (int k = 0; k < nr; k++) u[k] = impulse_speed(&rows[k], bs);
-    if (ok && nr > 0) ok = impulse_solve(rows, nr, bs, mobile, u, lambda, w->answer.lcp) == 0;
+    if (ok && nr > 0 && friction_any(rows, nr)) {
+        friction_flags f = {false, false, false};
+        ok = friction_compress(rows, nr, bs, mobile, u, lambda, w->answer.fw, &f) == 0;
+    } else if (ok && nr > 0) {
+        ok = impulse_solve(rows, nr, bs, mobile, u, lambda, w->answer.lcp) == 0;
+    }
     for (int k = 0; k < n && ok; k++) {
         const body *c = bs[list[k]];
         double scale = 1 + c->shape.r_out;
@@ -320,11 +328,12 @@ static double speed_of(const body *b)
     return v3_len(b->v) + v3_len(b->w) * b->shape.r_out;
 }
 
-/* True when some lasting contact of object i loses energy (e < 1). */
+/* True when some lasting contact of object i loses energy (e < 1, or friction). */
 static bool lossy(world *w, int i)
 {
     FOR_TOUCHING(w, i, p, o) {
-        if (d_min(w->bodies[i]->elasticity, w->bodies[o]->elasticity) < 1) return true;
+        const body *a = w->bodies[i], *b = w->bodies[o];
+        if (d_min(a->elasticity, b->elasticity) < 1 || friction_mu(a, b) > 0) return true;
     }
     return false;
 }

@@ -35,6 +35,8 @@ typedef struct {
     double max_angular;     /* rad/s */
     dir_amount force;       /* direction as typed, magnitude m/s^2 */
     bool collision_heap;    /* the schedule (on), or every pair every step (off) */
+    double default_friction;         /* what new objects take: friction, */
+    double default_rolling_friction; /*   rolling_friction (the shell sets them) */
 } sim_settings;
 
 /* A collision's result that a speed limit cut (sim.h): the object, the limit,
@@ -64,6 +66,12 @@ typedef struct {
                            * each loses energy (elasticity 1 keeps it only within
                            * the limits) */
     sim_cut first_cut;    /* the first of them (when speed_cuts > 0) */
+    long energy_cuts;     /* contact problems with friction whose restitution was
+                           * scaled down: it would have raised the kinetic energy */
+    long cone_unconverged; /* cone solves that stopped short of FRICTION_TOL */
+    long painleve;        /* contact problems with friction with no consistent
+                           * answer (Painleve): answered without friction there */
+    int first_painleve;   /* an object of the first of them (when painleve > 0) */
     long heap_pops;       /* pairs taken from the schedule to be checked */
     long events_lost;     /* collisions not reported in events (out of memory) */
     long late_pairs;      /* (heap off) contacts found of pairs the broad phase did

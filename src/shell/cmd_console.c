@@ -164,6 +164,9 @@ cmd_status cmd_distance(shell *sh, const stmt *st)
     writer_vec(sh->out, r.normal, s);
     fprintf(sh->out, "\nfeature_A = %s\nfeature_B = %s\n", feature_name(r.fa, fa),
             feature_name(r.fb, fb));
+    const body *A = sh->w.bodies[ia], *B = sh->w.bodies[ib];
+    fprintf(sh->out, "friction = %s\n", fmt_shown(a, friction_mu(A, B), s));
+    fprintf(sh->out, "rolling_friction = %s\n", fmt_shown(a, friction_rolling(A, B), s));
     return CMD_OK;
 }
 
@@ -193,6 +196,12 @@ cmd_status cmd_stats(shell *sh, const stmt *st)
     fprintf(sh->out, "unsolved = %ld\n", w->st.unsolved);
     fprintf(sh->out, "overflows = %ld\n", w->st.overflows);
     fprintf(sh->out, "speed_cuts = %ld\n", w->st.speed_cuts);
+    fprintf(sh->out, "energy_cuts = %ld\n", w->st.energy_cuts);
+    fprintf(sh->out, "cone_unconverged = %ld\n", w->st.cone_unconverged);
+    fprintf(sh->out, "painleve = %ld\n", w->st.painleve);
+    long resting = 0;
+    for (int i = 0; i < w->n; i++) resting += w->bodies[i]->state == STATE_RESTING;
+    fprintf(sh->out, "resting = %ld\n", resting);
     return CMD_OK;
 }
 
