@@ -48,7 +48,15 @@ start_session() {
     tmux -f /dev/null new-session -d -s "$SES" -x 120 -y 40 \
         "cd '$TMP' && HOME='$TMP' ASAN_OPTIONS='$ASAN_OPTIONS' '$VROC' $*; echo EXIT=\$?; sleep 30"
 }
-screen() { tmux capture-pane -p -t "$SES" -S -80; }
+# (a loaded machine's tmux may answer a capture with nothing: ask again)
+screen() {
+    for _ in 1 2 3 4 5; do
+        _scr=$(tmux capture-pane -p -t "$SES" -S -80 2>/dev/null)
+        [ -n "$(printf '%s' "$_scr" | tr -d '[:space:]')" ] && break
+        sleep 0.2
+    done
+    printf '%s\n' "$_scr"
+}
 type_() { tmux send-keys -t "$SES" "$@"; }
 # wait until the screen shows PATTERN (fixed string), up to 20 s (sanitizer builds are slow)
 wait_for() {

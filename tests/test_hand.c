@@ -123,14 +123,27 @@ static void rows_are_checked(void **state)
     bad_row("0,1,2,3,1.0000011,0,0,0,1,1", "not a unit one");
     bad_row("0,1,2,3,1,0,0,0,1", "9 columns");
     bad_row("0,1,2,3,1,0,0,0,1,0,7", "more than 10 columns");
-    bad_row("-1,1,2,3,1,0,0,0,1,0", "time must be >= 0");
+    bad_row("-1,1,2,3,1,0,0,0,1,0", "time must be between 0 and 1e+12 (got -1)");
+    /* the limits every statement has (core/limits.h): just inside and just outside */
+    assert_int_equal(tracker_parse_row("1e12,-1e6,1e6,0,1,0,0,0,0,0", &r, err, sizeof err), 0);
+    bad_row("1.0000001e12,1,2,3,1,0,0,0,1,0", "time must be between 0 and 1e+12");
+    bad_row("0,1e308,2,3,1,0,0,0,1,0", "x must be between -1e+06 and 1e+06 (got 1e+308)");
+    bad_row("0,1,-1000000.1,3,1,0,0,0,1,0", "y must be between -1e+06 and 1e+06");
+    bad_row("0,1,2,1.0000001e6,1,0,0,0,1,0", "z must be between");
+    /* rows at one time (a jump), or 1e-6 s apart at least */
+    assert_int_equal(tracker_check_spacing(1, 1, err, sizeof err), 0);
+    assert_int_equal(tracker_check_spacing(1, 1 + 1.0001e-6, err, sizeof err), 0);
+    assert_int_equal(tracker_check_spacing(1, 0.5, err, sizeof err), 0); /* (the order is checked apart) */
+    assert_int_equal(tracker_check_spacing(1, 1 + 0.9999e-6, err, sizeof err), -1);
+    assert_non_null(strstr(err, "at least 1e-06 s apart"));
+    assert_int_equal(tracker_check_spacing(0, 1e-300, err, sizeof err), -1);
     bad_row("0,inf,2,3,1,0,0,0,1,0", "x must be finite");
     bad_row("0,1,2,3,1,0,0,0,0.5,0", "trigger must be 0 or 1");
     bad_row("0,1,2,3x,1,0,0,0,0,0", "z is not a number");
     assert_int_equal(tracker_line_kind("   # x"), TRACKER_SKIP);
     assert_int_equal(tracker_line_kind(TRACKER_HEADER), TRACKER_HEADER_LINE);
     /* a row written reads back to the bit */
-    tracker_row a = {0.1, v3(1.0 / 3, -2e-7, 1e10), q_axis_angle(v3(1, 1, 0), 0.7), true, false}, b;
+    tracker_row a = {0.1, v3(1.0 / 3, -2e-7, 999999.12345678912), q_axis_angle(v3(1, 1, 0), 0.7), true, false}, b;
     FILE *f = fopen(in_dir("row.csv"), "w");
     assert_non_null(f);
     tracker_write_row(f, &a);
@@ -181,6 +194,7 @@ static void the_panel_finds_every_control_in_any_pose(void **state)
 typedef struct {
     tracker_row rows[8];
     int n, bad;
+    char last[512]; /* the last bad line's message */
 } got;
 
 static void got_row(void *ctx, const tracker_row *r)
@@ -193,7 +207,7 @@ static void got_bad(void *ctx, const char *msg)
 {
     got *g = ctx;
     g->bad++;
-    assert_non_null(strstr(msg, ":3: "));
+    snprintf(g->last, sizeof g->last, "%s", msg);
 }
 
 static void a_fifo_feeds_rows_as_they_come(void **state)
@@ -216,12 +230,21 @@ static void a_fifo_feeds_rows_as_they_come(void **state)
     assert_int_equal(feed_read(&f, got_row, got_bad, &g, err, sizeof err), FEED_WAITING);
     assert_int_equal(g.n, 1); /* the unfinished line waits for its end */
     assert_int_equal(g.bad, 1);
+    assert_non_null(strstr(g.last, ":3: "));
     assert_near(g.rows[0].p.y, 2, 0);
     const char *rest = ",4,1,0,0,0,0,1\n";
     assert_int_equal(write(wfd, rest, strlen(rest)), (ssize_t)strlen(rest));
     assert_int_equal(feed_read(&f, got_row, got_bad, &g, err, sizeof err), FEED_WAITING);
     assert_int_equal(g.n, 2);
     assert_true(!g.rows[1].trigger && g.rows[1].button && g.rows[1].p.z == 4);
+    /* the limits a file has: a row 1e-7 s after the last, one 2e6 m away, left out */
+    const char *more = "0.6000001,1,2,4,1,0,0,0,0,0\n0.7,2e6,2,4,1,0,0,0,0,0\n0.6000011,1,2,5,1,0,0,0,0,0\n";
+    assert_int_equal(write(wfd, more, strlen(more)), (ssize_t)strlen(more));
+    assert_int_equal(feed_read(&f, got_row, got_bad, &g, err, sizeof err), FEED_WAITING);
+    assert_int_equal(g.bad, 3);
+    assert_non_null(strstr(g.last, "hand.fifo:6: x must be between -1e+06 and 1e+06 (got 2e+06)"));
+    assert_int_equal(g.n, 3); /* 1e-6 s after the last row taken: taken */
+    assert_near(g.rows[2].p.z, 5, 0);
     close(wfd); /* the writer goes away */
     assert_int_equal(feed_read(&f, got_row, got_bad, &g, err, sizeof err), FEED_ENDED);
     feed_close(&f);

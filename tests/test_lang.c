@@ -17,7 +17,7 @@ static char g_err[1024];
 
 static program *parse(const char *text)
 {
-    lang_paths paths = {NULL, NULL};
+    lang_paths paths = {NULL, NULL, NULL};
     return lang_parse(text, strlen(text), "t.vroc", 1, &paths, 0, NULL, 0, g_err, sizeof g_err);
 }
 
@@ -347,11 +347,11 @@ static void binary_garbage_and_huge_lines(void **state)
     (void)state;
     expect_error("sphere a\n\x01\x02\x03\n", 2, "control character 0x01");
     const char nul[] = "sphere a\nradius = 1\0garbage\n";
-    lang_paths paths = {NULL, NULL};
+    lang_paths paths = {NULL, NULL, NULL};
     program *p = lang_parse(nul, sizeof nul - 1, "t.vroc", 1, &paths, 0, NULL, 0, g_err,
                             sizeof g_err);
     assert_null(p);
-    assert_non_null(strstr(g_err, "t.vroc:2: error: unexpected NUL byte"));
+    assert_non_null(strstr(g_err, "t.vroc:2: error: a NUL byte"));
 
     size_t n = 1 << 20;
     char *big = malloc(n + 16);
@@ -388,7 +388,7 @@ static program *parse_path(const char *name)
 {
     char path[256];
     snprintf(path, sizeof path, "%s/%s", g_dir, name);
-    lang_paths paths = {NULL, NULL};
+    lang_paths paths = {NULL, NULL, NULL};
     return lang_parse_file(path, &paths, 1, NULL, 0, NULL, 0, g_err, sizeof g_err);
 }
 

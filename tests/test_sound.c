@@ -5,7 +5,9 @@
 #include "check.h"
 #include "scratch.h"
 
+#include <dirent.h>
 #include <signal.h>
+#include <stdbool.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
@@ -18,6 +20,7 @@
 #include "sound/place.h"
 #include "sound/sound.h"
 #include "sound/synth.h"
+#include "sound/track.h"
 #include "tone.h"
 
 static int setup(void **state)
@@ -258,6 +261,18 @@ static void sound_files_are_resampled_and_checked(void **state)
     assert_non_null(strstr(err, "no sound"));
 }
 
+/* True when a part file (outfile.h) is left in the scratch folder. */
+static bool part_files_left(void)
+{
+    DIR *d = opendir(g_dir);
+    assert_non_null(d);
+    bool left = false;
+    for (struct dirent *e; (e = readdir(d)) != NULL;)
+        if (strstr(e->d_name, "vroc-part")) left = true;
+    closedir(d);
+    return left;
+}
+
 /* Reads a 48 kHz stereo 16-bit WAV file whole: *n samples. */
 static short *read_wav(const char *path, long *n)
 {
@@ -377,11 +392,106 @@ static void a_soundtrack_that_outgrows_the_size_limit_says_why(void **state)
     snprintf(want, sizeof want, "cannot write '%s': File too large", path);
     assert_string_equal(err, want);
     assert_null(sound_track_path(e));
-    long n;
-    short *x = read_wav(path, &n);
-    assert_true(n >= 960 - MIXER_LOOKAHEAD && n <= (10000 - 44) / 4);
-    free(x);
+    /* given up: no file at its path, and no part file beside it */
+    assert_int_equal(access(path, F_OK), -1);
+    assert_false(part_files_left());
     assert_int_equal(sound_free(e, 0.1, err, sizeof err), 0);
+
+    /* a soundtrack that fails over an old file leaves it whole */
+    FILE *f = fopen(path, "w");
+    fputs("the old file\n", f);
+    fclose(f);
+    e = sound_new();
+    assert_int_equal(sound_track_open(e, path, 0, err, sizeof err), 0);
+    was = signal(SIGXFSZ, SIG_IGN);
+    assert_int_equal(setrlimit(RLIMIT_FSIZE, &lim), 0);
+    second = sound_frame(e, &set, &l, NULL, 0, 0, 0.1, -1, err, sizeof err);
+    setrlimit(RLIMIT_FSIZE, &old);
+    signal(SIGXFSZ, was);
+    assert_int_equal(second, 1);
+    char back[64] = "";
+    f = fopen(path, "r");
+    assert_non_null(fgets(back, sizeof back, f));
+    fclose(f);
+    assert_string_equal(back, "the old file\n");
+    assert_false(part_files_left());
+    assert_int_equal(sound_free(e, 0.1, err, sizeof err), 0);
+}
+
+/* The header of a soundtrack of frames frames, with the RIFF limit riff_max. */
+static void header_of(unsigned char h[TRACK_HEADER_BYTES], uint64_t frames, uint64_t riff_max)
+{
+    memset(h, 0xaa, TRACK_HEADER_BYTES);
+    track_header(h, frames, riff_max);
+}
+
+static uint64_t le(const unsigned char *p, int bytes)
+{
+    uint64_t v = 0;
+    for (int k = bytes - 1; k >= 0; k--) v = v << 8 | p[k];
+    return v;
+}
+
+/* Beyond 4 GiB a soundtrack is RF64 (EBU Tech 3306): the sizes in ds64, 0xffffffff
+ * in the 32-bit fields; just inside, RIFF with the same layout (a JUNK chunk in
+ * ds64's place).  Checked on the header writer, and on a small file whose limit
+ * is lowered, which libsndfile (the reader the tests trust) reads back. */
+static void a_soundtrack_beyond_4_gib_is_rf64(void **state)
+{
+    (void)state;
+    unsigned char h[TRACK_HEADER_BYTES];
+    /* the RIFF size is the file's length less 8: 72 + 4 frames */
+    uint64_t inside = (TRACK_RIFF_MAX - 72) / 4, outside = inside + 1;
+    header_of(h, inside, TRACK_RIFF_MAX);
+    assert_memory_equal(h, "RIFF", 4);
+    assert_int_equal(le(h + 4, 4), 72 + 4 * inside);
+    assert_memory_equal(h + 8, "WAVEJUNK", 8);
+    assert_int_equal(le(h + 16, 4), 28);
+    assert_memory_equal(h + 48, "fmt ", 4);
+    assert_int_equal(le(h + 60, 4), 48000);
+    assert_int_equal(le(h + 64, 4), 192000);
+    assert_int_equal(le(h + 68, 2), 4);
+    assert_int_equal(le(h + 70, 2), 16);
+    assert_memory_equal(h + 72, "data", 4);
+    assert_int_equal(le(h + 76, 4), 4 * inside);
+    header_of(h, outside, TRACK_RIFF_MAX);
+    assert_memory_equal(h, "RF64", 4);
+    assert_int_equal(le(h + 4, 4), 0xffffffffu);
+    assert_memory_equal(h + 8, "WAVEds64", 8);
+    assert_int_equal(le(h + 20, 8), 72 + 4 * outside);
+    assert_int_equal(le(h + 28, 8), 4 * outside);
+    assert_int_equal(le(h + 36, 8), outside);
+    assert_int_equal(le(h + 76, 4), 0xffffffffu);
+    /* six hours and forty minutes, which a 32-bit size wrapped to 27 minutes */
+    uint64_t long_run = 48000ULL * (6 * 3600 + 40 * 60);
+    header_of(h, long_run, TRACK_RIFF_MAX);
+    assert_int_equal(le(h + 36, 8), long_run);
+    assert_int_equal(le(h + 28, 8), 4 * long_run);
+
+    /* a file of 1000 frames, RF64 for a limit of 1000 bytes: libsndfile reads it */
+    char path[256];
+    path_in_dir(path, sizeof path, "small-rf64.wav");
+    FILE *f = fopen(path, "wb");
+    header_of(h, 1000, 1000);
+    assert_memory_equal(h, "RF64", 4);
+    fwrite(h, 1, sizeof h, f);
+    for (int i = 0; i < 1000; i++) {
+        unsigned char s[4] = {(unsigned char)i, (unsigned char)(i >> 8), 0, 0};
+        fwrite(s, 1, 4, f);
+    }
+    fclose(f);
+    SF_INFO info;
+    memset(&info, 0, sizeof info);
+    SNDFILE *in = sf_open(path, SFM_READ, &info);
+    if (!in) fail_msg("libsndfile: %s", sf_strerror(NULL));
+    assert_int_equal(info.format & SF_FORMAT_TYPEMASK, SF_FORMAT_RF64);
+    assert_int_equal(info.frames, 1000);
+    assert_int_equal(info.channels, 2);
+    assert_int_equal(info.samplerate, 48000);
+    short x[2000];
+    assert_int_equal(sf_readf_short(in, x, 1000), 1000);
+    assert_int_equal(x[2 * 999], 999);
+    sf_close(in);
 }
 
 int main(void)
@@ -398,6 +508,7 @@ int main(void)
                                         teardown),
         cmocka_unit_test_setup_teardown(a_soundtrack_that_outgrows_the_size_limit_says_why, setup,
                                         teardown),
+        cmocka_unit_test_setup_teardown(a_soundtrack_beyond_4_gib_is_rf64, setup, teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

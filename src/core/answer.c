@@ -148,11 +148,11 @@ static bool limit_speeds(world *w, int i, sim_cut *cut)
     double vl = v3_len(b->v), wl = v3_len(b->w);
     bool linear = vl > w->set.max_linear, angular = wl > w->set.max_angular;
     if (linear) {
-        *cut = (sim_cut){i, false, vl, w->set.max_linear};
+        *cut = (sim_cut){i, false, vl, w->set.max_linear, false};
         b->v = v3_scale(b->v, w->set.max_linear / vl);
     }
     if (angular) {
-        if (!linear) *cut = (sim_cut){i, true, wl, w->set.max_angular};
+        if (!linear) *cut = (sim_cut){i, true, wl, w->set.max_angular, false};
         b->L = v3_scale(b->L, w->set.max_angular / wl);
         body_update_w(b);
     }
@@ -164,7 +164,7 @@ static bool limit_speeds(world *w, int i, sim_cut *cut)
 static bool limit_all(world *w, const int *list, int n)
 {
     bool cut = false;
-    sim_cut first = {-1, false, 0, 0}, one = first;
+    sim_cut first = {-1, false, 0, 0, false}, one = first;
     for (int j = 0; j < n; j++) {
         if (!limit_speeds(w, list[j], &one)) continue;
         if (!cut) first = one;

@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "limits.h"
 #include "rest.h"
 
 /* Builds body b again after its shape parameters changed from old; on failure
@@ -164,6 +165,36 @@ void edit_unpress(world *w, int i)
 {
     disturb(w, i, false);
     end_contacts(w, i);
+}
+
+/* True when some component of v is beyond max (by magnitude). */
+static bool beyond(vec3 v, double max)
+{
+    return fabs(v.x) > max || fabs(v.y) > max || fabs(v.z) > max;
+}
+
+bool edit_beyond_limits(const world *w, int i)
+{
+    const body *b = w->bodies[i];
+    if (body_is_static(b)) return false;
+    return beyond(b->x, LIM_POSITION_MAX) || beyond(b->v, LIM_SPEED_MAX) ||
+           beyond(b->L, LIM_MOMENTUM_MAX);
+}
+
+void edit_rest_at_limits(world *w, int i)
+{
+    body *b = w->bodies[i];
+    edit_unpress(w, i);
+    const double m = LIM_POSITION_MAX;
+    b->x = v3(d_max(-m, d_min(m, b->x.x)), d_max(-m, d_min(m, b->x.y)), d_max(-m, d_min(m, b->x.z)));
+    b->v = b->w = b->L = v3(0, 0, 0);
+    b->mode = MODE_FREE;
+    b->slide_on = b->slide_face = -1;
+    b->state = STATE_RESTING;
+    /* placed: what it touches where it rests is found anew, and it wakes if so */
+    b->moved = true;
+    b->woken = false;
+    edit_done(w);
 }
 
 void edit_delete(world *w, int i)

@@ -11,6 +11,7 @@
 #ifndef VROC_EDIT_H
 #define VROC_EDIT_H
 
+#include <stdbool.h>
 #include <stddef.h>
 
 #include "world.h"
@@ -87,6 +88,21 @@ void edit_clock(world *w, double base, long frames);
  * together with it move again, their modes found anew when the simulation starts
  * over (for a body the hand takes: hold.h). */
 void edit_unpress(world *w, int i);
+
+/* ---- the limits of a state (limits.h), which every state the simulation makes
+ * keeps, so that what save writes reads back ---- */
+
+/* True when dynamic object i's state is beyond what a statement may set: a
+ * coordinate of its origin (translate) beyond LIM_POSITION_MAX, a component of
+ * its velocity beyond LIM_SPEED_MAX or of its angular momentum beyond
+ * LIM_MOMENTUM_MAX (a fall that went on for minutes, a force of a thousand g). */
+bool edit_beyond_limits(const world *w, int i);
+
+/* Puts object i (dynamic, not held), beyond the limits, to rest where it left
+ * them: each coordinate of its origin brought back to LIM_POSITION_MAX, its
+ * velocities 0, its lasting contacts ended (what pressed on it moves again); it
+ * rests, feeling no force, until something moves it. */
+void edit_rest_at_limits(world *w, int i);
 
 /* Removes object i; what pressed on it moves again. */
 void edit_delete(world *w, int i);

@@ -36,6 +36,15 @@ void hold_release(world *w, int i, vec3 v, vec3 wv)
     if (!b->held) return;
     b->held = false;
     b->hold_pivot = b->hold_v = v3(0, 0, 0);
+    /* a throw is held to the speed limits, as a collision is (a hand that moved
+     * at a limit may give rounding's worth more: that is not a cut) */
+    double vl = v3_len(v), wl = v3_len(wv);
+    bool cut_v = vl > w->set.max_linear * (1 + 1e-12), cut_w = wl > w->set.max_angular * (1 + 1e-12);
+    if (cut_v) v = v3_scale(v, w->set.max_linear / vl);
+    if (cut_w) wv = v3_scale(wv, w->set.max_angular / wl);
+    /* counted as a collision's cut is (answer.c), the world's first described */
+    sim_cut c = {i, !cut_v, cut_v ? vl : wl, cut_v ? w->set.max_linear : w->set.max_angular, true};
+    if ((cut_v || cut_w) && w->st.speed_cuts++ == 0) w->st.first_cut = c;
     b->v = v;
     body_set_angular_vel(b, wv);
     edit_done(w);

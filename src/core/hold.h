@@ -54,7 +54,9 @@ int hold_set(world *w, int i, hold_motion m);
 
 /* Body i is held no more: from now it flies freely with velocity v (of its centre
  * of mass) and angular velocity wv (world axes), under the force as any dynamic
- * body.  Nothing happens to a body that is not held. */
+ * body; each is scaled down to max_linear or max_angular when longer, a cut
+ * counted as a collision's is (st.speed_cuts, st.first_cut).  Nothing happens to
+ * a body that is not held. */
 void hold_release(world *w, int i, vec3 v, vec3 wv);
 
 /* Held body i's pivot and that point's velocity, exactly (save writes them): its

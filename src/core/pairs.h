@@ -118,10 +118,12 @@ closest_result pair_query(world *w, pair *p, const body *a, const body *b);
 closest_result pair_query_apart(world *w, pair *p, const body *a, const body *b);
 
 /* Walks object i's pairs, in the order of the other object: link the pair_link,
- * pr its pair. */
+ * pr its pair.  (An object with no pairs may have no list at all, NULL, to which
+ * not even 0 may be added: its end is then its start.) */
 #define FOR_PAIRS_OF(w, i, link, pr)                                                        \
-    for (const pair_link *link = (w)->pairs.adj[i].l, *link##_end_ = link + (w)->pairs.adj[i].n; \
-         link < link##_end_; link++)                                                        \
+    for (const pair_link *link = (w)->pairs.adj[i].l,                                      \
+                         *link##_end_ = link ? link + (w)->pairs.adj[i].n : link;           \
+         link != link##_end_; link++)                                                       \
         for (pair *pr = &(w)->pairs.p[link->slot]; pr; pr = NULL)
 
 #endif

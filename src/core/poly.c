@@ -346,6 +346,8 @@ static void qrun_message(qrun *r, const char *what, char *err, size_t errlen)
 {
     if (r->exitcode == qh_ERRsingular)
         errmsg_set(err, errlen, "%s: points are coplanar or collinear (no volume)", what);
+    else if (r->exitcode == qh_ERRmem)
+        errmsg_set(err, errlen, "%s: out of memory", what);
     else
         errmsg_set(err, errlen,
                 "%s: the points are too close together for their size to make a solid",

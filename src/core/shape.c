@@ -294,6 +294,10 @@ static int build_box(shape *s, vec3 h, const char *what, char *err, size_t errle
                  "around it");
     else
         s->hull = poly_box(h, why, sizeof why); /* (its hull is known: no qhull run) */
+    if (!s->hull && strstr(why, "out of memory")) {
+        errmsg_set(err, errlen, "%s: out of memory", what);
+        return -1;
+    }
     if (!s->hull) {
         errmsg_set(err, errlen, "%s (%.6g, %.6g, %.6g) cannot be built: %s", what, h.x, h.y, h.z,
                 strip_hull(why));
@@ -436,6 +440,10 @@ static int build_superquadric(shape *s, char *err, size_t errlen)
     }
     char why[200];
     s->hull = poly_hull(s->draw.pos, s->draw.nv, why, sizeof why);
+    if (!s->hull && strstr(why, "out of memory")) { /* not the shape's fault */
+        errmsg_set(err, errlen, "superquadric: out of memory");
+        return -1;
+    }
     if (!s->hull) {
         errmsg_set(err, errlen,
                 "superquadric: a1 %.6g, a2 %.6g, a3 %.6g with exp1 %.6g, exp2 %.6g cannot be "

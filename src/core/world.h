@@ -39,14 +39,15 @@ typedef struct {
     double default_rolling_friction; /*   rolling_friction (the shell sets them) */
 } sim_settings;
 
-/* A collision's result that a speed limit cut (sim.h): the object, the limit,
- * and the speed it would have had. */
+/* A collision's result, or a throw (hold.h), that a speed limit cut (sim.h): the
+ * object, the limit, and the speed it would have had. */
 typedef struct {
     int object;           /* its index then */
     bool angular;         /* max_angular cut its spin (rad/s); else max_linear its
                            * speed (m/s) */
     double speed;         /* what it would have had */
     double limit;         /* the limit it was cut to */
+    bool thrown;          /* a throw's, not a collision's */
 } sim_cut;
 
 /* The simulation's counters since the world was made. */
@@ -62,9 +63,9 @@ typedef struct {
                            * expected but for a held body, which stops instead */
     long overflows;       /* internal steps cut short after SIM_MAX_EVENTS_PER_STEP
                            * events (a guard against a fault; never expected) */
-    long speed_cuts;      /* collisions whose result max_linear or max_angular cut:
-                           * each loses energy (elasticity 1 keeps it only within
-                           * the limits) */
+    long speed_cuts;      /* collisions and throws whose result max_linear or
+                           * max_angular cut: each loses energy (elasticity 1 keeps
+                           * it only within the limits) */
     sim_cut first_cut;    /* the first of them (when speed_cuts > 0) */
     long energy_cuts;     /* contact problems with friction whose restitution was
                            * scaled down: it would have raised the kinetic energy */
@@ -77,6 +78,7 @@ typedef struct {
     long late_pairs;      /* (heap off) contacts found of pairs the broad phase did
                            * not hold near: it was late; never expected */
 } sim_stats;
+
 
 /* One collision answered: at time t, bodies a and b (indices) at point p, with
  * normal n (unit, from b towards a), impulse magnitude j (N s) and closing speed

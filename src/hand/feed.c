@@ -55,11 +55,14 @@ static void take_line(tracker_feed *f, char *line, void (*row)(void *, const tra
     }
     if (tracker_line_kind(line) != TRACKER_DATA) return;
     tracker_row r;
-    if (tracker_parse_row(line, &r, why, sizeof why) != 0) {
+    if (tracker_parse_row(line, &r, why, sizeof why) != 0 ||
+        (f->have_last && tracker_check_spacing(f->last_t, r.t, why, sizeof why) != 0)) {
         snprintf(msg, sizeof msg, "%s:%ld: %s", f->path, f->line, why);
         bad(ctx, msg);
         return;
     }
+    f->last_t = r.t;
+    f->have_last = true;
     row(ctx, &r);
 }
 

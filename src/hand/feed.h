@@ -18,7 +18,7 @@
 #include "tracker.h"
 
 #define FEED_PATH_MAX 1024
-#define FEED_LINE_MAX 1024
+#define FEED_LINE_MAX (TRACKER_LINE_MAX + 1) /* a line and its NUL */
 
 typedef struct {
     int fd;                     /* -1 when closed */
@@ -27,6 +27,8 @@ typedef struct {
     size_t len;
     long line;                  /* lines read so far */
     bool overlong;              /* the line being read is longer than buf: skipped */
+    double last_t;              /* the last row's time (tracker_check_spacing) */
+    bool have_last;
 } tracker_feed;
 
 /* What feed_read found. */
@@ -45,7 +47,8 @@ int feed_open(tracker_feed *f, const char *path, char *err, size_t errlen);
 void feed_close(tracker_feed *f);
 
 /* Reads what has arrived, without waiting: each complete row goes to row(ctx, r);
- * a line that is not a row goes to bad(ctx, "path:line: problem").  Returns
+ * a line that is not a row, or a row nearer in time to the one before than a file
+ * allows (tracker_check_spacing), goes to bad(ctx, "path:line: problem").  Returns
  * FEED_WAITING while the writer may write more (or none has come yet), FEED_ENDED
  * once the writer went away, FEED_FAILED when reading failed (err says why). */
 feed_state feed_read(tracker_feed *f, void (*row)(void *ctx, const tracker_row *r),

@@ -32,6 +32,7 @@
 
 #include "core/closest.h"
 #include "core/hold.h"
+#include "core/limits.h"
 #include "core/sim.h"
 #include "shell/outfile.h"
 
@@ -282,7 +283,9 @@ static void panel_follow(hand *h)
         double angle;
         held_place(h, h->p, h->q, &x, &q);
         q_to_axis_angle(q, &axis, &angle);
-        h->set.panel_at = x;
+        /* within the limits of a position, as panel_at must be (core/limits.h) */
+        const double m = LIM_POSITION_MAX;
+        h->set.panel_at = v3(d_max(-m, d_min(m, x.x)), d_max(-m, d_min(m, x.y)), d_max(-m, d_min(m, x.z)));
         h->set.panel_rotate = (dir_amount){axis, angle};
     }
     if (h->grip == GRIP_SLIDER) {
@@ -454,21 +457,19 @@ static void log_row(hand *h, bool always)
 
 int hand_log_open(hand *h, const char *path, char *err, size_t errlen)
 {
-    if (outfile_allowed(path, err, errlen) != 0) return -1;
-    FILE *f = fopen(path, "w");
-    if (!f) {
-        snprintf(err, errlen, "cannot write '%s': %s", path, strerror(errno));
-        return -1;
-    }
-    /* the header and the hand now, checked before the old log is let go */
+    outfile o;
+    if (outfile_begin(&o, path, OUTFILE_STREAM, err, errlen) != 0) return -1;
+    /* the header and the hand now, checked (and the file put in its place) before
+     * the old log is let go */
     tracker_row r = {0, h->p, h->q, h->set.trigger, h->button};
-    int rc = fprintf(f, "%s\n", TRACKER_HEADER) < 0 || tracker_write_row(f, &r) < 0
+    int rc = fprintf(o.f, "%s\n", TRACKER_HEADER) < 0 || tracker_write_row(o.f, &r) < 0
                  ? outfile_failed(path, errno, err, errlen)
-                 : outfile_flush(f, path, err, errlen);
+                 : outfile_place(&o, err, errlen);
     if (rc != 0) {
-        fclose(f);
+        outfile_abort(&o);
         return -1;
     }
+    FILE *f = o.f;
     rc = outfile_close(h->log, h->set.hand_log, err, errlen);
     /* with no file playing the clock starts again at 0 with the log, so that the
      * log's times are the clock's own, and a live source's rows, at times of the
@@ -631,16 +632,26 @@ int hand_reselect(hand *h, world *w, char *err, size_t errlen)
 
 static const char *const grip_words[] = {"off", "none", "fly", NULL, "panel", NULL};
 
-int hand_set_grip(hand *h, world *w, const char *what, char *err, size_t errlen)
+/* The grip a word of grip's names, with its slider; GRIP_OBJECT for any other
+ * word (an object's name). */
+static grip_kind grip_of_word(const char *what, panel_part *slider)
 {
-    int i = -1;
     grip_kind g = GRIP_OBJECT;
-    panel_part slider = PANEL_OFF;
+    *slider = PANEL_OFF;
     for (int k = 0; k < 6; k++)
         if (grip_words[k] && strcmp(what, grip_words[k]) == 0) g = (grip_kind)k;
-    if (strcmp(what, "time_step") == 0) slider = PANEL_TIME_STEP;
-    if (strcmp(what, "collision_dist") == 0) slider = PANEL_COLLISION_DIST;
-    if (slider != PANEL_OFF) g = GRIP_SLIDER;
+    if (strcmp(what, "time_step") == 0) *slider = PANEL_TIME_STEP;
+    if (strcmp(what, "collision_dist") == 0) *slider = PANEL_COLLISION_DIST;
+    if (*slider != PANEL_OFF) g = GRIP_SLIDER;
+    return g;
+}
+
+int hand_set_grip(hand *h, world *w, const char *what, bool quoted, char *err, size_t errlen)
+{
+    int i = -1;
+    panel_part slider;
+    grip_kind g = quoted ? GRIP_OBJECT : grip_of_word(what, &slider);
+    if (quoted) slider = PANEL_OFF;
     if (g == GRIP_OBJECT) {
         i = world_find(w, what);
         if (i < 0) {
@@ -663,10 +674,16 @@ int hand_set_grip(hand *h, world *w, const char *what, char *err, size_t errlen)
     return 0;
 }
 
-const char *hand_grip_word(const hand *h, const world *w)
+const char *hand_grip_word(const hand *h, const world *w, char buf[HAND_GRIP_TEXT])
 {
+    panel_part slider;
     switch (h->grip) {
-    case GRIP_OBJECT: return h->held >= 0 && h->held < w->n ? w->bodies[h->held]->name : "none";
+    case GRIP_OBJECT:
+        if (!(h->held >= 0 && h->held < w->n)) return "none";
+        snprintf(buf, HAND_GRIP_TEXT, "%s", w->bodies[h->held]->name);
+        if (grip_of_word(buf, &slider) != GRIP_OBJECT)
+            snprintf(buf, HAND_GRIP_TEXT, "\"%s\"", w->bodies[h->held]->name);
+        return buf;
     case GRIP_SLIDER: return panel_control_of(h->slider)->name;
     default: return grip_words[h->grip];
     }
@@ -735,6 +752,11 @@ int hand_set_last_held(hand *h, const world *w, const char *name, char *err, siz
     }
     h->last_held = i;
     return 0;
+}
+
+void hand_let_go(hand *h, world *w, int i)
+{
+    if (h->grip == GRIP_OBJECT && h->held == i) drop(h, w);
 }
 
 void hand_object_deleted(hand *h, int i)

@@ -169,10 +169,20 @@ bool hand_log_failed(hand *h, char *err, size_t errlen);
 
 /* grip = what: sets the trigger down and what it holds without pressing, grabbing
  * or releasing anything (save writes it): off (the trigger up), none, fly, panel,
- * time_step, collision_dist, or an object's name.  Returns 0, or -1 with a message. */
-int hand_set_grip(hand *h, world *w, const char *what, char *err, size_t errlen);
-/* The word grip = would take for the hand now (an object's name points into w). */
-const char *hand_grip_word(const hand *h, const world *w);
+ * time_step, collision_dist, or an object's name; when quoted ("panel"), what is
+ * an object's name whatever it is.  Returns 0, or -1 with a message. */
+int hand_set_grip(hand *h, world *w, const char *what, bool quoted, char *err, size_t errlen);
+
+/* Room for the text of grip's value: a name and its quotes. */
+#define HAND_GRIP_TEXT (BODY_NAME_MAX + 2)
+/* The value grip = would take for the hand now, in buf: one of its words, or the
+ * held object's name, quoted when it is one of those words (an object named
+ * panel is "panel"), so that it reads back as the object. */
+const char *hand_grip_word(const hand *h, const world *w, char buf[HAND_GRIP_TEXT]);
+
+/* The hand lets go of object i where it is, if it holds it (no throw): the
+ * trigger stays down, holding nothing. */
+void hand_let_go(hand *h, world *w, int i);
 
 /* ---- the hand's exact state (save writes it after the tracker's place; each
  * sets what it names as it was, pressing, grabbing and moving nothing) ---- */

@@ -6,9 +6,10 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "core/grow.h"
+#include "core/limits.h"
+#include "shell/infile.h"
 
 /* How far from 1 a row's quaternion may be before it is an error. */
 #define TRACKER_UNIT_TOL 1e-6
@@ -75,9 +76,16 @@ int tracker_parse_row(const char *line, tracker_row *row, char *err, size_t errl
         snprintf(err, errlen, "the row has more than 10 columns (%s)", TRACKER_HEADER);
         return -1;
     }
-    if (x[0] < 0) {
-        snprintf(err, errlen, "time must be >= 0 (got %g)", x[0]);
+    if (x[0] < 0 || x[0] > LIM_CLOCK_MAX) {
+        snprintf(err, errlen, "time must be between 0 and %g (got %g)", LIM_CLOCK_MAX, x[0]);
         return -1;
+    }
+    for (int k = 1; k <= 3; k++) {
+        if (fabs(x[k]) > LIM_POSITION_MAX) {
+            snprintf(err, errlen, "%s must be between %g and %g (got %g)", column[k],
+                     -LIM_POSITION_MAX, LIM_POSITION_MAX, x[k]);
+            return -1;
+        }
     }
     for (int k = 8; k < 10; k++) {
         if (x[k] != 0 && x[k] != 1) {
@@ -116,79 +124,83 @@ int tracker_append(tracker_path *tp, const tracker_row *r)
     return 0;
 }
 
-/* The failure of tracker_load: out emptied, the message kept. */
-static int load_fails(tracker_path *out, FILE *f, char *line)
+int tracker_check_spacing(double before, double t, char *err, size_t errlen)
+{
+    if (!(t > before && t - before < LIM_TIME_MIN)) return 0;
+    snprintf(err, errlen, "time %.17g is %g s after the row before: rows are at the same time, or "
+             "at least %g s apart", t, t - before, LIM_TIME_MIN);
+    return -1;
+}
+
+/* The failure of tracker_load: out emptied, the file let go, the message kept. */
+static int load_fails(tracker_path *out, infile *in)
 {
     tracker_free(out);
-    if (f) fclose(f);
-    free(line);
+    infile_free(in);
     return -1;
 }
 
 int tracker_load(const char *path, tracker_path *out, char *err, size_t errlen)
 {
     memset(out, 0, sizeof *out);
-    FILE *f = fopen(path, "r");
-    if (!f) {
-        snprintf(err, errlen, "cannot read '%s': %s", path, strerror(errno));
+    infile in;
+    char msg[256];
+    if (infile_read(&in, path, TRACKER_MAX_BYTES, msg, sizeof msg) != 0) {
+        snprintf(err, errlen, "cannot read '%s': %s", path, msg);
         return -1;
     }
-    struct stat sb;
-    if (fstat(fileno(f), &sb) == 0 && S_ISDIR(sb.st_mode)) {
-        snprintf(err, errlen, "'%s' is a folder, not a tracker file", path);
-        return load_fails(out, f, NULL);
-    }
-    char *line = NULL, msg[256];
-    size_t cap = 0;
-    int lineno = 0;
+    infile_lines lines;
+    infile_line ln;
+    int got;
     bool header = false;
-    ssize_t len;
-    while ((len = getline(&line, &cap, f)) >= 0) {
-        lineno++;
-        if ((size_t)len != strlen(line)) {
-            snprintf(err, errlen, "%s:%d: a NUL byte: not a CSV text file", path, lineno);
-            return load_fails(out, f, line);
+    infile_lines_init(&lines, in.data, in.len, TRACKER_LINE_MAX);
+    while ((got = infile_next_line(&lines, &ln, msg, sizeof msg)) != 0) {
+        long lineno = ln.number;
+        if (got < 0) {
+            snprintf(err, errlen, "%s:%ld: %s", path, lineno, msg);
+            return load_fails(out, &in);
         }
-        line[strcspn(line, "\n")] = '\0';
+        char line[TRACKER_LINE_MAX + 1];
+        memcpy(line, ln.s, ln.len);
+        line[ln.len] = '\0';
         tracker_line kind = tracker_line_kind(line);
         if (kind == TRACKER_SKIP) continue;
         if (!header) {
             if (kind != TRACKER_HEADER_LINE) {
-                snprintf(err, errlen, "%s:%d: expected the header %s", path, lineno, TRACKER_HEADER);
-                return load_fails(out, f, line);
+                snprintf(err, errlen, "%s:%ld: expected the header %s", path, lineno, TRACKER_HEADER);
+                return load_fails(out, &in);
             }
             header = true;
             continue;
         }
         tracker_row r;
         if (kind == TRACKER_HEADER_LINE) {
-            snprintf(err, errlen, "%s:%d: the header again, where a row should be", path, lineno);
-            return load_fails(out, f, line);
+            snprintf(err, errlen, "%s:%ld: the header again, where a row should be", path, lineno);
+            return load_fails(out, &in);
         }
         if (tracker_parse_row(line, &r, msg, sizeof msg) != 0) {
-            snprintf(err, errlen, "%s:%d: %s", path, lineno, msg);
-            return load_fails(out, f, line);
+            snprintf(err, errlen, "%s:%ld: %s", path, lineno, msg);
+            return load_fails(out, &in);
         }
         if (out->n > 0 && r.t < out->rows[out->n - 1].t) {
-            snprintf(err, errlen, "%s:%d: time %.17g comes before the row above's %.17g (rows go in time order)",
+            snprintf(err, errlen, "%s:%ld: time %.17g comes before the row above's %.17g (rows go in time order)",
                      path, lineno, r.t, out->rows[out->n - 1].t);
-            return load_fails(out, f, line);
+            return load_fails(out, &in);
+        }
+        if (out->n > 0 && tracker_check_spacing(out->rows[out->n - 1].t, r.t, msg, sizeof msg) != 0) {
+            snprintf(err, errlen, "%s:%ld: %s", path, lineno, msg);
+            return load_fails(out, &in);
         }
         if (tracker_append(out, &r) != 0) {
-            snprintf(err, errlen, "%s:%d: out of memory", path, lineno);
-            return load_fails(out, f, line);
+            snprintf(err, errlen, "%s:%ld: out of memory", path, lineno);
+            return load_fails(out, &in);
         }
-    }
-    if (ferror(f)) {
-        snprintf(err, errlen, "cannot read '%s': %s", path, strerror(errno));
-        return load_fails(out, f, line);
     }
     if (!header || out->n == 0) {
         snprintf(err, errlen, "%s: %s", path, header ? "no rows after the header" : "empty: no header " TRACKER_HEADER);
-        return load_fails(out, f, line);
+        return load_fails(out, &in);
     }
-    fclose(f);
-    free(line);
+    infile_free(&in);
     return 0;
 }
 

@@ -22,6 +22,11 @@
 
 #define TRACKER_HEADER "time,x,y,z,qw,qx,qy,qz,trigger,button"
 
+/* The caps of a tracker file (shell/infile.h): its size, and its lines' length, a
+ * live feed's too (a row of ten numbers to the bit is under 300 bytes). */
+#define TRACKER_MAX_BYTES (64L * 1024 * 1024)
+#define TRACKER_LINE_MAX 1024
+
 /* One row: the hand at time t. */
 typedef struct {
     double t;
@@ -43,13 +48,17 @@ typedef enum { TRACKER_SKIP, TRACKER_HEADER_LINE, TRACKER_DATA } tracker_line;
  * the header; anything else is data. */
 tracker_line tracker_line_kind(const char *line);
 
-/* Reads a data line into row.  Returns 0, or -1 with the problem in err (no
- * place: the caller knows it). */
+/* Reads a data line into row, checked against the limits every statement has
+ * (core/limits.h): time from 0 to LIM_CLOCK_MAX, each of x, y, z within
+ * LIM_POSITION_MAX.  Returns 0, or -1 with the problem in err (no place: the
+ * caller knows it). */
 int tracker_parse_row(const char *line, tracker_row *row, char *err, size_t errlen);
 
-/* Reads the file at path whole into out (which it initialises): every line is
- * checked, rows in non-decreasing time.  Returns 0, or -1 with
- * "path:line: problem" (or "path: problem") in err and out empty. */
+/* Reads the file at path whole into out (which it initialises), within the caps
+ * above: every line is checked, rows in non-decreasing time, each at the same time
+ * as the row before (a jump) or at least LIM_TIME_MIN after it (rows nearer in
+ * time would give the hand any speed).  Returns 0, or -1 with "path:line: problem"
+ * (or "path: problem") in err and out empty. */
 int tracker_load(const char *path, tracker_path *out, char *err, size_t errlen);
 
 void tracker_free(tracker_path *tp);
@@ -73,6 +82,11 @@ vec3 tracker_turn(quat a, quat b);
 /* The orientation a turned by the rotation vector r (world axes): the
  * orientation a hand reaches from a turning at r / T for T seconds. */
 quat tracker_turned(quat a, vec3 r);
+
+/* The check of a row's time t against the time before of the row before it:
+ * 0, or -1 with the problem in err when they are nearer than LIM_TIME_MIN but not
+ * equal. */
+int tracker_check_spacing(double before, double t, char *err, size_t errlen);
 
 /* Writes row as a line of the format (17 significant digits, so that it reads
  * back to the bit); fprintf's count, negative when the write failed. */

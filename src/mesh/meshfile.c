@@ -90,6 +90,15 @@ bool mesh_stl_binary(const unsigned char *data, size_t len)
     return len >= 84 && (len - 84) % 50 == 0 && (len - 84) / 50 == le32(data + 80);
 }
 
+size_t mesh_text_length(const unsigned char *data, size_t len)
+{
+    if (mesh_stl_binary(data, len)) return 0;
+    if (len < 3 || memcmp(data, "ply", 3) != 0) return len;
+    for (size_t i = 0; i + 10 <= len; i++) /* the line that ends the header */
+        if ((i == 0 || data[i - 1] == '\n') && memcmp(data + i, "end_header", 10) == 0) return i;
+    return len;
+}
+
 /* Text: no NUL and no control character but blanks and line ends (and the ^Z some
  * old programs end text with); bytes from 128 on (UTF-8) are text. */
 static bool is_text(const unsigned char *data, size_t len)

@@ -24,8 +24,11 @@
 #include "core/shape.h"
 #include "core/vmath.h"
 
-/* Files larger than this are refused before they are read. */
+/* Files larger than this are refused before they are read; the lines of their
+ * text (a text format's, a binary PLY's header) are at most MESH_MAX_LINE bytes
+ * (the shell reads a file through its door, shell/infile.h, and checks them). */
 #define MESH_MAX_FILE (1L << 30)
+#define MESH_MAX_LINE (1L << 20)
 
 typedef enum { MESH_OBJ, MESH_STL, MESH_OFF, MESH_PLY } mesh_format;
 
@@ -59,6 +62,10 @@ typedef struct {
  * the caller frees it).  Returns 0, or -1 with why in err ("it is a folder",
  * the system's reason, a file larger than MESH_MAX_FILE). */
 int mesh_read_bytes(const char *path, unsigned char **data, size_t *len, char *err, size_t errlen);
+
+/* How many of data's first bytes are lines of text: none for a binary STL, a
+ * PLY's header up to its end_header line, all of any other file. */
+size_t mesh_text_length(const unsigned char *data, size_t len);
 
 /* The format of data as its content says (name's extension settles a text file
  * with no header), or -1 with why in err (an empty file; one that is neither text

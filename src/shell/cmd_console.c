@@ -89,16 +89,14 @@ cmd_status cmd_show(shell *sh, const stmt *st)
 
 cmd_status cmd_save(shell *sh, const stmt *st)
 {
-    char why[SHELL_PATH_MAX + 256];
-    if (outfile_allowed(st->word, why, sizeof why) != 0) {
-        sh_error(sh, st, "save: %s", why);
+    /* written beside the file, which it replaces only once written whole */
+    outfile o;
+    char err[PATH_MAX + 256];
+    if (outfile_begin(&o, st->word, OUTFILE_STREAM, err, sizeof err) != 0) {
+        sh_error(sh, st, "save: %s", err);
         return CMD_ERROR;
     }
-    FILE *f = fopen(st->word, "w");
-    if (!f) {
-        sh_error(sh, st, "save: cannot write '%s': %s", st->word, strerror(errno));
-        return CMD_ERROR;
-    }
+    FILE *f = o.f;
     char a[32];
     fprintf(f, "# vroc %s: world saved at time = %s (frame %ld)\n", VROC_VERSION,
             fmt_num(a, sh->w.time), sh->w.frame);
@@ -121,8 +119,7 @@ cmd_status cmd_save(shell *sh, const stmt *st)
     if (sh->current >= 0) fprintf(f, "\n# the current object\n%s %s\n",
                                   body_type_name(sh->w.bodies[sh->current]->sp.kind),
                                   sh->w.bodies[sh->current]->name);
-    char err[SHELL_PATH_MAX + 256];
-    if (outfile_close(f, st->word, err, sizeof err) != 0) {
+    if (outfile_finish(&o, err, sizeof err) != 0) {
         sh_error(sh, st, "save: %s", err);
         return CMD_ERROR;
     }

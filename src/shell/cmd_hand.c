@@ -96,7 +96,7 @@ cmd_status cmd_hand_log(shell *sh, const stmt *st)
 cmd_status cmd_grip(shell *sh, const stmt *st)
 {
     char err[BODY_NAME_MAX + 200];
-    return answer(sh, st, hand_set_grip(&sh->hand, &sh->w, st->word, err, sizeof err), err);
+    return answer(sh, st, hand_set_grip(&sh->hand, &sh->w, st->word, st->n == 1, err, sizeof err), err);
 }
 
 /* The hand's exact state, as save writes it (hand.h). */

@@ -13,6 +13,7 @@
 #include "core/edit.h"
 #include "core/hold.h"
 #include "handlers.h"
+#include "infile.h"
 #include "mesh/meshfile.h"
 #include "shell.h"
 
@@ -192,12 +193,27 @@ cmd_status cmd_exact(shell *sh, const stmt *st)
  * with the SHA-256 of its bytes; NULL with the message in err. */
 static mesh_source *load_file(const char *path, char *err, size_t errlen)
 {
-    unsigned char *data;
-    size_t len;
+    /* through the door every file read comes through (infile.h): its size cap, no
+     * endless wait for a pipe, Ctrl-C; then its text's line cap */
+    infile in;
     char why[300];
-    if (mesh_read_bytes(path, &data, &len, why, sizeof why) != 0) {
+    if (infile_read(&in, path, MESH_MAX_FILE, why, sizeof why) != 0) {
         snprintf(err, errlen, "cannot read '%s': %s", path, why);
         return NULL;
+    }
+    unsigned char *data = (unsigned char *)in.data;
+    size_t len = in.len, text = mesh_text_length(data, len);
+    infile_lines lines;
+    infile_line ln;
+    int got;
+    infile_lines_init(&lines, in.data, text, MESH_MAX_LINE);
+    /* (a NUL byte is binary data: the readers judge that) */
+    while (!memchr(data, '\0', text) && (got = infile_next_line(&lines, &ln, why, sizeof why)) != 0) {
+        if (got < 0) {
+            snprintf(err, errlen, "%s:%ld: %s", path, ln.number, why);
+            infile_free(&in);
+            return NULL;
+        }
     }
     unsigned char digest[SHA256_DIGEST_SIZE];
     struct sha256_ctx ctx;

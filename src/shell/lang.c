@@ -25,12 +25,10 @@
 #include "core/limits.h"
 #include "expr.h"
 #include "fmt.h"
+#include "infile.h"
 #include "lex.h"
 #include "sound/synth.h"
 #include "suggest.h"
-
-/* Files larger than this are refused (a scene is a few kilobytes). */
-#define LANG_MAX_FILE (64L * 1024 * 1024)
 
 typedef struct {
     const char *name; /* file name for messages, or NULL */
@@ -553,7 +551,17 @@ static int parse_value(stmt *st, const token *t, int nt, const where *at)
     switch (c->arg) {
     case ARG_NONE: break;
     case ARG_NAME:
-        if (get_name(t, nt, i, c, &st->word, at) != 0) return -1;
+        /* (grip: a quoted word is an object's name, whatever word it is) */
+        if (c->choices && i < nt && t[i].k == T_STRING) {
+            if (get_word(t, nt, i, c, "an object name", &st->word, at) != 0) return -1;
+            if (!lang_valid_name(st->word)) {
+                perr(at, "%s is not a valid object name", tok_text(&t[i], buf));
+                return -1;
+            }
+            st->n = 1;
+        } else if (get_name(t, nt, i, c, &st->word, at) != 0) {
+            return -1;
+        }
         i++;
         break;
     case ARG_NAME2:
@@ -758,6 +766,7 @@ static int parse_stmt(stmt *st, const token *t, int nt, const where *at)
 
 static int prog_push(program *p, const stmt *st)
 {
+    if (p->n == INT_MAX) return -1;
     stmt *ns = grow_for_one(p->s, p->n, &p->cap, sizeof *ns, 16);
     if (!ns) return -1;
     p->s = ns;
@@ -815,10 +824,23 @@ static int resolve_word(stmt *st, const lang_paths *paths)
     return 0;
 }
 
+/* paths, with a budget of its own when the parse starts here (in *mine). */
+static lang_paths with_budget(const lang_paths *paths, lang_budget *mine)
+{
+    lang_paths p = paths ? *paths : (lang_paths){NULL, NULL, NULL};
+    if (!p.budget) {
+        *mine = (lang_budget){0, 0, 0};
+        p.budget = mine;
+    }
+    return p;
+}
+
 program *lang_parse(const char *text, size_t len, const char *name, int first_line,
-                    const lang_paths *paths, int depth, const char **stack, int n_stack, char *err, size_t errlen)
+                    const lang_paths *paths_in, int depth, const char **stack, int n_stack, char *err, size_t errlen)
 {
     toklist tl = {0};
+    lang_budget mine;
+    lang_paths all = with_budget(paths_in, &mine), *paths = &all;
     program *prog = calloc(1, sizeof *prog);
     if (!prog) {
         snprintf(err, errlen, "error: out of memory");
@@ -826,17 +848,20 @@ program *lang_parse(const char *text, size_t len, const char *name, int first_li
     }
     if (name && !(prog->path = strdup(name))) goto oom;
     where at = {prog->path, first_line - 1, err, errlen, NULL, NULL};
-    const char *p = text, *end = text + len;
-    while (p < end) {
-        const char *nl = memchr(p, '\n', (size_t)(end - p));
-        const char *e = nl ? nl : end;
-        at.line++;
-        at.text = p;
-        at.text_end = e;
-        if (memchr(p, '\0', (size_t)(e - p))) {
-            perr(&at, "unexpected NUL byte (binary file?)");
+    infile_lines lines;
+    infile_line ln;
+    int got;
+    char why[128];
+    infile_lines_init(&lines, text, len, LANG_MAX_LINE);
+    while ((got = infile_next_line(&lines, &ln, why, sizeof why)) != 0) {
+        at.line = first_line - 1 + (int)ln.number;
+        at.text = ln.s;
+        at.text_end = ln.s + ln.len;
+        if (got < 0) {
+            perr(&at, "%s", why);
             goto fail;
         }
+        const char *p = ln.s, *e = ln.s + ln.len;
         char msg[256];
         if (lex_line(p, e, &tl, msg, sizeof msg) != 0) {
             perr(&at, "%s", msg);
@@ -867,6 +892,12 @@ program *lang_parse(const char *text, size_t len, const char *name, int first_li
                     stmt_clear(&st);
                     goto fail;
                 }
+                if (++paths->budget->statements > LANG_MAX_STATEMENTS) {
+                    stmt_clear(&st);
+                    perr(&at, "more than %ld statements in all, with the files read (a file "
+                         "that reads others many times over?)", LANG_MAX_STATEMENTS);
+                    goto fail;
+                }
                 if (prog_push(prog, &st) != 0) {
                     stmt_clear(&st);
                     goto oom;
@@ -874,7 +905,6 @@ program *lang_parse(const char *text, size_t len, const char *name, int first_li
             }
             a = b + 1;
         }
-        p = nl ? nl + 1 : end;
     }
     free(tl.t);
     return prog;
@@ -926,58 +956,12 @@ int lang_resolve(const char *name, const lang_paths *paths, char *out, size_t ou
     return -1;
 }
 
-static char *read_whole(const char *path, size_t *len, char *why, size_t whylen)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        snprintf(why, whylen, "%s", strerror(errno));
-        return NULL;
-    }
-    struct stat sb;
-    if (fstat(fileno(f), &sb) == 0 && S_ISDIR(sb.st_mode)) {
-        snprintf(why, whylen, "it is a folder");
-        fclose(f);
-        return NULL;
-    }
-    size_t cap = 4096, n = 0;
-    char *buf = malloc(cap);
-    while (buf) {
-        if (n == cap) {
-            if (cap >= (size_t)LANG_MAX_FILE) {
-                snprintf(why, whylen, "larger than %ld bytes", LANG_MAX_FILE);
-                free(buf);
-                fclose(f);
-                return NULL;
-            }
-            char *nb = realloc(buf, cap * 2);
-            if (!nb) break;
-            buf = nb;
-            cap *= 2;
-        }
-        size_t got = fread(buf + n, 1, cap - n, f);
-        n += got;
-        if (got == 0) {
-            if (ferror(f)) {
-                snprintf(why, whylen, "%s", strerror(errno));
-                free(buf);
-                fclose(f);
-                return NULL;
-            }
-            fclose(f);
-            *len = n;
-            return buf;
-        }
-    }
-    free(buf);
-    fclose(f);
-    snprintf(why, whylen, "out of memory");
-    return NULL;
-}
-
-program *lang_parse_file(const char *path, const lang_paths *paths, int depth,
+program *lang_parse_file(const char *path, const lang_paths *paths_in, int depth,
                          const char **stack, int n_stack, const char *from_file, int from_line,
                          char *err, size_t errlen)
 {
+    lang_budget mine;
+    lang_paths all = with_budget(paths_in, &mine), *paths = &all;
     char where_[PATH_MAX + 32] = "error";
     if (from_file) snprintf(where_, sizeof where_, "%s:%d: error", from_file, from_line);
     if (depth > LANG_MAX_DEPTH) {
@@ -999,27 +983,38 @@ program *lang_parse_file(const char *path, const lang_paths *paths, int depth,
             return NULL;
         }
     }
-    size_t len;
+    if (++paths->budget->reads > LANG_MAX_READS) {
+        snprintf(err, errlen, "%s: cannot read '%s': more than %ld files read in all (files that "
+                 "read others many times over?)", where_, path, LANG_MAX_READS);
+        return NULL;
+    }
+    infile text;
     char why[256];
-    char *text = read_whole(full, &len, why, sizeof why);
-    if (!text) {
+    if (infile_read(&text, full, LANG_MAX_FILE, why, sizeof why) != 0) {
         snprintf(err, errlen, "%s: cannot read '%s': %s", where_, path, why);
+        return NULL;
+    }
+    paths->budget->bytes += (long)text.len;
+    if (paths->budget->bytes > LANG_MAX_TOTAL) {
+        snprintf(err, errlen, "%s: cannot read '%s': the files read add up to more than %ld "
+                 "bytes (files that read others many times over?)", where_, path, LANG_MAX_TOTAL);
+        infile_free(&text);
         return NULL;
     }
     char dir[PATH_MAX];
     dir_of(full, dir, sizeof dir);
-    lang_paths sub = {dir, paths ? paths->scene_dir : NULL};
+    lang_paths sub = {dir, paths->scene_dir, paths->budget};
     const char **st2 = malloc((size_t)(n_stack + 1) * sizeof *st2);
     if (!st2) {
-        free(text);
+        infile_free(&text);
         snprintf(err, errlen, "error: out of memory");
         return NULL;
     }
     for (int i = 0; i < n_stack; i++) st2[i] = stack[i];
     st2[n_stack] = real;
-    program *p = lang_parse(text, len, full, 1, &sub, depth, st2, n_stack + 1, err, errlen);
+    program *p = lang_parse(text.data, text.len, full, 1, &sub, depth, st2, n_stack + 1, err, errlen);
     free(st2);
-    free(text);
+    infile_free(&text);
     if (p && !(p->real = strdup(real))) {
         program_free(p);
         snprintf(err, errlen, "error: out of memory");

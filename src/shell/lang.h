@@ -18,6 +18,18 @@
 /* How deep files may read each other, counting the first (lang_parse_file). */
 #define LANG_MAX_DEPTH 16
 
+/* The caps of what one parse takes in (infile.h): each file at most LANG_MAX_FILE
+ * bytes, each line at most LANG_MAX_LINE; and all the files a text or a file reads,
+ * through reads nested in reads (ten files that each read the next ten times
+ * would otherwise grow tenfold a level), at most LANG_MAX_READS files,
+ * LANG_MAX_TOTAL bytes and LANG_MAX_STATEMENTS statements together (a saved world
+ * of 10,000 objects is one file of 8 MB and 190,000 statements). */
+#define LANG_MAX_FILE (64L * 1024 * 1024)
+#define LANG_MAX_LINE (1L * 1024 * 1024)
+#define LANG_MAX_READS 10000L
+#define LANG_MAX_TOTAL (64L * 1024 * 1024)
+#define LANG_MAX_STATEMENTS 1000000L
+
 struct program;
 
 typedef struct stmt {
@@ -46,10 +58,18 @@ typedef struct program {
     char *real;            /* its resolved path (cycle detection) */
 } program;
 
+/* What one parse has taken in so far, through all its reads (LANG_MAX_TOTAL). */
+typedef struct {
+    long reads;
+    long bytes;
+    long statements;
+} lang_budget;
+
 /* Where `read` looks for relative paths. */
 typedef struct {
     const char *base_dir;  /* folder of the file being parsed; NULL at the prompt */
     const char *scene_dir; /* the installed scenes folder (NULL for none) */
+    lang_budget *budget;   /* what the parse has taken in; NULL: a parse starts here */
 } lang_paths;
 
 /* Parses text (len bytes, need not be NUL-terminated) named name (a file path, or

@@ -8,16 +8,14 @@
 
 #include "outfile.h"
 
-/* Opens path and writes the header; the caller writes its first rows and checks. */
-static FILE *open_log(const char *path, const char *header, char *err, size_t errlen)
+/* Starts the log at path, beside it, with its header; the caller writes its
+ * first rows and puts it in place (outfile.h), so that a log that cannot start
+ * leaves the old file whole. */
+static int open_log(outfile *o, const char *path, const char *header, char *err, size_t errlen)
 {
-    FILE *f = fopen(path, "w");
-    if (!f) {
-        snprintf(err, errlen, "cannot write '%s': %s", path, strerror(errno));
-        return NULL;
-    }
-    fprintf(f, "%s\n", header);
-    return f;
+    if (outfile_begin(o, path, OUTFILE_STREAM, err, errlen) != 0) return -1;
+    fprintf(o->f, "%s\n", header);
+    return 0;
 }
 
 /* The old log of *slot closed and f put in its place, at path. */
@@ -32,27 +30,26 @@ static int replace_log(FILE **slot, char *slot_path, FILE *f, const char *path, 
 
 int log_trace_open(shell_logs *l, const world *w, const char *path, char *err, size_t errlen)
 {
-    FILE *f = open_log(path, "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,state,ke", err,
-                       errlen);
-    if (!f) return -1;
-    shell_logs first = {f, "", NULL, ""};
+    outfile o;
+    if (open_log(&o, path, "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,state,ke", err,
+                 errlen) != 0)
+        return -1;
+    shell_logs first = {o.f, "", NULL, ""};
     snprintf(first.trace_path, sizeof first.trace_path, "%s", path);
-    if (log_trace_frame(&first, w, err, errlen) != 0) {
-        fclose(f);
+    if (log_trace_frame(&first, w, err, errlen) != 0 || outfile_place(&o, err, errlen) != 0) {
+        outfile_abort(&o);
         return -1;
     }
-    return replace_log(&l->trace, l->trace_path, f, path, err, errlen);
+    return replace_log(&l->trace, l->trace_path, o.f, path, err, errlen);
 }
 
 int log_events_open(shell_logs *l, const char *path, char *err, size_t errlen)
 {
-    FILE *f = open_log(path, "time,a,b,px,py,pz,nx,ny,nz,impulse,speed", err, errlen);
-    if (!f) return -1;
-    if (outfile_flush(f, path, err, errlen) != 0) {
-        fclose(f);
+    outfile o;
+    if (open_log(&o, path, "time,a,b,px,py,pz,nx,ny,nz,impulse,speed", err, errlen) != 0)
         return -1;
-    }
-    return replace_log(&l->events, l->events_path, f, path, err, errlen);
+    if (outfile_place(&o, err, errlen) != 0) return -1;
+    return replace_log(&l->events, l->events_path, o.f, path, err, errlen);
 }
 
 int log_trace_close(shell_logs *l, char *err, size_t errlen)

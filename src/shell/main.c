@@ -14,6 +14,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "fmt.h"
 #include "outfile.h"
 #include "shell.h"
 
@@ -29,6 +30,19 @@ static void usage(FILE *f)
             "  --help       this text\n"
             "  --version    the version\n"
             "At the prompt, help lists the commands; man vroc tells all.\n");
+}
+
+/* status, or 1 after a message when what was written to the standard output did
+ * not all arrive (a write that fails is never silent: --help > /dev/full). */
+static int stdout_checked(int status)
+{
+    errno = 0;
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fprintf(stderr, "error: cannot write the standard output: %s\n",
+                strerror(errno ? errno : EIO));
+        return 1;
+    }
+    return status;
 }
 
 static bool is_dir(const char *p)
@@ -73,16 +87,12 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (options && strcmp(a, "--") == 0) options = false;
-        else if (options && strcmp(a, "--help") == 0) {
-            usage(stdout);
+        else if (options && (strcmp(a, "--help") == 0 || strcmp(a, "--version") == 0)) {
+            if (a[2] == 'h') usage(stdout);
+            else printf("vroc %s\n", VROC_VERSION);
             free(cmds);
             free(files);
-            return 0;
-        } else if (options && strcmp(a, "--version") == 0) {
-            printf("vroc %s\n", VROC_VERSION);
-            free(cmds);
-            free(files);
-            return 0;
+            return stdout_checked(0);
         } else if (options && a[0] == '-' && a[1] != '\0') {
             for (const char *p = a + 1; *p; p++) {
                 if (*p == 'b') batch = true;
@@ -101,7 +111,10 @@ int main(int argc, char **argv)
                     else cmds[ncmds++] = val;
                     break;
                 } else {
-                    fprintf(stderr, "vroc: unknown option -%c\n", *p);
+                    char opt[3] = {'-', *p, '\0'};
+                    fprintf(stderr, "vroc: unknown option ");
+                    fmt_escaped(stderr, opt); /* (a byte of the command line) */
+                    fputc('\n', stderr);
                     usage(stderr);
                     free(cmds);
                     free(files);
@@ -123,8 +136,21 @@ int main(int argc, char **argv)
     sh.interactive = !batch && tty;
     sh.stop_on_error = batch || !isatty(STDIN_FILENO);
     char why[1200];
+    /* -o is the output setting: what `output =` would refuse, it refuses (show and
+     * save write it back as a statement) */
+    if (outdir && (!*outdir || strlen(outdir) >= sizeof sh.view_set.output || strchr(outdir, '\n'))) {
+        fprintf(stderr, "vroc: -o: %s\n", !*outdir ? "the folder name is empty"
+                                         : strchr(outdir, '\n') ? "a folder name has no newline"
+                                                                 : "the folder name is too long");
+        free(cmds);
+        free(files);
+        shell_free(&sh);
+        return 2;
+    }
     if (outdir && outfile_allowed(outdir, why, sizeof why) != 0) {
-        fprintf(stderr, "vroc: -o: %s\n", why);
+        fprintf(stderr, "vroc: -o: ");
+        fmt_escaped(stderr, why);
+        fputc('\n', stderr);
         free(cmds);
         free(files);
         shell_free(&sh);
@@ -135,6 +161,7 @@ int main(int argc, char **argv)
         sh.startup.view = sh.view_set;
     }
 
+    shell_catch_sigint(); /* a long run stops at Ctrl-C, its outputs finished */
     int status = 0;
     bool quit = false;
     for (int i = 0; i < nfiles && !quit; i++) {
@@ -166,11 +193,5 @@ int main(int argc, char **argv)
     shell_free(&sh);
     free(cmds);
     free(files);
-    errno = 0;
-    if (fflush(stdout) != 0 || ferror(stdout)) {
-        fprintf(stderr, "error: cannot write the standard output: %s\n",
-                strerror(errno ? errno : EIO));
-        status = 1;
-    }
-    return status;
+    return stdout_checked(status);
 }

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fmt.h"
 #include "hand/tracker.h"
 #include "shell.h"
 #include "sound/sound.h"
@@ -24,6 +25,8 @@ struct media {
     double elapsed;     /* simulated seconds of the frames advanced since it was made */
     movie *mov;
     double mov_start;   /* elapsed time when the movie started */
+    long mov_skipped;   /* pictures the movie left out (MOVIE_MAX_COPIES, Ctrl-C) */
+    bool mov_told;      /* the movie's first frame cut to MOVIE_MAX_COPIES was warned of */
     sound_hit *hits;    /* the frame's collisions, as the engine hears them */
     long cap;
     media_start *start; /* each body when the frame began (media_frame_begin) */
@@ -101,7 +104,7 @@ static int media_movie_close(shell *sh, media *m, const stmt *st)
     const char *wav = NULL;
     int rc = 0;
     if (sound_track_path(m->snd) && movie_frames(mov) > 0) {
-        double t1 = m->mov_start + (double)movie_frames(mov) * movie_period(mov);
+        double t1 = m->mov_start + (double)(movie_frames(mov) + m->mov_skipped) * movie_period(mov);
         if (sound_flush(m->snd, m->elapsed, err, sizeof err) != 0) {
             sh_error(sh, st, "soundtrack: %s; soundtrack is now off", err);
             rc = -1;
@@ -109,15 +112,19 @@ static int media_movie_close(shell *sh, media *m, const stmt *st)
                                        sizeof err) == 0) {
             wav = movie_sound_path(mov);
         } else {
-            sh_error(sh, st, "movie: %s; '%s' is written without its sound", err,
-                     movie_path(mov));
+            sh_error(sh, st, "movie: %s", err);
             rc = -1;
         }
     }
-    if (movie_close(mov, wav, err, sizeof err) != 0) {
+    /* a movie is its video and its sound, or nothing: the old file stays whole */
+    char path[VIEW_PATH_MAX];
+    snprintf(path, sizeof path, "%s", movie_path(mov));
+    if (rc != 0) movie_abort(mov);
+    else if (movie_close(mov, wav, err, sizeof err) != 0) {
         sh_error(sh, st, "movie: %s", err);
         rc = -1;
     }
+    if (rc != 0) sh_error(sh, st, "movie: '%s' is not written, and what was there is kept", path);
     return rc;
 }
 
@@ -166,21 +173,37 @@ static bool media_between(const shell *sh, media *m, double s, double h)
 }
 
 /* The frame's pictures to the movie, movie_rate of them a second of simulated
- * time: picture k shows the time mov_start + (k + 1) / movie_rate.  Those due
- * within the frame [t0, t1] are drawn between its start and its end
+ * time: picture k shows the time mov_start + (k + 1 + skipped) / movie_rate.
+ * Those due within the frame [t0, t1] are drawn between its start and its end
  * (media_between); where a picture is due at the frame's end, or time_step is
  * shorter than a picture, the view after the frame is added as many times as
- * keeps video time with simulated time. */
+ * keeps video time with simulated time.  A frame gives at most MOVIE_MAX_COPIES
+ * (one warning a movie says so), and fewer when Ctrl-C comes: the pictures left out are
+ * skipped, so that later frames keep step. */
 static cmd_status media_movie_frame(shell *sh, media *m, const stmt *st, double t0, double t1)
 {
     double period = movie_period(m->mov), h = t1 - t0;
-    long want = llround((t1 - m->mov_start) / period);
+    long before = m->mov_skipped;
+    long want = llround((t1 - m->mov_start) / period) - before;
+    long cut = want - movie_frames(m->mov) - MOVIE_MAX_COPIES;
+    if (cut > 0 && !m->mov_told) {
+        m->mov_told = true;
+        char a[32], b[32];
+        sh_warn(sh, st, "movie: a frame of time_step = %s s would be %ld pictures at %s a second; "
+                "it gets %d, and the movie skips the rest (its sound goes on, out of step from "
+                "there)", fmt_num(a, h), want - movie_frames(m->mov), fmt_num(b, 1 / period),
+                MOVIE_MAX_COPIES);
+    }
+    if (cut > 0) {
+        want -= cut;
+        m->mov_skipped += cut;
+    }
     char err[2048];
     bool posed = false;
     shell_overlay(sh);
     /* the pictures within the frame */
-    while (movie_frames(m->mov) < want) {
-        double s = (m->mov_start + (double)(movie_frames(m->mov) + 1) * period - t0) / h;
+    while (movie_frames(m->mov) < want && !shell_interrupted) {
+        double s = (m->mov_start + (double)(movie_frames(m->mov) + before + 1) * period - t0) / h;
         if (!(s < 1 - 1e-9) || !media_between(sh, m, s > 0 ? s : 0, h)) break;
         if (view_render_posed(&sh->view, &sh->w, m->poses, &sh->view_set, err, sizeof err) != 0 ||
             movie_add(m->mov, sh->view, 1, err, sizeof err) != 0)
@@ -189,17 +212,28 @@ static cmd_status media_movie_frame(shell *sh, media *m, const stmt *st, double 
     }
     long copies = want - movie_frames(m->mov);
     if (copies <= 0) return CMD_OK;
+    if (shell_interrupted) { /* (shell_advance says so) */
+        m->mov_skipped += copies;
+        return CMD_OK;
+    }
     /* record has drawn this frame already, unless an eye the movie needs is missing */
     bool drawn = sh->view_set.record && !posed && view_pixels(sh->view, 0, NULL, NULL) &&
                  (!movie_needs_right(m->mov) || view_pixels(sh->view, 1, NULL, NULL));
-    if ((drawn || view_render(&sh->view, &sh->w, &sh->view_set, err, sizeof err) == 0) &&
-        movie_add(m->mov, sh->view, copies, err, sizeof err) == 0)
-        return CMD_OK;
+    bool ok = drawn || view_render(&sh->view, &sh->w, &sh->view_set, err, sizeof err) == 0;
+    /* in runs of ten, so that Ctrl-C stops a long one */
+    const long run = 10;
+    for (long done = 0; ok && done < copies; done += run) {
+        if (shell_interrupted) {
+            m->mov_skipped += copies - done;
+            break;
+        }
+        ok = movie_add(m->mov, sh->view, copies - done < run ? copies - done : run, err, sizeof err) == 0;
+    }
+    if (ok) return CMD_OK;
 failed:;
     /* the one rule for an output that fails (outfile.h); what finishing the
      * broken movie adds to it is no news */
-    char ignored[1024];
-    movie_close(m->mov, NULL, ignored, sizeof ignored);
+    movie_abort(m->mov);
     m->mov = NULL;
     return shell_output_failed(sh, st, "movie", err);
 }
@@ -284,6 +318,8 @@ cmd_status media_movie(shell *sh, const stmt *st, const char *path)
     int rc = m->mov ? media_movie_close(sh, m, st) : 0;
     m->mov = nm;
     m->mov_start = m->elapsed;
+    m->mov_skipped = 0;
+    m->mov_told = false;
     return rc == 0 ? CMD_OK : CMD_ERROR;
 }
 

@@ -46,13 +46,19 @@ static double g_prompt_at; /* when it was last changed */
 /* How often, at most, the prompt's time is redrawn while time runs, s. */
 #define PROMPT_EVERY 0.25
 
+/* Ctrl-C sets the flag; a second one before anything took the first (a loop
+ * that does not look) ends vroc as Ctrl-C ends a program. */
 static void on_sigint(int sig)
 {
-    (void)sig;
+    if (shell_interrupted) {
+        signal(sig, SIG_DFL);
+        raise(sig);
+        return;
+    }
     shell_interrupted = 1;
 }
 
-static void install_sigint(void)
+void shell_catch_sigint(void)
 {
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
@@ -129,6 +135,7 @@ static void on_line(char *line)
         g_done = true;
         rl_callback_handler_remove();
     }
+    shell_interrupted = 0; /* a Ctrl-C the statement did not look for is spent */
     free(line);
     g_sh->at_prompt = !g_done;
     if (!g_done) prompt_update(g_sh, false); /* readline shows it next */
@@ -170,7 +177,7 @@ static int loop_readline(shell *sh)
     complete_install(sh);
     rl_basic_word_break_characters = " \t\n\"(),=;#";
     rl_catch_signals = 0;
-    install_sigint();
+    shell_catch_sigint();
     prompt_text(sh, g_prompt, sizeof g_prompt);
     rl_callback_handler_install(g_prompt, on_line);
     sh->at_prompt = true;
@@ -228,15 +235,54 @@ static int loop_readline(shell *sh)
     return 0;
 }
 
+/* The next line of in into *line (room *cap), its newline removed: its length,
+ * -1 at the end of input, or -2 when it is longer than LANG_MAX_LINE (the rest of
+ * it is read and left out), so that a pipe of endless bytes (/dev/zero) cannot
+ * take all the memory. */
+static long next_line(FILE *in, char **line, size_t *cap)
+{
+    size_t n = 0;
+    bool long_line = false;
+    int c;
+    while ((c = getc(in)) != EOF && c != '\n') {
+        if (long_line || n >= (size_t)LANG_MAX_LINE) {
+            long_line = true;
+            continue;
+        }
+        if (n + 1 >= *cap) {
+            size_t nc = *cap ? 2 * *cap : 256;
+            char *nl = realloc(*line, nc);
+            if (!nl) return -2;
+            *line = nl;
+            *cap = nc;
+        }
+        (*line)[n++] = (char)c;
+    }
+    if (c == EOF && n == 0 && !long_line) return -1;
+    if (long_line) return -2;
+    if (!*line && !(*line = malloc(*cap = 1))) return -2;
+    (*line)[n] = '\0';
+    return (long)n;
+}
+
 static int loop_lines(shell *sh, FILE *in)
 {
     char *line = NULL;
     size_t cap = 0;
     int lineno = 0, status = 0;
-    install_sigint();
-    while (getline(&line, &cap, in) >= 0) {
+    long len;
+    shell_catch_sigint();
+    while ((len = next_line(in, &line, &cap)) != -1) {
         lineno++;
-        cmd_status r = shell_run_text_at(sh, line, "<stdin>", lineno);
+        cmd_status r;
+        if (len == -2 || memchr(line, '\0', (size_t)len)) {
+            stmt where = {.file = "<stdin>", .line = lineno};
+            if (len == -2) sh_error(sh, &where, "a line longer than %ld bytes", LANG_MAX_LINE);
+            else sh_error(sh, &where, "a NUL byte (binary input?)");
+            r = CMD_ERROR;
+        } else {
+            r = shell_run_text_at(sh, line, "<stdin>", lineno);
+        }
         if (r == CMD_QUIT) break;
         if (r == CMD_ERROR && sh->stop_on_error) {
             status = 1;

@@ -90,21 +90,62 @@ static cell *cell_at(grid *g, long long x, long long y, long long z)
     }
 }
 
-/* Room for n balls: 0, or -1 when out of memory. */
+/* The cells' table made anew with room for twice g->cap balls' cells, every ball
+ * of the cells linked into it again: 0, or -1 when out of memory (g as it was). */
+static int grid_rehash(grid *g)
+{
+    long ncells = 16;
+    while (ncells < 2L * g->cap) ncells *= 2;
+    cell *cells = malloc((size_t)ncells * sizeof *cells);
+    if (!cells) return -1;
+    for (long k = 0; k < ncells; k++) cells[k].first = -1;
+    free(g->cells);
+    g->cells = cells;
+    g->ncells = ncells;
+    g->used = 0;
+    for (int k = 0; k < g->nballs; k++) {
+        ball *b = &g->balls[k];
+        if (2 * b->r > g->h) continue; /* (in big) */
+        long long x = cell_of(b->c.x, g->h), y = cell_of(b->c.y, g->h), z = cell_of(b->c.z, g->h);
+        cell *at = cell_at(g, x, y, z);
+        if (at->first < 0) {
+            *at = (cell){x, y, z, -1};
+            g->used++;
+        }
+        b->next = at->first;
+        at->first = k;
+    }
+    return 0;
+}
+
+/* Room for n balls (and more as they come: grid_room), cells h wide: 0, or -1
+ * when out of memory.  Only what the first balls need is taken at once, so that
+ * random 90000000 in a box that holds 600 takes no gigabytes. */
 static int grid_init(grid *g, double h, int n)
 {
     g->h = h;
-    g->ncells = 16;
-    while (g->ncells < 2L * n) g->ncells *= 2;
-    g->cells = malloc((size_t)g->ncells * sizeof *g->cells);
-    g->balls = malloc((size_t)(n > 0 ? n : 1) * sizeof *g->balls);
-    g->big = malloc((size_t)(n > 0 ? n : 1) * sizeof *g->big);
-    g->cap = n;
+    g->cap = n < 4096 ? (n > 0 ? n : 1) : 4096;
     g->nballs = g->nbig = 0;
-    g->used = 0;
-    if (!g->cells || !g->balls || !g->big) return -1;
-    for (long k = 0; k < g->ncells; k++) g->cells[k].first = -1;
-    return 0;
+    g->balls = malloc((size_t)g->cap * sizeof *g->balls);
+    g->big = malloc((size_t)g->cap * sizeof *g->big);
+    if (!g->balls || !g->big) return -1;
+    return grid_rehash(g);
+}
+
+/* Room for one more ball: the arrays and the cells' table doubled when full.  0,
+ * or -1 when out of memory. */
+static int grid_room(grid *g)
+{
+    if (g->nballs < g->cap) return 0;
+    if (g->cap > INT32_MAX / 2) return -1;
+    int cap = 2 * g->cap;
+    ball *balls = realloc(g->balls, (size_t)cap * sizeof *balls);
+    if (balls) g->balls = balls;
+    int *big = balls ? realloc(g->big, (size_t)cap * sizeof *big) : NULL;
+    if (big) g->big = big;
+    if (!balls || !big) return -1;
+    g->cap = cap;
+    return grid_rehash(g);
 }
 
 static void grid_free(grid *g)
@@ -115,7 +156,7 @@ static void grid_free(grid *g)
 }
 
 /* Adds the ball of radius r at c, of object obj already in the world or NULL
- * (room was made by grid_init). */
+ * (room was made: grid_room). */
 static void grid_add(grid *g, vec3 c, double r, const body *obj)
 {
     int k = g->nballs++;
@@ -213,7 +254,9 @@ cmd_status cmd_random(shell *sh, const stmt *st)
     char err[256];
     long made = 0, id = w->n + 1;
     cmd_status rc = CMD_ERROR;
-    body **made_b = malloc((size_t)(n > 0 ? n : 1) * sizeof *made_b);
+    /* (room for what is made grows as it is made: n may be far more than fits) */
+    long made_cap = n < 4096 ? (n > 0 ? n : 1) : 4096;
+    body **made_b = malloc((size_t)made_cap * sizeof *made_b);
     grid g = {0};
     /* the cells: as wide as the largest object random_size makes (a box's or a
      * superquadric's corner is at most sqrt(3) times the size drawn out) */
@@ -222,9 +265,28 @@ cmd_status cmd_random(shell *sh, const stmt *st)
         sh_error(sh, st, "out of memory");
         goto done;
     }
-    for (int i = 0; i < w->n; i++)
+    for (int i = 0; i < w->n; i++) {
+        if (grid_room(&g) != 0) {
+            sh_error(sh, st, "out of memory");
+            goto done;
+        }
         grid_add(&g, body_com(w->bodies[i]), w->bodies[i]->shape.r_out, w->bodies[i]);
+    }
     for (; made < n; made++) {
+        if (made == made_cap) {
+            body **more = realloc(made_b, (size_t)(2 * made_cap) * sizeof *more);
+            if (!more) {
+                sh_error(sh, st, "random: out of memory after %ld of the %ld objects, so none was added", made, n);
+                goto done;
+            }
+            made_b = more;
+            made_cap *= 2;
+        }
+        if (shell_interrupted) {
+            shell_interrupted = 0;
+            sh_error(sh, st, "random: interrupted after %ld of the %ld objects, so none was added", made, n);
+            goto done;
+        }
         body *b = random_body(sh, &id, err, sizeof err);
         if (!b) {
             sh_error(sh, st, "random: %s", err);
@@ -256,6 +318,12 @@ cmd_status cmd_random(shell *sh, const stmt *st)
                          "random: no room for an object in random_box, so none was added: the "
                          "objects already there fill it (a larger random_box or a smaller "
                          "random_size holds more)");
+            goto done;
+        }
+        if (grid_room(&g) != 0) {
+            body_free(b);
+            free(b);
+            sh_error(sh, st, "random: out of memory after %ld of the %ld objects, so none was added", made, n);
             goto done;
         }
         grid_add(&g, body_com(b), r, NULL);

@@ -11,18 +11,18 @@
 #include "shell.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
 #include "core/edit.h"
+#include "core/limits.h"
 #include "core/sim.h"
 #include "view/view.h"
 #include "fmt.h"
 #include "media.h"
 #include "viewer.h"
-
-volatile sig_atomic_t shell_interrupted;
 
 shell_settings shell_settings_defaults(void)
 {
@@ -127,15 +127,34 @@ static void break_line(shell *sh)
     }
 }
 
+/* The message fmt, ap on f as one line, its bytes that are not printable text
+ * escaped (fmt_escaped: a message may quote a file's bytes). */
+static void put_line(FILE *f, const char *fmt, va_list ap)
+{
+    char small[512], *text = small;
+    va_list again;
+    va_copy(again, ap);
+    int n = vsnprintf(small, sizeof small, fmt, ap);
+    if (n >= (int)sizeof small && (text = malloc((size_t)n + 1)) != NULL)
+        vsnprintf(text, (size_t)n + 1, fmt, again);
+    va_end(again);
+    fmt_escaped(f, text ? text : small);
+    fputc('\n', f);
+    if (text != small) free(text);
+}
+
 static void vmsg(shell *sh, const stmt *st, const char *kind, const char *fmt, va_list ap)
 {
     if (sh->progress) progress_hide(sh->progress);
     break_line(sh);
     fflush(sh->out);
-    if (st && st->file) fprintf(sh->err, "%s:%d: %s: ", st->file, st->line, kind);
-    else fprintf(sh->err, "%s: ", kind);
-    vfprintf(sh->err, fmt, ap);
-    fputc('\n', sh->err);
+    if (st && st->file) {
+        fmt_escaped(sh->err, st->file);
+        fprintf(sh->err, ":%d: %s: ", st->line, kind);
+    } else {
+        fprintf(sh->err, "%s: ", kind);
+    }
+    put_line(sh->err, fmt, ap);
     fflush(sh->err);
 }
 
@@ -162,9 +181,8 @@ void sh_info(shell *sh, const char *fmt, ...)
     break_line(sh);
     va_list ap;
     va_start(ap, fmt);
-    vfprintf(sh->out, fmt, ap);
+    put_line(sh->out, fmt, ap);
     va_end(ap);
-    fputc('\n', sh->out);
 }
 
 /* ------------------------------------------------------------ running */
@@ -178,6 +196,7 @@ cmd_status shell_run_program(shell *sh, const program *p)
         cmd_status r = p->s[i].cmd->run(sh, &p->s[i]);
         /* what the hand did: its buttons run after the statement */
         if (r == CMD_OK) r = shell_after_hand(sh);
+        shell_check_cuts(sh, &p->s[i]); /* (a throw a statement made) */
         sh->running_st = outer;
         /* whatever a statement changed, the schedule's predictions start afresh */
         edit_done(&sh->w);
@@ -186,13 +205,29 @@ cmd_status shell_run_program(shell *sh, const program *p)
     return CMD_OK;
 }
 
+/* How far along d the points a and b may both move and stay within the limits of
+ * a position (core/limits.h): d, cut component by component. */
+static double fly_room(double d, double a, double b)
+{
+    double lo = -LIM_POSITION_MAX - d_min(a, b), hi = LIM_POSITION_MAX - d_max(a, b);
+    return d_max(lo, d_min(hi, d)); /* (lo <= 0 <= hi: a and b are within them now) */
+}
+
 cmd_status shell_after_hand(shell *sh)
 {
     int i = hand_take_current(&sh->hand);
     if (i >= 0 && i < sh->w.n) sh->current = i;
-    vec3 fly = hand_take_fly(&sh->hand);
-    sh->view_set.head = v3_add(sh->view_set.head, fly);
-    sh->view_set.look_at = v3_add(sh->view_set.look_at, fly);
+    vec3 fly = hand_take_fly(&sh->hand), *h = &sh->view_set.head, *l = &sh->view_set.look_at;
+    /* the head flies no further than the limits of a position: show and save
+     * write it, and it must read back */
+    vec3 room = v3(fly_room(fly.x, h->x, l->x), fly_room(fly.y, h->y, l->y), fly_room(fly.z, h->z, l->z));
+    if ((room.x != fly.x || room.y != fly.y || room.z != fly.z) && !sh->fly_told) {
+        sh->fly_told = true;
+        sh_warn(sh, sh->running_st, "flying stops at the limits of a position: head and look_at "
+                "stay within %g m of the origin in each coordinate", LIM_POSITION_MAX);
+    }
+    *h = v3_add(*h, room);
+    *l = v3_add(*l, room);
     cmd_status r = CMD_OK;
     char err[HAND_PATH_MAX + 256];
     if (hand_log_failed(&sh->hand, err, sizeof err))
@@ -203,13 +238,14 @@ cmd_status shell_after_hand(shell *sh)
     return r;
 }
 
-static lang_paths paths_of(const shell *sh) { return (lang_paths){NULL, sh->scene_dir}; }
+static lang_paths paths_of(const shell *sh) { return (lang_paths){NULL, sh->scene_dir, NULL}; }
 
 static cmd_status run_parsed(shell *sh, program *p, const char *err)
 {
     if (!p) {
         fflush(sh->out);
-        fprintf(sh->err, "%s\n", err);
+        fmt_escaped(sh->err, err);
+        fputc('\n', sh->err);
         return CMD_ERROR;
     }
     cmd_status r = shell_run_program(sh, p);
@@ -316,18 +352,89 @@ static cmd_status write_frame(shell *sh, const stmt *st)
     return r;
 }
 
-/* The world's first collision whose result a speed limit cut (sim.h) warns,
- * naming the object and the limit to raise: each such cut loses energy. */
+/* True, after an error, when the next frame would take the clock past what
+ * clock and frame may be set to (core/limits.h): a saved world would not read
+ * back. */
+static bool clock_full(shell *sh, const stmt *st)
+{
+    const world *w = &sh->w;
+    char a[32], b[32];
+    if (w->time + w->set.time_step > LIM_CLOCK_MAX) {
+        sh_error(sh, st, "time cannot run past %s s (it is %s s): the limit of the clock",
+                 fmt_num(a, LIM_CLOCK_MAX), fmt_num(b, w->time));
+        return true;
+    }
+    if ((double)w->frame + 1 > LIM_FRAMES_MAX || (double)w->base_frames + 1 > LIM_CLOCK_MAX) {
+        sh_error(sh, st, "time cannot run past frame %ld: the limit of the frame count", w->frame);
+        return true;
+    }
+    return false;
+}
+
+/* What the frame took beyond the limits of a state (a fall of minutes, a force of
+ * a thousand g) rests where it left them, with one warning each (edit.h): so that
+ * every state save writes reads back. */
+static void rest_beyond_limits(shell *sh, const stmt *st)
+{
+    world *w = &sh->w;
+    for (int i = 0; i < w->n; i++) {
+        if (!edit_beyond_limits(w, i)) continue;
+        hand_let_go(&sh->hand, w, i);
+        const body *b = w->bodies[i];
+        vec3 x = b->x;
+        bool far = fabs(x.x) > LIM_POSITION_MAX || fabs(x.y) > LIM_POSITION_MAX ||
+                   fabs(x.z) > LIM_POSITION_MAX;
+        char t[32], lim[32], why[160], p[3][32];
+        fmt_num(t, w->time);
+        if (far)
+            snprintf(why, sizeof why, "a coordinate beyond %s m: translate = (%s, %s, %s)",
+                     fmt_num(lim, LIM_POSITION_MAX), fmt_num(p[0], x.x), fmt_num(p[1], x.y),
+                     fmt_num(p[2], x.z));
+        else
+            snprintf(why, sizeof why, "a velocity beyond %s m/s, or a spin beyond what the "
+                     "limits give", fmt_num(lim, LIM_SPEED_MAX));
+        edit_rest_at_limits(w, i);
+        sh_warn(sh, st, "'%s' left the limits of a state at time = %s (%s): it rests where it left "
+                "them, at translate = (%s, %s, %s)", b->name, t, why, fmt_num(p[0], b->x.x),
+                fmt_num(p[1], b->x.y), fmt_num(p[2], b->x.z));
+    }
+}
+
+/* Ctrl-C came while time advanced: at the prompt time stops there (CMD_OK); a
+ * batch run stops there, as at an error. */
+static cmd_status interrupted(shell *sh, const stmt *st)
+{
+    shell_interrupted = 0;
+    char a[32];
+    fmt_num(a, sh->w.time);
+    if (!sh->stop_on_error) {
+        sh_info(sh, "interrupted at time = %s", a);
+        return CMD_OK;
+    }
+    sh_error(sh, st, "interrupted at time = %s", a);
+    return CMD_ERROR;
+}
+
+/* The world's first collision or throw whose result a speed limit cut (sim.h,
+ * hold.h) warns, naming the object and the limit to raise: each such cut loses
+ * energy. */
 static void warn_speed_cut(shell *sh, const stmt *st)
 {
     const sim_cut *c = &sh->w.st.first_cut;
     const char *limit = c->angular ? "max_angular" : "max_linear";
     const char *name = c->object >= 0 && c->object < sh->w.n ? sh->w.bodies[c->object]->name : "?";
     sh_warn(sh, st,
-            "%s = %g cut the %s a collision gave '%s' (%.3g %s): each such cut loses energy, and "
+            "%s = %g cut the %s a %s gave '%s' (%.3g %s): each such cut loses energy, and "
             "stats counts them (speed_cuts); raise %s to keep it",
-            limit, c->limit, c->angular ? "spin" : "speed", name, c->speed, c->angular ? "rad/s" : "m/s",
-            limit);
+            limit, c->limit, c->angular ? "spin" : "speed", c->thrown ? "throw" : "collision", name,
+            c->speed, c->angular ? "rad/s" : "m/s", limit);
+}
+
+void shell_check_cuts(shell *sh, const stmt *st)
+{
+    if (sh->w.st.speed_cuts < sh->cuts_seen) sh->cuts_seen = 0; /* a new world (restart) */
+    if (sh->cuts_seen == 0 && sh->w.st.speed_cuts > 0) warn_speed_cut(sh, st);
+    sh->cuts_seen = sh->w.st.speed_cuts;
 }
 
 /* shell_advance, with a status line when show (progress.h). */
@@ -345,12 +452,13 @@ static cmd_status advance(shell *sh, const stmt *st, long n, bool show)
         progress_begin(&prog, sh->err, n, t0);
         sh->progress = &prog;
     }
-    long cuts = sh->w.st.speed_cuts; /* (the first of a world's warns) */
     for (long k = 0; k < n && r == CMD_OK; k++) {
         if (shell_interrupted) {
-            shell_interrupted = 0;
-            char a[32];
-            sh_info(sh, "interrupted at time = %s", fmt_shown(a, sh->w.time, shell_shown(sh)));
+            r = interrupted(sh, st);
+            break;
+        }
+        if (clock_full(sh, st)) {
+            r = CMD_ERROR;
             break;
         }
         media_frame_begin(sh); /* a movie's pictures within the frame start here */
@@ -361,13 +469,13 @@ static cmd_status advance(shell *sh, const stmt *st, long n, bool show)
         int status = sim_frame_hooked(&sh->w, &hook, err, sizeof err);
         viewer_sample(sh);
         hand_frame_end(&sh->hand, &sh->w);
-        if (cuts == 0 && sh->w.st.speed_cuts > 0) warn_speed_cut(sh, st);
-        cuts = sh->w.st.speed_cuts;
+        shell_check_cuts(sh, st);
         if (status != 0) {
             sh_error(sh, st, "%s", err);
             r = CMD_ERROR;
             break;
         }
+        rest_beyond_limits(sh, st);
         figures_record(&sh->figs, &sh->w);
         r = write_frame(sh, st);
         /* the panel's buttons pressed in the frame act at its end */
@@ -380,6 +488,8 @@ static cmd_status advance(shell *sh, const stmt *st, long n, bool show)
         progress_hide(&prog);
         sh->progress = NULL;
     }
+    /* (a Ctrl-C the last frame's movie took) */
+    if (r == CMD_OK && shell_interrupted) r = interrupted(sh, st);
     sh->wall_time += shell_clock() - t0;
     return r;
 }

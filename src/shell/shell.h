@@ -82,10 +82,19 @@ typedef struct shell {
     bool line_broken;
     bool found_apart;      /* shell_check_start found no overlap since the last
                             * statement began: time may run on unchecked */
+    long cuts_seen;        /* the world's speed_cuts when last looked at
+                            * (shell_check_cuts) */
+    bool fly_told;         /* flying was stopped at the limits, and said so */
 } shell;
 
-/* Set by the SIGINT handler; long operations (run, start) stop when it is set. */
+/* Set by the SIGINT handler; long operations (run, start, random, reading a pipe,
+ * a frame's many pictures in a movie) stop when it is set, and what acts on it
+ * clears it. */
 extern volatile sig_atomic_t shell_interrupted;
+
+/* Ctrl-C (SIGINT) sets shell_interrupted from now on, in batch runs too (main);
+ * a second Ctrl-C before the first was taken ends vroc at once. */
+void shell_catch_sigint(void);
 
 void shell_init(shell *sh, FILE *out, FILE *err);
 void shell_free(shell *sh);
@@ -131,6 +140,11 @@ cmd_status shell_close_outputs(shell *sh);
  * end of the program and restart (st) do; the movie and soundtrack go on.
  * Returns CMD_ERROR (after saying why) when one failed. */
 cmd_status shell_close_logs(shell *sh, const stmt *st);
+
+/* The world's first collision or throw whose result a speed limit cut (st.speed_cuts
+ * grew from 0 since the last look) warns once, naming the object and the limit
+ * to raise; later ones are only counted (stats: speed_cuts). */
+void shell_check_cuts(shell *sh, const stmt *st);
 
 /* Messages about statement st (NULL: no location). */
 void sh_error(shell *sh, const stmt *st, const char *fmt, ...)

@@ -46,6 +46,16 @@ static void write_choice(FILE *out, const char *choices, int k)
     fprintf(out, "%.*s", (int)strcspn(p, "|"), p);
 }
 
+void writer_quoted(FILE *out, const char *s)
+{
+    fputc('"', out);
+    for (const char *p = s; *p; p++) {
+        if (*p == '"' || *p == '\\') fputc('\\', out);
+        fputc(*p, out);
+    }
+    fputc('"', out);
+}
+
 /* The hand's exact state (hand.h), the setting named n, in style num; false when
  * n is none of them. */
 static bool write_hand_exact(FILE *out, const shell *sh, const char *n, fmt_style num)
@@ -131,12 +141,16 @@ static void write_setting(FILE *out, const shell *sh, const command *c, const ch
         const char *snd = sh->sound_set.collision_sound;
         bool file = strcmp(snd, "off") != 0 && synth_find(snd) < 0;
         if (file) writer_path(snd, save_path, rel, sizeof rel);
-        fprintf(out, "collision_sound = \"%s\"\n", file ? rel : snd);
+        fprintf(out, "collision_sound = ");
+        writer_quoted(out, file ? rel : snd);
+        fputc('\n', out);
         return;
     }
     if (strcmp(n, "tracker") == 0) {
-        if (hs->tracker[0]) fprintf(out, "tracker = \"%s\"\n", hs->tracker);
-        else fprintf(out, "tracker = off\n");
+        fprintf(out, "tracker = ");
+        if (hs->tracker[0]) writer_quoted(out, hs->tracker);
+        else fprintf(out, "off");
+        fputc('\n', out);
         return;
     }
     if (strcmp(n, "sound") == 0) {
@@ -148,7 +162,8 @@ static void write_setting(FILE *out, const shell *sh, const command *c, const ch
         return;
     }
     if (strcmp(n, "grip") == 0) {
-        fprintf(out, "grip = %s\n", hand_grip_word(&sh->hand, &sh->w));
+        char g[HAND_GRIP_TEXT];
+        fprintf(out, "grip = %s\n", hand_grip_word(&sh->hand, &sh->w, g));
         return;
     }
     if (strcmp(n, "seed") == 0) {
@@ -208,7 +223,7 @@ static void write_setting(FILE *out, const shell *sh, const command *c, const ch
         break;
     }
     case VAL_ONOFF: fprintf(out, "%s", *(const bool *)field ? "on" : "off"); break;
-    case VAL_FILE: fprintf(out, "\"%s\"", field); break;
+    case VAL_FILE: writer_quoted(out, field); break;
     case VAL_CHOICE: write_choice(out, c->choices, *(const int *)field); break;
     default: break;
     }
@@ -240,7 +255,9 @@ void hand_write(FILE *out, const shell *sh, const char *save_path)
     fprintf(out, "# the hand: its tracker and the place in it, its pose, what it holds\n");
     if (h->playing) {
         writer_path(h->set.tracker, save_path, rel, sizeof rel);
-        fprintf(out, "tracker = \"%s\"\ntracker_time = %s\n", rel, fmt_shown(a, hand_tracker_time(h), x));
+        fprintf(out, "tracker = ");
+        writer_quoted(out, rel);
+        fprintf(out, "\ntracker_time = %s\n", fmt_shown(a, hand_tracker_time(h), x));
     } else if (h->set.tracker[0]) {
         fprintf(out, "# tracker = \"%s\" (a live feed: not opened again)\n", h->set.tracker);
     }
@@ -254,7 +271,8 @@ void hand_write(FILE *out, const shell *sh, const char *save_path)
     write_hand_exact(out, sh, "hand_orientation", x);
     write_hand_exact(out, sh, "hand_velocity", x);
     write_hand_exact(out, sh, "hand_spin", x);
-    fprintf(out, "grip = %s\n", hand_grip_word(h, &sh->w));
+    char g[HAND_GRIP_TEXT];
+    fprintf(out, "grip = %s\n", hand_grip_word(h, &sh->w, g));
     if (h->grip == GRIP_OBJECT || h->grip == GRIP_PANEL) {
         write_hand_exact(out, sh, "grip_at", x);
         write_hand_exact(out, sh, "grip_orientation", x);
@@ -307,7 +325,9 @@ static void polyhedron_write(FILE *out, const body *b, write_style st)
         char path[PATH_MAX];
         if (save_path) writer_path(src->path, save_path, path, sizeof path);
         else snprintf(path, sizeof path, "%s", src->path);
-        fprintf(out, "file = \"%s\"\nsha256 = \"", path);
+        fprintf(out, "file = ");
+        writer_quoted(out, path);
+        fprintf(out, "\nsha256 = \"");
         for (int k = 0; k < (int)sizeof src->sha256; k++) fprintf(out, "%02x", src->sha256[k]);
         fprintf(out, "\"\n");
     }

@@ -29,6 +29,10 @@ typedef struct {
 /* Writes v as "(x, y, z)" in style s (fmt_shown_vec). */
 void writer_vec(FILE *out, vec3 v, fmt_style s);
 
+/* Writes s (a path) as a quoted string of the language, a backslash before each
+ * '"' and '\\' in it, so that it reads back as it is. */
+void writer_quoted(FILE *out, const char *s);
+
 /* Writes every setting as statements of the language, in the command table's
  * order: for show (save_path NULL), or for a world saved to save_path, where the
  * log files (trace, events, hand_log) are written as comments, since reading

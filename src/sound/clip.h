@@ -11,12 +11,16 @@
 
 #include "buf.h"
 
-/* The longest sound file a collision may play, in seconds. */
+/* The longest sound file a collision may play, in seconds, and the largest file
+ * read (shell/infile.h). */
 #define CLIP_MAX_SECONDS 60
+#define CLIP_MAX_BYTES (64L * 1024 * 1024)
 
 /* Reads the sound file at path.  Returns the sound, or NULL with a message in err
- * that names the path and says why: missing or unreadable, a folder, empty, not a
- * sound file libsndfile knows, longer than CLIP_MAX_SECONDS, or out of memory. */
+ * that names the path and says why: missing or unreadable, a folder, larger than
+ * CLIP_MAX_BYTES, a pipe nothing came through, empty, not a sound file libsndfile
+ * knows, longer than CLIP_MAX_SECONDS, a sample that is NaN or infinite, or out of
+ * memory. */
 sound_buf *clip_load(const char *path, char *err, size_t errlen);
 
 #endif

@@ -186,7 +186,7 @@ static int sound_render(sound_engine *e, long upto, char *err, size_t errlen)
     if (e->track) {
         long skip = e->track_start > first ? e->track_start - first : 0;
         if (skip < n && track_write(e->track, e->out + 2 * skip, n - skip, err, errlen) != 0) {
-            char ignored[64];
+            char ignored[64]; /* (it failed: given up, the old file kept) */
             track_close(e->track, ignored, sizeof ignored);
             e->track = NULL;
             rc = 1;

@@ -1,178 +1,153 @@
-/* track.c: the soundtrack as a WAV file (track.h). */
+/* track.c: the soundtrack as a WAV file, RF64 beyond 4 GiB (track.h). */
 #include "track.h"
 
 #include <errno.h>
-#include <fcntl.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <sndfile.h>
 
 #include "buf.h"
-
-/* A file libsndfile writes through these calls of ours (its virtual I/O), so
- * that a write that fails keeps the system's reason: libsndfile's own message
- * for it does not give one we can pass on (outfile.h's rule wants "cannot write
- * 'PATH': REASON"). */
-typedef struct {
-    int fd;
-    int err;     /* errno of the first call that failed, 0 while none has */
-} track_io;
+#include "shell/outfile.h"
 
 struct track {
-    SNDFILE *f;
-    track_io io;
-    long n;          /* samples written */
-    char path[];     /* as named */
+    outfile o;
+    long n;          /* frames written */
+    bool failed;     /* a write failed: the file is given up at close */
 };
 
-static sf_count_t io_len(void *u)
+static void put32(unsigned char *p, uint32_t v)
 {
-    track_io *io = u;
-    struct stat sb;
-    if (fstat(io->fd, &sb) == 0) return (sf_count_t)sb.st_size;
-    if (!io->err) io->err = errno;
-    return -1;
+    for (int k = 0; k < 4; k++) p[k] = (unsigned char)(v >> (8 * k));
 }
 
-static sf_count_t io_seek(sf_count_t off, int whence, void *u)
+static void put64(unsigned char *p, uint64_t v)
 {
-    track_io *io = u;
-    off_t r = lseek(io->fd, (off_t)off, whence);
-    if (r < 0 && !io->err) io->err = errno;
-    return (sf_count_t)r;
+    for (int k = 0; k < 8; k++) p[k] = (unsigned char)(v >> (8 * k));
 }
 
-static sf_count_t io_tell(void *u) { return io_seek(0, SEEK_CUR, u); }
-
-static sf_count_t io_read(void *ptr, sf_count_t n, void *u)
+void track_header(unsigned char h[TRACK_HEADER_BYTES], uint64_t frames, uint64_t riff_max)
 {
-    track_io *io = u;
-    sf_count_t done = 0;
-    while (done < n) {
-        ssize_t r = read(io->fd, (char *)ptr + done, (size_t)(n - done));
-        if (r < 0 && errno == EINTR) continue;
-        if (r < 0 && !io->err) io->err = errno;
-        if (r <= 0) break;
-        done += r;
+    uint64_t data = frames * 4, riff = TRACK_HEADER_BYTES - 8 + data;
+    bool rf64 = riff > riff_max;
+    memset(h, 0, TRACK_HEADER_BYTES);
+    memcpy(h, rf64 ? "RF64" : "RIFF", 4);
+    put32(h + 4, rf64 ? 0xffffffffu : (uint32_t)riff);
+    memcpy(h + 8, "WAVE", 4);
+    /* ds64 (RF64), or a JUNK chunk of its size that keeps its place */
+    memcpy(h + 12, rf64 ? "ds64" : "JUNK", 4);
+    put32(h + 16, 28);
+    if (rf64) {
+        put64(h + 20, riff);
+        put64(h + 28, data);
+        put64(h + 36, frames);
+        put32(h + 44, 0); /* no table of other chunks' sizes */
     }
-    return done;
+    memcpy(h + 48, "fmt ", 4);
+    put32(h + 52, 16);
+    h[56] = 1; /* PCM */
+    h[58] = 2; /* channels */
+    put32(h + 60, SOUND_RATE);
+    put32(h + 64, SOUND_RATE * 4);
+    h[68] = 4;  /* bytes per frame */
+    h[70] = 16; /* bits */
+    memcpy(h + 72, "data", 4);
+    put32(h + 76, rf64 ? 0xffffffffu : (uint32_t)data);
 }
 
-static sf_count_t io_write(const void *ptr, sf_count_t n, void *u)
+/* Writes all n bytes of p at offset off of t's file: 0, or an errno value. */
+static int put_at(track *t, const void *p, size_t n, off_t off)
 {
-    track_io *io = u;
-    sf_count_t done = 0;
-    while (done < n) {
-        ssize_t w = write(io->fd, (const char *)ptr + done, (size_t)(n - done));
+    const char *c = p;
+    while (n > 0) {
+        ssize_t w = pwrite(t->o.fd, c, n, off);
         if (w < 0 && errno == EINTR) continue;
-        if (w <= 0) {
-            if (!io->err) io->err = w < 0 ? errno : EIO;
-            break;
-        }
-        done += w;
+        if (w <= 0) return w < 0 ? errno : EIO;
+        c += w;
+        n -= (size_t)w;
+        off += w;
     }
-    return done;
+    return 0;
 }
 
-static SF_VIRTUAL_IO track_vio = {io_len, io_seek, io_read, io_write, io_tell};
-
-/* "cannot write 'path': REASON", the system's reason when one is known. */
-static int track_failed(const track_io *io, const char *path, const char *sf_why, char *err,
-                        size_t errlen)
+/* The header for what is written so far: 0, or an errno value. */
+static int put_header(track *t)
 {
-    if (io->err || !sf_why) snprintf(err, errlen, "cannot write '%s': %s", path,
-                                     strerror(io->err ? io->err : EIO));
-    else snprintf(err, errlen, "cannot write '%s': %s", path, sf_why);
-    return -1;
+    unsigned char h[TRACK_HEADER_BYTES];
+    track_header(h, (uint64_t)t->n, TRACK_RIFF_MAX);
+    return put_at(t, h, sizeof h, 0);
 }
 
-/* Creates (or empties) path and starts a WAV file there through io; NULL with a
- * message in err. */
-static SNDFILE *track_create(track_io *io, const char *path, char *err, size_t errlen)
+/* The failure of a write: the track failed, the message in err. */
+static int write_failed(track *t, int e, char *err, size_t errlen)
 {
-    io->err = 0;
-    io->fd = open(path, O_RDWR | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-    if (io->fd < 0) {
-        snprintf(err, errlen, "cannot write '%s': %s", path, strerror(errno));
-        return NULL;
-    }
-    SF_INFO info;
-    memset(&info, 0, sizeof info);
-    info.samplerate = SOUND_RATE;
-    info.channels = 2;
-    info.format = SF_FORMAT_WAV | SF_FORMAT_PCM_16;
-    SNDFILE *f = sf_open_virtual(&track_vio, SFM_WRITE, &info, io);
-    if (!f || io->err) { /* (libsndfile may not notice that its header failed) */
-        track_failed(io, path, sf_strerror(NULL), err, errlen);
-        if (f) sf_close(f);
-        close(io->fd);
-        return NULL;
-    }
-    /* the header tells the true length after every write: the file can be read
-     * (and muxed into a movie) while it grows */
-    sf_command(f, SFC_SET_UPDATE_HEADER_AUTO, NULL, SF_TRUE);
-    return f;
+    t->failed = true;
+    return outfile_failed(t->o.path, e, err, errlen);
 }
 
-/* Finishes f (libsndfile writes the last header) and closes io's file.  0, or
- * -1 with the message. */
-static int track_finish(SNDFILE *f, track_io *io, const char *path, char *err, size_t errlen)
+int track_open(track **tp, const char *path, char *err, size_t errlen)
 {
-    int rc = sf_close(f) != 0 || io->err ? track_failed(io, path, NULL, err, errlen) : 0;
-    if (close(io->fd) != 0 && rc == 0) {
-        io->err = errno;
-        rc = track_failed(io, path, NULL, err, errlen);
-    }
-    return rc;
-}
-
-int track_open(track **t, const char *path, char *err, size_t errlen)
-{
-    size_t len = strlen(path);
-    track *nt = malloc(sizeof *nt + len + 1);
-    if (!nt) {
+    track *t = calloc(1, sizeof *t);
+    if (!t) {
         snprintf(err, errlen, "out of memory");
         return -1;
     }
-    nt->f = track_create(&nt->io, path, err, errlen);
-    if (!nt->f) {
-        free(nt);
+    /* rewritten as it grows: a device may take it in place (/dev/full says no), a
+     * named pipe may not */
+    if (outfile_begin(&t->o, path, OUTFILE_SEEK, err, errlen) != 0) {
+        free(t);
         return -1;
     }
-    nt->n = 0;
-    memcpy(nt->path, path, len + 1);
-    *t = nt;
+    int e = put_header(t);
+    if (e != 0) {
+        outfile_failed(path, e, err, errlen);
+        outfile_abort(&t->o);
+        free(t);
+        return -1;
+    }
+    *tp = t;
     return 0;
 }
 
 int track_write(track *t, const int16_t *x, long n, char *err, size_t errlen)
 {
-    if (n <= 0) return 0;
-    sf_count_t w = sf_writef_short(t->f, x, n);
-    if (w > 0) t->n += (long)w;
-    if (w != n || t->io.err) return track_failed(&t->io, t->path, sf_strerror(t->f), err, errlen);
-    return 0;
+    if (t->failed) return outfile_failed(t->o.path, EIO, err, errlen);
+    unsigned char buf[4 * 4096];
+    for (long k = 0; k < n;) {
+        long m = n - k < 4096 ? n - k : 4096;
+        for (long i = 0; i < 2 * m; i++) { /* little-endian, whatever the machine */
+            uint16_t s = (uint16_t)x[2 * k + i];
+            buf[2 * i] = (unsigned char)(s & 0xff);
+            buf[2 * i + 1] = (unsigned char)(s >> 8);
+        }
+        int e = put_at(t, buf, (size_t)(4 * m), TRACK_HEADER_BYTES + (off_t)t->n * 4);
+        if (e != 0) return write_failed(t, e, err, errlen);
+        t->n += m;
+        k += m;
+    }
+    /* the header tells the true length after every write: the file can be read
+     * (and muxed into a movie) while it grows */
+    int e = n > 0 ? put_header(t) : 0;
+    return e != 0 ? write_failed(t, e, err, errlen) : 0;
 }
 
 long track_length(const track *t) { return t->n; }
-const char *track_path(const track *t) { return t->path; }
+const char *track_path(const track *t) { return t->o.path; }
 
 int track_excerpt(track *t, long from, long n, const char *out, char *err, size_t errlen)
 {
     SF_INFO in_info;
     memset(&in_info, 0, sizeof in_info);
-    SNDFILE *in = sf_open(t->path, SFM_READ, &in_info);
+    SNDFILE *in = sf_open(outfile_now(&t->o), SFM_READ, &in_info);
     if (!in) {
-        snprintf(err, errlen, "cannot read back '%s': %s", t->path, sf_strerror(NULL));
+        snprintf(err, errlen, "cannot read back '%s': %s", t->o.path, sf_strerror(NULL));
         return -1;
     }
-    track_io io;
-    SNDFILE *o = track_create(&io, out, err, errlen);
-    if (!o) {
+    track *o;
+    if (track_open(&o, out, err, errlen) != 0) {
         sf_close(in);
         return -1;
     }
@@ -187,16 +162,16 @@ int track_excerpt(track *t, long from, long n, const char *out, char *err, size_
         long a = k > 0 ? k : 0, z = k + m < avail ? k + m : avail;
         if (a < z && (sf_seek(in, a, SEEK_SET) < 0 ||
                       sf_readf_short(in, buf + 2 * (a - k), z - a) != z - a)) {
-            snprintf(err, errlen, "cannot read back '%s': %s", t->path, sf_strerror(in));
+            snprintf(err, errlen, "cannot read back '%s': %s", t->o.path, sf_strerror(in));
+            o->failed = true;
             rc = -1;
         }
-        if (rc == 0 && sf_writef_short(o, buf, m) != m)
-            rc = track_failed(&io, out, sf_strerror(o), err, errlen);
+        if (rc == 0) rc = track_write(o, buf, m, err, errlen);
         k += m;
     }
     sf_close(in);
-    char why[512];
-    if (track_finish(o, &io, out, why, sizeof why) != 0 && rc == 0) {
+    char why[1024];
+    if (track_close(o, why, sizeof why) != 0 && rc == 0) {
         snprintf(err, errlen, "%s", why);
         rc = -1;
     }
@@ -206,7 +181,19 @@ int track_excerpt(track *t, long from, long n, const char *out, char *err, size_
 int track_close(track *t, char *err, size_t errlen)
 {
     if (!t) return 0;
-    int rc = track_finish(t->f, &t->io, t->path, err, errlen);
+    int rc;
+    if (t->failed) {
+        rc = outfile_failed(t->o.path, EIO, err, errlen);
+        outfile_abort(&t->o);
+    } else {
+        int e = put_header(t);
+        if (e != 0) {
+            rc = outfile_failed(t->o.path, e, err, errlen);
+            outfile_abort(&t->o);
+        } else {
+            rc = outfile_finish(&t->o, err, errlen);
+        }
+    }
     free(t);
     return rc;
 }

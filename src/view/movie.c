@@ -13,20 +13,21 @@
 #include <unistd.h>
 
 #include "child.h"
+#include "shell/infile.h"
+#include "shell/outfile.h"
 
 struct movie {
     pid_t pid;              /* the encoding ffmpeg */
-    int fd;                 /* the pipe to its standard input */
-    int log;                /* its messages (an unlinked file) */
+    int fd;                 /* the pipe to its standard input (non-blocking) */
+    int log;                /* its messages (a file in memory) */
     stereo_mode mode;
     int eye_w, eye_h;       /* one eye's pixels in the movie */
     int w, h;               /* the frame, even */
     double period;
     long frames;
-    bool existed;           /* the movie's file was there before */
     unsigned char *frame;   /* w x h RGB */
     char path[VIEW_PATH_MAX];
-    char part[VIEW_PATH_MAX + 16];  /* the video being encoded */
+    outfile video;          /* the video being encoded, beside the movie */
     char sound[VIEW_PATH_MAX + 32]; /* where the sound to mux goes */
 };
 
@@ -125,6 +126,14 @@ static int movie_failed(const movie *m, off_t from, const char *fallback, char *
     return -1;
 }
 
+/* The message of an ffmpeg that stopped working before it finished: -1. */
+static int movie_stalled(char *err, size_t errlen)
+{
+    snprintf(err, errlen, "ffmpeg did no work for %g s before it finished: it is stopped "
+             "(VROC_TIMEOUT sets how long vroc waits)", infile_timeout());
+    return -1;
+}
+
 /* How much ffmpeg has written to its log so far. */
 static off_t movie_log_size(const movie *m)
 {
@@ -150,9 +159,9 @@ static void movie_rate(double period, char *out, size_t len)
 int movie_open(movie **mp, const char *path, const view_settings *vs, double period, char *err,
                size_t errlen)
 {
+    /* (what the path is, first: it is made beside it, then put in its place) */
     struct stat sb;
-    bool existed = stat(path, &sb) == 0;
-    if (existed && !S_ISREG(sb.st_mode)) { /* the movie is made beside it, then renamed */
+    if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode)) {
         snprintf(err, errlen, "cannot write '%s': not a regular file (a movie is made beside "
                  "it, then put in its place)", path);
         return -1;
@@ -170,12 +179,6 @@ int movie_open(movie **mp, const char *path, const view_settings *vs, double per
         snprintf(err, errlen, "the path '%.40s...' is too long", path);
         return -1;
     }
-    int probe = open(path, O_WRONLY | O_CREAT | O_CLOEXEC, 0666);
-    if (probe < 0) {
-        snprintf(err, errlen, "cannot write '%s': %s", path, strerror(errno));
-        return -1;
-    }
-    close(probe);
     movie *m = calloc(1, sizeof *m);
     if (m) {
         m->mode = vs->stereo;
@@ -186,14 +189,20 @@ int movie_open(movie **mp, const char *path, const view_settings *vs, double per
     }
     if (!m || !m->frame) {
         if (m) free(m);
-        if (!existed) unlink(path);
         snprintf(err, errlen, "out of memory");
         return -1;
     }
+    /* the video is encoded beside the movie (ffmpeg writes it by name), which it
+     * replaces only once finished: a path that is a device or a pipe is refused */
+    if (outfile_begin(&m->video, path, OUTFILE_REGULAR, err, errlen) != 0) {
+        free(m->frame);
+        free(m);
+        return -1;
+    }
+    close(m->video.fd);
+    m->video.fd = -1;
     m->period = period;
-    m->existed = existed;
     snprintf(m->path, sizeof m->path, "%s", path);
-    child_beside(m->part, sizeof m->part, path, ".vroc-part-", "");
     child_beside(m->sound, sizeof m->sound, path, ".vroc-part-", ".wav");
 
     char size[32], rate[48];
@@ -214,11 +223,11 @@ int movie_open(movie **mp, const char *path, const view_settings *vs, double per
      * known while time runs, not only when the movie closes */
     argv[a++] = "-flush_packets";
     argv[a++] = "1";
-    argv[a++] = m->part;
+    argv[a++] = outfile_now(&m->video);
     argv[a] = NULL;
 
-    if (child_open((char *const *)argv, path, &m->pid, &m->fd, &m->log, err, errlen) != 0) {
-        if (!existed) unlink(path);
+    if (child_open((char *const *)argv, &m->pid, &m->fd, &m->log, err, errlen) != 0) {
+        outfile_abort(&m->video);
         free(m->frame);
         free(m);
         return -1;
@@ -265,7 +274,12 @@ int movie_add(movie *m, const view *v, long copies, char *err, size_t errlen)
     movie_compose(m, eye, sw, sh);
     size_t bytes = (size_t)m->w * (size_t)m->h * 3;
     for (long i = 0; i < copies; i++) {
-        int rc = child_write(m->fd, m->frame, bytes);
+        int rc = child_write(m->fd, m->frame, bytes, m->pid);
+        if (rc == ETIMEDOUT) {
+            snprintf(err, errlen, "ffmpeg took no frame and did no work for %g s: it is stopped "
+                     "(VROC_TIMEOUT sets how long vroc waits)", infile_timeout());
+            return -1;
+        }
         if (rc != 0) return movie_failed(m, 0, strerror(rc), err, errlen);
         m->frames++;
     }
@@ -275,34 +289,44 @@ int movie_add(movie *m, const view *v, long copies, char *err, size_t errlen)
     return 0;
 }
 
-/* Muxes m->part and the WAV file wav into m->path.  Returns 0, or -1 with a
- * message. */
+/* Muxes the video and the WAV file wav into a file beside the movie, which then
+ * replaces it.  Returns 0, or -1 with a message (nothing is left of the muxed
+ * file). */
 static int movie_mux(movie *m, const char *wav, char *err, size_t errlen)
 {
+    outfile muxed;
+    if (outfile_begin(&muxed, m->path, OUTFILE_REGULAR, err, errlen) != 0) return -1;
+    close(muxed.fd);
+    muxed.fd = -1;
     const char *ext = movie_ext(m->path);
     const char *argv[32];
     int a = 0;
     const char *head[] = {"ffmpeg", "-nostdin", "-hide_banner", "-loglevel", "error", "-y",
-                          "-i", m->part, "-i", wav, "-map", "0:v:0", "-map", "1:a:0",
+                          "-i", outfile_now(&m->video), "-i", wav, "-map", "0:v:0", "-map", "1:a:0",
                           "-c:v", "copy"};
     for (size_t i = 0; i < sizeof head / sizeof head[0]; i++) argv[a++] = head[i];
     if (ext && ext_is(ext, "mp4 m4v mov")) {
         const char *aac[] = {"-c:a", "aac", "-b:a", "192k", "-movflags", "+faststart"};
         for (size_t i = 0; i < sizeof aac / sizeof aac[0]; i++) argv[a++] = aac[i];
     }
-    argv[a++] = m->path;
+    argv[a++] = outfile_now(&muxed);
     argv[a] = NULL;
     off_t from = movie_log_size(m);
     pid_t pid;
     int rc = child_spawn((char *const *)argv, -1, m->log, &pid);
     if (rc != 0) {
+        outfile_abort(&muxed);
         snprintf(err, errlen, "cannot run ffmpeg: %s", strerror(rc));
         return -1;
     }
     /* (ffmpeg may exit with 0 after a write that failed: what it logged counts) */
-    if (child_wait(pid) != 0 || movie_log_size(m) > from)
+    int st = child_wait(pid);
+    if (st != 0 || movie_log_size(m) > from) {
+        outfile_abort(&muxed);
+        if (st == -2) return movie_stalled(err, errlen);
         return movie_failed(m, from, "it failed", err, errlen);
-    return 0;
+    }
+    return outfile_finish(&muxed, err, errlen);
 }
 
 int movie_close(movie *m, const char *wav, char *err, size_t errlen)
@@ -312,30 +336,33 @@ int movie_close(movie *m, const char *wav, char *err, size_t errlen)
     int st = child_wait(m->pid);
     int rc = 0;
     if (m->frames == 0) {
-        unlink(m->part);
-        if (!m->existed) unlink(m->path);
+        outfile_abort(&m->video);
     } else if (st != 0 || movie_log_size(m) > 0) { /* (see movie_mux) */
-        movie_failed(m, 0, "it failed", err, errlen);
-        unlink(m->part);
-        if (!m->existed) unlink(m->path);
+        if (st == -2) movie_stalled(err, errlen);
+        else movie_failed(m, 0, "it failed", err, errlen);
+        outfile_abort(&m->video);
         rc = -1;
-    } else if (wav && movie_mux(m, wav, err, errlen) == 0) {
-        unlink(m->part);
+    } else if (wav) { /* the movie is its video and its sound, or nothing */
+        rc = movie_mux(m, wav, err, errlen);
+        outfile_abort(&m->video);
     } else {
-        if (wav) { /* the video without its sound is better than nothing */
-            size_t k = strlen(err);
-            snprintf(err + k, errlen - k, "; it is written without its sound");
-            rc = -1;
-        }
-        if (rename(m->part, m->path) != 0) {
-            snprintf(err, errlen, "cannot write '%s': %s", m->path, strerror(errno));
-            unlink(m->part);
-            rc = -1;
-        }
+        rc = outfile_finish(&m->video, err, errlen);
     }
-    if (wav) unlink(wav);
+    unlink(m->sound); /* (made or not) */
     close(m->log);
     free(m->frame);
     free(m);
     return rc;
+}
+
+void movie_abort(movie *m)
+{
+    if (!m) return;
+    close(m->fd);
+    child_kill(m->pid);
+    outfile_abort(&m->video);
+    unlink(m->sound);
+    close(m->log);
+    free(m->frame);
+    free(m);
 }

@@ -2,9 +2,11 @@
  * (`movie = FILE`; language.md, "Sound and movies").
  *
  * movie_open starts `ffmpeg` (found on PATH) reading raw RGB frames from a pipe and
- * writing a file beside the movie's (".vroc-part-NAME"); movie_close finishes it
- * and, given a WAV file, muxes that in as the sound, then puts the result in
- * place.  The container is what the file's extension names; .mp4, .m4v, .mov and
+ * writing a file beside the movie's (shell/outfile.h: ".vroc-part-XXXXXX-NAME");
+ * movie_close finishes it and, given a WAV file, muxes that in as the sound into
+ * another file beside it, then puts the result in place: a movie is its video
+ * and its sound, or, when either fails, nothing, and the file that was there stays
+ * whole.  The container is what the file's extension names; .mp4, .m4v, .mov and
  * .mkv get H.264 (yuv420p) and, for the first three, AAC sound; other extensions
  * get ffmpeg's choice for them.
  *
@@ -17,13 +19,16 @@
  * is due (movie_add's copies), to keep video time with simulated time.
  *
  * ffmpeg runs in a process group of its own, so that Ctrl-C at the prompt does not
- * stop it; its messages (errors only) go to an unlinked file beside the movie,
- * which errors quote.  A write of ffmpeg's that fails is told the way every
- * file vroc writes tells it (shell/outfile.h): "cannot write 'PATH': REASON",
- * with the system's reason that ffmpeg's message ends with.  A path that exists
- * and is not a regular file (a device, a pipe) is refused, since the movie is
- * put in its place by rename.  Nothing here reads or changes the world: frames
- * come from the view's last render. */
+ * stop it; its messages (errors only) go to a file in memory (not beside the
+ * movie, where a full disk would swallow them), which errors quote.  A write of
+ * ffmpeg's that fails is told the way every file vroc writes tells it
+ * (shell/outfile.h): "cannot write 'PATH': REASON", with the system's reason that
+ * ffmpeg's message ends with.  An ffmpeg that takes no frame, or does not finish,
+ * while it does no work for VROC_TIMEOUT seconds (child.h: child_write, child_wait)
+ * is stopped, and the movie with it.  A path that exists and is not a regular
+ * file (a device, a pipe) is refused, since the movie is put in its place by
+ * rename.  Nothing here reads or changes the world: frames come from the view's
+ * last render. */
 #ifndef VROC_MOVIE_H
 #define VROC_MOVIE_H
 
@@ -61,8 +66,16 @@ double movie_period(const movie *m);
 const char *movie_path(const movie *m);
 
 /* Finishes the movie, with the sound of the WAV file wav (NULL: none), and frees m.
- * A movie with no frame leaves no file.  Returns 0, or -1 with a message (the
- * video may still be written, without sound: the message says so). */
+ * A movie with no frame leaves no file.  Returns 0, or -1 with a message: then
+ * nothing is written, and the file that was there stays whole. */
 int movie_close(movie *m, const char *wav, char *err, size_t errlen);
+
+/* Gives the movie up (ffmpeg stopped, nothing written, the file that was there
+ * whole) and frees m. */
+void movie_abort(movie *m);
+
+/* The most copies of one frame a movie takes for one time step (a time_step
+ * grown from 1e-6 to 1000 would want 1e9): the caller skips the rest. */
+#define MOVIE_MAX_COPIES 1000
 
 #endif

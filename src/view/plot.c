@@ -22,6 +22,7 @@
 /* What goes down the pipe, gathered in a buffer and written in large pieces. */
 typedef struct {
     int fd;
+    pid_t pid; /* gnuplot, which reads it */
     int rc; /* the first write's errno, or 0 */
     size_t n;
     char buf[1 << 16];
@@ -29,7 +30,7 @@ typedef struct {
 
 static void out_flush(pipe_out *o)
 {
-    if (o->rc == 0 && o->n > 0) o->rc = child_write(o->fd, o->buf, o->n);
+    if (o->rc == 0 && o->n > 0) o->rc = child_write(o->fd, o->buf, o->n, o->pid);
     o->n = 0;
 }
 
@@ -118,10 +119,11 @@ int plot_png(const char *path, const plot_spec *p, char *err, size_t errlen)
     pid_t pid;
     int in, log;
     char *const argv[] = {"gnuplot", NULL};
-    if (child_open(argv, path, &pid, &in, &log, err, errlen) != 0) return -1;
+    if (child_open(argv, &pid, &in, &log, err, errlen) != 0) return -1;
     pipe_out *o = malloc(sizeof *o);
     if (o) {
         o->fd = in;
+        o->pid = pid;
         o->rc = 0;
         o->n = 0;
         write_script(o, part, p);
@@ -135,7 +137,8 @@ int plot_png(const char *path, const plot_spec *p, char *err, size_t errlen)
         if (!o) snprintf(err, errlen, "out of memory");
         else if (why[0]) snprintf(err, errlen, "gnuplot could not draw '%s': %s", path, why);
         else snprintf(err, errlen, "gnuplot could not draw '%s' (%s)", path,
-                      o->rc ? strerror(o->rc) : "it wrote no picture");
+                      status == -2 || o->rc == ETIMEDOUT ? "it stalled, and was stopped"
+                      : o->rc ? strerror(o->rc) : "it wrote no picture");
         unlink(part);
         free(o);
         close(log);

@@ -15,6 +15,8 @@
 #include <string.h>
 #include <zlib.h>
 
+#include "shell/outfile.h"
+
 /* zlib level 1 without PNG filtering: measured fastest of levels 0 to 2 with the
  * none, sub, up and paeth filters and the default and RLE strategies (bench_view);
  * "up" gives files about a quarter smaller for 5 to 15 % more time. */
@@ -85,11 +87,10 @@ int png_write_rgb_opts(const char *path, const unsigned char *rgb, int width, in
         snprintf(err, errlen, "cannot write '%s': bad image size %dx%d", path, width, height);
         return -1;
     }
-    FILE *fp = fopen(path, "wb");
-    if (!fp) {
-        snprintf(err, errlen, "cannot write '%s': %s", path, strerror(errno));
-        return -1;
-    }
+    /* written beside the file, and put in its place once whole (outfile.h) */
+    outfile o;
+    if (outfile_begin(&o, path, OUTFILE_STREAM, err, errlen) != 0) return -1;
+    FILE *fp = o.f;
     setvbuf(fp, NULL, _IOFBF, 1 << 16);
     png_out_failure f = {{0}, 0};
     errno = 0;
@@ -101,16 +102,12 @@ int png_write_rgb_opts(const char *path, const unsigned char *rgb, int width, in
         rc = -1;
         snprintf(f.msg, sizeof f.msg, "%s", strerror(saved ? saved : EIO));
     }
-    errno = 0;
-    if (fclose(fp) != 0 && rc == 0) {
-        rc = -1;
-        snprintf(f.msg, sizeof f.msg, "%s", strerror(errno));
-    }
     if (rc != 0) {
-        remove(path);
+        outfile_abort(&o);
         snprintf(err, errlen, "cannot write '%s': %s", path, f.msg);
+        return -1;
     }
-    return rc;
+    return outfile_finish(&o, err, errlen);
 }
 
 int png_write_rgb(const char *path, const unsigned char *rgb, int width, int height,
