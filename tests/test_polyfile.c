@@ -187,7 +187,7 @@ static void saved_and_read_back(void **state)
     char path[256], other[256], text[1200];
     write_text("cube.obj", CUBE_OBJ);
     snprintf(text, sizeof text,
-             "restart; gravity; cube floor; mass = -1; size = (2, 2, 0.1); translate = (0, 0, -0.1)\n"
+             "restart; gravity; max_angular = 50; cube floor; mass = -1; size = (2, 2, 0.1); translate = (0, 0, -0.1)\n"
              "polyhedron p; file = \"%s/cube.obj\"; scale = (0.3, 0.2, 0.25); translate = (0, 0, 1)\n"
              "rotate = (1, 2, 3) 0.7; angular_vel = (1, -2, 0.5); linear_vel = (0.3, 0, 0)\n"
              "run 7; save \"%s/w.vroc\"; run 13; hash\n",
