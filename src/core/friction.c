@@ -104,69 +104,118 @@ static bool solve3(double B[3][3], const double r[3], double z[3])
     return true;
 }
 
-/* A sliding point of the local problem w = B z + b with z = zn (1, -mu d):
- * wn = 0 gives zn, and wt must lie along d.  The residual at angle th: the
- * sine between d and wt (0 at an answer); *zn and *wt written. */
-static double slide_at(double B[3][3], const double b[3], double mu, double th, double *zn,
-                       v2 *wt)
+/* A sliding point of the local problem w = B z + b slides along a unit d with z
+ * = zn (1, -mu d): wn = 0 gives zn = -b0 / den, den = B00 - mu B0t.d, and then
+ * den wt = den bt - b0 (Bt0 - mu Btt d) must lie along +d.  Its sine with d,
+ * times |den wt|, is G(d) = l.d + d.Q d (linear and quadratic in d): a
+ * trigonometric polynomial of degree 2 in d's angle, with at most four roots. */
+typedef struct {
+    double l[2], Q[2][2];
+    double b0, B00, g[2], bt[2], Bt0[2], Btt[2][2], mu;
+} slide_fn;
+
+static slide_fn slide_fn_of(double B[3][3], const double b[3], double mu)
 {
-    v2 d = {cos(th), sin(th)};
-    double den = B[0][0] - mu * (B[0][1] * d.x + B[0][2] * d.y);
-    *zn = den > 0 ? -b[0] / den : -1;
-    wt->x = b[1] + *zn * (B[1][0] - mu * (B[1][1] * d.x + B[1][2] * d.y));
-    wt->y = b[2] + *zn * (B[2][0] - mu * (B[2][1] * d.x + B[2][2] * d.y));
-    double l = v2_len(*wt);
-    return l > 0 ? (d.x * wt->y - d.y * wt->x) / l : 0;
+    slide_fn f = {.b0 = b[0], .B00 = B[0][0], .g = {B[0][1], B[0][2]}, .bt = {b[1], b[2]},
+                  .Bt0 = {B[1][0], B[2][0]}, .Btt = {{B[1][1], B[1][2]}, {B[2][1], B[2][2]}}, .mu = mu};
+    /* den (d x bt) = B00 p.d - mu (g.d)(p.d), p = (bt2, -bt1); -b0 (d x Bt0) =
+     * -b0 s.d, s = (Bt0_2, -Bt0_1); b0 mu (d x Btt d) = b0 mu d.R d */
+    double p[2] = {b[2], -b[1]}, sv[2] = {B[2][0], -B[1][0]};
+    double R[2][2] = {{B[2][1], B[2][2]}, {-B[1][1], -B[1][2]}};
+    for (int i = 0; i < 2; i++) {
+        f.l[i] = B[0][0] * p[i] - b[0] * sv[i];
+        for (int j = 0; j < 2; j++) f.Q[i][j] = -mu * f.g[i] * p[j] + b[0] * mu * R[i][j];
+    }
+    return f;
 }
 
-/* A sliding point's direction: the angle where wt lies along d, found by a scan
- * and bisection (when the fixed point from th0 does not settle).  False when
- * there is none with zn > 0 (no consistent sliding answer). */
+/* G at d, and its derivative along the angle (d turned a quarter). */
+static double slide_g(const slide_fn *f, v2 d, double *dg)
+{
+    double Qd[2] = {f->Q[0][0] * d.x + f->Q[0][1] * d.y, f->Q[1][0] * d.x + f->Q[1][1] * d.y};
+    double Qtd[2] = {f->Q[0][0] * d.x + f->Q[1][0] * d.y, f->Q[0][1] * d.x + f->Q[1][1] * d.y};
+    if (dg) {
+        double gx = f->l[0] + Qd[0] + Qtd[0], gy = f->l[1] + Qd[1] + Qtd[1];
+        *dg = -gx * d.y + gy * d.x;
+    }
+    return f->l[0] * d.x + f->l[1] * d.y + d.x * Qd[0] + d.y * Qd[1];
+}
+
+/* True when sliding along d is an answer's direction: zn > 0 and wt ahead of d
+ * (not against it); *zn written. */
+static bool slide_ok(const slide_fn *f, v2 d, double *zn)
+{
+    double den = f->B00 - f->mu * (f->g[0] * d.x + f->g[1] * d.y);
+    if (!(den > 0)) return false;
+    *zn = -f->b0 / den;
+    double wx = f->bt[0] + *zn * (f->Bt0[0] - f->mu * (f->Btt[0][0] * d.x + f->Btt[0][1] * d.y));
+    double wy = f->bt[1] + *zn * (f->Bt0[1] - f->mu * (f->Btt[1][0] * d.x + f->Btt[1][1] * d.y));
+    return *zn > 0 && wx * d.x + wy * d.y >= 0;
+}
+
+/* The root of G between angles lo and hi (G's signs differ there, glo at lo):
+ * Newton's steps kept inside the bracket, else bisection. */
+static double slide_root(const slide_fn *f, double lo, double hi, double glo)
+{
+    double t = 0.5 * (lo + hi);
+    for (int it = 0; it < 100 && hi - lo > 1e-15 * (1 + fabs(t)); it++) {
+        double dg, g = slide_g(f, (v2){cos(t), sin(t)}, &dg);
+        if (g == 0) return t;
+        if ((g < 0) == (glo < 0)) lo = t, glo = g;
+        else hi = t;
+        double nt = dg != 0 ? t - g / dg : lo;
+        t = nt > lo && nt < hi ? nt : 0.5 * (lo + hi);
+    }
+    return t;
+}
+
+/* A sliding point's direction: the angle of the root of G nearest th0 at which
+ * the point slides consistently (slide_ok), found by Newton's method from th0
+ * (near the answer once the sweeps settle), else by a scan of the circle for
+ * sign changes and a bracketed search.  False when there is none (no
+ * consistent sliding answer). */
 static bool slide_dir(double B[3][3], const double b[3], double mu, double th0, double *th,
                       double *zn)
 {
-    v2 wt;
-    /* the secant method on the residual, from th0 (near the answer once the
-     * sweeps settle) */
-    double t0 = th0, f0 = slide_at(B, b, mu, t0, zn, &wt), t1 = th0 + 1e-4, f1;
-    for (int it = 0; it < 30; it++) {
-        f1 = slide_at(B, b, mu, t1, zn, &wt);
-        bool ahead = wt.x * cos(t1) + wt.y * sin(t1) > 0;
-        if (!(*zn > 0) || !ahead) break;
-        if (fabs(f1) <= 1e-15 || t1 == t0) {
-            *th = t1;
-            return true;
+    slide_fn f = slide_fn_of(B, b, mu);
+    double scale = fabs(f.l[0]) + fabs(f.l[1]) + fabs(f.Q[0][0]) + fabs(f.Q[0][1]) +
+                   fabs(f.Q[1][0]) + fabs(f.Q[1][1]);
+    if (!(scale > 0) || !isfinite(scale)) return false;
+    double t = th0;
+    for (int it = 0; it < 8; it++) {
+        double dg, g = slide_g(&f, (v2){cos(t), sin(t)}, &dg);
+        if (fabs(g) <= 1e-15 * scale) {
+            if (slide_ok(&f, (v2){cos(t), sin(t)}, zn) && fabs(remainder(t - th0, 2 * M_PI)) < 0.5) {
+                *th = t;
+                return true;
+            }
+            break;
         }
-        if (f1 == f0) break;
-        double t2 = t1 - f1 * (t1 - t0) / (f1 - f0);
-        t0 = t1, f0 = f1, t1 = t2;
+        if (!(dg != 0)) break;
+        double step = g / dg;
+        if (fabs(step) > 0.5) break;
+        t -= step;
     }
-    /* a scan of the circle for a sign change with wt ahead of d, then bisection */
-    enum { SCAN = 72 };
-    double best = HUGE_VAL;
+    /* the scan: 32 directions turned from th0 by a rotation (its rounding is
+     * far below what the bracket needs) */
+    enum { SCAN = 32 };
+    double c = cos(2 * M_PI / SCAN), s = sin(2 * M_PI / SCAN), best = HUGE_VAL;
+    v2 d = {cos(th0), sin(th0)};
+    double prev = slide_g(&f, d, NULL);
     bool found = false;
-    double prev_t = th0, prev_f = slide_at(B, b, mu, th0, zn, &wt);
     for (int k = 1; k <= SCAN; k++) {
-        double tk = th0 + 2 * M_PI * k / SCAN, zk;
-        double fk = slide_at(B, b, mu, tk, &zk, &wt);
-        if ((prev_f <= 0) != (fk <= 0)) {
-            double lo = prev_t, hi = tk, flo = prev_f;
-            for (int i = 0; i < 60; i++) {
-                double mid = 0.5 * (lo + hi), zm;
-                double fm = slide_at(B, b, mu, mid, &zm, &wt);
-                if ((fm <= 0) == (flo <= 0)) lo = mid, flo = fm;
-                else hi = mid;
-            }
-            double tm = 0.5 * (lo + hi), zm;
-            slide_at(B, b, mu, tm, &zm, &wt);
-            /* wt along d (not against it), pushing */
-            if (zm > 0 && wt.x * cos(tm) + wt.y * sin(tm) >= 0) {
-                double off = fabs(remainder(tm - th0, 2 * M_PI));
-                if (off < best) best = off, *th = tm, *zn = zm, found = true;
-            }
+        v2 dk = {c * d.x - s * d.y, s * d.x + c * d.y};
+        double l = v2_len(dk);
+        dk.x /= l, dk.y /= l;
+        double gk = slide_g(&f, dk, NULL);
+        if ((prev <= 0) != (gk <= 0)) {
+            double lo = th0 + 2 * M_PI * (k - 1) / SCAN, hi = th0 + 2 * M_PI * k / SCAN;
+            double tm = slide_root(&f, lo, hi, prev), zm;
+            double off = fabs(remainder(tm - th0, 2 * M_PI));
+            if (off < best && slide_ok(&f, (v2){cos(tm), sin(tm)}, &zm)) best = off, *th = tm, *zn = zm, found = true;
         }
-        prev_t = tk;
-        prev_f = fk;
+        d = dk;
+        prev = gk;
     }
     return found;
 }
@@ -278,6 +327,8 @@ static bool polish(int m, const double *A, const double *q, const double *mu, do
     static double M[9 * FRICTION_MAX_POINTS * FRICTION_MAX_POINTS];
     double zz[3 * FRICTION_MAX_POINTS], ww[3 * FRICTION_MAX_POINTS], r[3 * FRICTION_MAX_POINTS],
         x[3 * FRICTION_MAX_POINTS];
+    double xs[3 * FRICTION_MAX_POINTS];
+    for (int i = 0; i < n; i++) xs[i] = z[i];
     for (int round = 0; round < 12; round++) {
         /* the unknowns: rows of A they stand for (a sliding point's zn stands for
          * its column less mu times its slip's) */
@@ -298,7 +349,15 @@ static bool polish(int m, const double *A, const double *q, const double *mu, do
                 M[i * nu + j] = a;
             }
         }
+        /* (solved for the change from the sweeps' answer, so that where the
+         * points are more than the constraints, four corners of a face, the
+         * impulses keep the sweeps' share among them, inside the cones, and
+         * the change is small) */
+        for (int i = 0; i < nu; i++)
+            for (int j = 0; j < nu; j++) r[i] -= M[i * nu + j] * xs[col[j]];
         solve_full(nu, M, r, x);
+        for (int j = 0; j < nu; j++) x[j] += xs[col[j]];
+        for (int j = 0; j < nu; j++) xs[col[j]] = x[j];
         for (int i = 0; i < n; i++) zz[i] = 0;
         for (int j = 0; j < nu; j++) {
             int cj = col[j], kj = cj / 3;
