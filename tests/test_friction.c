@@ -7,8 +7,8 @@
  * balls, boxes and rods (corner, edge and face landings) never raise the kinetic
  * energy; the cone solve keeps Coulomb's law at every point; a box launched
  * along its face's diagonal on a level floor slides along the diagonal and
- * stops where mu g says; a ball rolling on a floor slows at (5/7) c g (within
- * 10% as yet). */
+ * stops where mu g says; a ball rolling on a floor slows at (5/7) c g (to 1e-6,
+ * straight on), and comes to rest where it stops. */
 #include "check.h"
 
 #include <stdlib.h>
@@ -387,10 +387,20 @@ static void ball_rolls_and_slows_at_five_sevenths_c_g(void **state)
     frames(&w, 10);
     double t2 = w.time, v2 = ball->v.x, c = 0.02;
     double a = (v1 - v2) / (t2 - t1);
-    print_message("rolling ball: slows at %.9f (want %.9f)\n", a, 5.0 / 7.0 * c * G);
-    /* (within 10%: the stepped couple gives 0.926 of it; see issue 36's note) */
-    assert_rel(a, 5.0 / 7.0 * c * G, 0.1);
-    assert_rel(ball->w.y * 0.1, ball->v.x, 1e-3);
+    double want = 5.0 / 7.0 * c * G;
+    print_message("rolling ball: slows at %.9f (want %.9f)\n", a, want);
+    assert_rel(a, want, 1e-6);
+    assert_rel(ball->w.y * 0.1, ball->v.x, 1e-9);
+    assert_true(fabs(ball->x.y) < 1e-12); /* straight on */
+    /* it stops v2^2 / (2 a) further on, and rests there (the frame rule rests
+     * it once it is slower than SIM_REST_SPEED: up to that speed's stopping
+     * distance short of it) */
+    double x2 = ball->x.x, stop = x2 + v2 * v2 / (2 * want);
+    frames(&w, 150);
+    assert_int_equal(ball->state, STATE_RESTING);
+    double short_by = SIM_REST_SPEED * SIM_REST_SPEED / (2 * want);
+    print_message("rolling ball: rests at %.9f (stops at %.9f)\n", ball->x.x, stop);
+    assert_true(ball->x.x <= stop + 1e-9 && ball->x.x >= stop - short_by - 1e-9);
     world_free(&w);
 }
 

@@ -21,6 +21,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "tolerance.h"
+
 /* Stretches of a turning slip in one impact (each at most 1/64 of the impulse's
  * scale), and stretches in all, at most. */
 #define IMPACT_STRETCHES 64
@@ -34,6 +36,20 @@ double friction_mu(const body *a, const body *b)
 double friction_rolling(const body *a, const body *b)
 {
     return sqrt(a->rolling_friction * b->rolling_friction);
+}
+
+double friction_roll_decel(const body *b, const body *s, vec3 a, vec3 n)
+{
+    double mu = friction_mu(b, s), c = friction_rolling(b, s), gn = -v3_dot(a, n);
+    vec3 com = b->shape.mass.com;
+    if (b->sp.kind != SHAPE_SPHERE || com.x != 0 || com.y != 0 || com.z != 0 || !(mu > 0) ||
+        !(b->mass > 0) || !(gn > 0))
+        return -1;
+    double size = 1 + b->shape.r_out;
+    if (v3_len(v3_mad(a, n, gn)) > SIM_ACCEL_ROUND * size) return -1; /* not level */
+    double r = b->shape.r_out, k = b->I_princ.x / (b->mass * r * r);
+    if (!(k > 0) || c / (1 + k) > mu) return -1;
+    return c * gn / (1 + k);
 }
 
 bool friction_any(const impulse_row *rows, int n)
@@ -525,23 +541,28 @@ bool friction_roll(const impulse_row *rows, int m, body *const *bs, const bool *
         bool mp = mobile[r->p] && !body_is_static(P), mq = mobile[r->q] && !body_is_static(Q);
         const body *arm = mp ? P : Q;
         if (!mp && !mq) continue;
-        vec3 rel = v3_sub(P->w, Q->w);
-        double wl = v3_len(rel);
-        if (!(wl > 0)) continue;
-        /* no more than stops it: the angular momentum of that turning, on the
-         * lighter side (in inertia along it) */
-        vec3 dir = v3_scale(rel, 1 / wl);
-        double stop = HUGE_VAL;
-        if (mp) stop = d_min(stop, v3_dot(m3_mulv(body_inertia_world(P), rel), dir));
-        if (mq) stop = d_min(stop, v3_dot(m3_mulv(body_inertia_world(Q), rel), dir));
-        double J = d_min(r->roll * v3_dist(r->at, body_com(arm)) * zn, d_max(stop, 0));
-        if (mp) {
-            P->L = v3_mad(P->L, dir, -J);
-            body_update_w(P);
-        }
-        if (mq) {
-            Q->L = v3_mad(Q->L, dir, J);
-            body_update_w(Q);
+        vec3 rel = v3_sub(P->w, Q->w), nrm = r->n;
+        /* rolling (the turning across the normal) and spinning (about it) are
+         * resisted apart, each by a couple of up to c r zn */
+        vec3 part[2] = {v3_mad(rel, nrm, -v3_dot(rel, nrm)), v3_scale(nrm, v3_dot(rel, nrm))};
+        for (int j = 0; j < 2; j++) {
+            double wl = v3_len(part[j]);
+            if (!(wl > 0)) continue;
+            /* no more than stops it: the angular momentum of that turning, on
+             * the lighter side (in inertia along it) */
+            vec3 dir = v3_scale(part[j], 1 / wl);
+            double stop = HUGE_VAL;
+            if (mp) stop = d_min(stop, v3_dot(m3_mulv(body_inertia_world(P), part[j]), dir));
+            if (mq) stop = d_min(stop, v3_dot(m3_mulv(body_inertia_world(Q), part[j]), dir));
+            double J = d_min(r->roll * v3_dist(r->at, body_com(arm)) * zn, d_max(stop, 0));
+            if (mp) {
+                P->L = v3_mad(P->L, dir, -J);
+                body_update_w(P);
+            }
+            if (mq) {
+                Q->L = v3_mad(Q->L, dir, J);
+                body_update_w(Q);
+            }
         }
     }
     return any;

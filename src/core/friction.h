@@ -103,10 +103,21 @@ int friction_compress(const impulse_row *rows, int m, body *const *bs, const boo
 void friction_restitute(const impulse_row *rows, int m, body *const *bs, const bool *mobile,
                         double *lambda, double ke_before, friction_work *fw, friction_flags *f);
 
+/* A ball that rolls on a level face of a static support s (normal n, towards
+ * the ball), pressed onto it by the force's acceleration a: the deceleration of
+ * its centre, c g_n / (1 + k) with c the pair's rolling resistance, g_n = -a.n
+ * and I = k m r^2 (a solid ball: (5/7) c g), or -1 when b does not roll there
+ * in closed form: it is not a ball (a sphere with its centre of mass at its
+ * centre), the pair has no friction, the face is not level (a's part along it
+ * above rounding), or friction cannot hold the couple (c / (1 + k) > mu: it
+ * slides). */
+double friction_roll_decel(const body *b, const body *s, vec3 a, vec3 n);
+
 /* Rolling resistance at the m points with the impulses z (3m, as
  * friction_cone_solve's): at each point that does not slip (zt strictly inside
- * its cone) and has roll c > 0, a couple of angular impulse up to c r zn against
- * the relative turning of its objects (rolling, and spinning about the normal),
+ * its cone) and has roll c > 0, two couples of angular impulse up to c r zn
+ * each: one against the relative rolling of its objects (their turning across
+ * the normal), one against their spinning about the normal,
  * r the distance from the centre of mass of the row's p (its q's when p does
  * not move) to the point; no more than stops that turning.  Applied to the
  * mobile bodies of bs; true when some point has rolling resistance. */
