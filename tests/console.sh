@@ -92,7 +92,7 @@ out=$("$VROC" -b -q -c 'gravity; max_angular = 10; sphere ball; mass = 2; transl
 has "energy prints the textbook's figures" "$out" "kinetic_energy = 26" "kinetic_linear = 16" \
     "kinetic_rotational = 10" "potential_energy = 58.8" "total_energy = 84.8" \
     "linear_momentum = (0, 8, 0)" "angular_momentum = (-24, 0, 12)" "angular_momentum_com = (0, 0, 4)"
-out=$("$VROC" -b -q -c 'sphere a; linear_vel = (1, 0, 0); sphere b; translate = (3, 0, 0); energy; run 30; energy' 2>&1)
+out=$("$VROC" -b -q -c 'default_friction = 0; default_rolling_friction = 0; sphere a; linear_vel = (1, 0, 0); sphere b; translate = (3, 0, 0); energy; run 30; energy' 2>&1)
 first=$(printf '%s\n' "$out" | grep '^total_energy' | head -1)
 last=$(printf '%s\n' "$out" | grep '^total_energy' | tail -1)
 [ "$first" = "total_energy = 0.5" ] && [ "$first" = "$last" ] &&
