@@ -268,8 +268,9 @@ static bool local_solve(double B[3][3], const double b[3], double mu, double z[3
 
 /* The square system M x = r (k x k, row-major, overwritten) by Gaussian
  * elimination with full pivoting; an unknown whose pivot is below 1e-13 of the
- * largest is 0 (the system is then singular: points given twice). */
-static void solve_full(int k, double *M, double *r, double *x)
+ * largest is 0 (the system is then singular: points given twice).  Returns the
+ * rank found. */
+static int solve_full(int k, double *M, double *r, double *x)
 {
     int perm[3 * FRICTION_MAX_POINTS], rank = k;
     for (int i = 0; i < k; i++) perm[i] = i;
@@ -319,15 +320,25 @@ static void solve_full(int k, double *M, double *r, double *x)
         y[i] = s / M[i * k + i];
     }
     for (int i = 0; i < k; i++) x[perm[i]] = y[i];
+    return rank;
 }
+
+/* Sweeps crawl when w changes by less than this many times the tolerance in a
+ * sweep (points given twice, or nearly: a face's corners, an edge's ends). */
+#define FRICTION_STALL 1e3
+
+/* Rounds of a polish, at most. */
+#define POLISH_ROUNDS 20
 
 /* Polishes z (the sweeps' answer, nearly right) to the exact answer of its
  * pattern: points apart stay 0, points that stick get w_k = 0, points that slide
  * get wn = 0 with zt along their slip (the slips found again, a few times).
- * True, with z and w written, when the answer holds within tol; else nothing
+ * True, with z and w written, when the answer holds within tol (or within what
+ * the sweeps' answer leaves: where the pattern's system is singular, and for
+ * the gaps of points apart when the sweeps are stalled); else nothing
  * changed. */
 static bool polish(int m, const double *A, const double *q, const double *mu, double *z, double *w,
-                   double tol)
+                   double tol, bool stalled)
 {
     int n = 3 * m, col[3 * FRICTION_MAX_POINTS], nu = 0;
     enum { APART, STICK, SLIDE } kind[FRICTION_MAX_POINTS];
@@ -339,13 +350,29 @@ static bool polish(int m, const double *A, const double *q, const double *mu, do
         else kind[k] = SLIDE, dx[k] = -z[3 * k + 1] / zt, dy[k] = -z[3 * k + 2] / zt;
         if (kind[k] == STICK && mu[k] == 0) kind[k] = SLIDE, dx[k] = 1, dy[k] = 0;
     }
+    /* what the sweeps' answer leaves of the pattern's equations (w = 0 where a
+     * point sticks, wn = 0 where it slides): where the pattern's system is
+     * singular (two points of one object side by side, whose slips along the
+     * line between them are one, measured at two places), no answer of the
+     * pattern leaves less than its inconsistency, and the polish's answer is
+     * kept when it leaves no more than the sweeps' */
+    double left = 0;
+    for (int k = 0; k < m; k++) {
+        if (kind[k] == STICK)
+            for (int j = 0; j < 3; j++) left = d_max(left, fabs(w[3 * k + j]));
+        else if (kind[k] == SLIDE) left = d_max(left, fabs(w[3 * k]));
+        else left = d_max(left, -w[3 * k]);
+    }
+    /* (and where the sweeps crawl, an answer whose gaps close no faster than
+     * the sweeps' do is as good as theirs will be) */
+    double tol_gap = stalled ? d_max(tol, left) : tol;
     /* (the one large array: static, since the core runs one frame at a time) */
     static double M[9 * FRICTION_MAX_POINTS * FRICTION_MAX_POINTS];
     double zz[3 * FRICTION_MAX_POINTS], ww[3 * FRICTION_MAX_POINTS], r[3 * FRICTION_MAX_POINTS],
         x[3 * FRICTION_MAX_POINTS];
     double xs[3 * FRICTION_MAX_POINTS];
     for (int i = 0; i < n; i++) xs[i] = z[i];
-    for (int round = 0; round < 12; round++) {
+    for (int round = 0; round < POLISH_ROUNDS; round++) {
         /* the unknowns: rows of A they stand for (a sliding point's zn stands for
          * its column less mu times its slip's) */
         nu = 0;
@@ -371,7 +398,7 @@ static bool polish(int m, const double *A, const double *q, const double *mu, do
          * the change is small) */
         for (int i = 0; i < nu; i++)
             for (int j = 0; j < nu; j++) r[i] -= M[i * nu + j] * xs[col[j]];
-        solve_full(nu, M, r, x);
+        double tol_eq = solve_full(nu, M, r, x) < nu ? d_max(tol, left) : tol;
         for (int j = 0; j < nu; j++) x[j] += xs[col[j]];
         for (int j = 0; j < nu; j++) xs[col[j]] = x[j];
         for (int i = 0; i < n; i++) zz[i] = 0;
@@ -385,23 +412,37 @@ static bool polish(int m, const double *A, const double *q, const double *mu, do
             for (int j = 0; j < n; j++) s += A[i * n + j] * zz[j];
             ww[i] = s;
         }
-        /* does it hold? */
+        /* does it hold?  Where a point's pattern is wrong (an impulse that
+         * pulls, a gap that closes, a sticking impulse outside its cone, a slip
+         * that reverses), the point takes the pattern the answer shows and the
+         * round is solved again (an active set's step); a residual left where
+         * the pattern holds fails */
         bool ok = true, turn = false;
         for (int k = 0; k < m && ok; k++) {
             double zn = zz[3 * k], wn = ww[3 * k], wx = ww[3 * k + 1], wy = ww[3 * k + 2];
             double zt = sqrt(zz[3 * k + 1] * zz[3 * k + 1] + zz[3 * k + 2] * zz[3 * k + 2]);
-            ok = zn >= 0;
-            if (kind[k] == APART) ok = ok && wn >= -tol;
-            else if (kind[k] == STICK) ok = ok && zt <= mu[k] * zn * (1 + 1e-12) && fabs(wn) <= tol &&
-                                         fabs(wx) <= tol && fabs(wy) <= tol;
-            else if (mu[k] > 0) {
+            if (kind[k] != APART && zn < 0) {
+                kind[k] = APART, turn = true;
+                for (int j = 0; j < 3; j++) xs[3 * k + j] = 0;
+            } else if (kind[k] == APART) {
+                if (wn < -tol_gap) kind[k] = mu[k] > 0 ? STICK : SLIDE, dx[k] = 1, dy[k] = 0, turn = true;
+            } else if (kind[k] == STICK) {
+                ok = fabs(wn) <= tol_eq && fabs(wx) <= tol_eq && fabs(wy) <= tol_eq;
+                if (ok && zt > mu[k] * zn * (1 + 1e-12))
+                    kind[k] = SLIDE, dx[k] = -zz[3 * k + 1] / zt, dy[k] = -zz[3 * k + 2] / zt, turn = true;
+            } else if (mu[k] > 0) {
                 double along = wx * dx[k] + wy * dy[k], off = fabs(wx * dy[k] - wy * dx[k]);
-                ok = ok && fabs(wn) <= tol && along >= -tol;
-                if (off > tol) {
+                ok = fabs(wn) <= tol_eq;
+                if (ok && along < -tol) {
+                    kind[k] = STICK, turn = true;
+                    xs[3 * k + 1] = zz[3 * k + 1], xs[3 * k + 2] = zz[3 * k + 2];
+                } else if (ok && off > tol) {
                     double l = sqrt(wx * wx + wy * wy);
                     if (!(l > 0)) ok = false;
                     else dx[k] = wx / l, dy[k] = wy / l, turn = true;
                 }
+            } else {
+                ok = fabs(wn) <= tol_eq;
             }
         }
         if (!ok) return false;
@@ -462,7 +503,7 @@ int friction_cone_solve(int m, const double *A, const double *q, const double *m
         }
         for (int i = 0; i < n; i++) change = d_max(change, fabs(w[i] - w0[i]));
         double tol = FRICTION_TOL * (qs + diag * size);
-        if (change > tol && sweep % 10 == 9 && polish(m, A, q, mu, z, w, tol)) change = 0;
+        if (change > tol && sweep % 10 == 9 && polish(m, A, q, mu, z, w, tol, change < FRICTION_STALL * tol)) change = 0;
         if (change <= tol) {
             status = 0;
             break;
