@@ -312,6 +312,16 @@ double sim_frame_end(const world *w)
     return w->time_base + (double)(w->base_frames + 1) * w->base_step;
 }
 
+/* True when nothing moves: every object static or resting, and no pair new
+ * (a world at rest, which costs a frame nothing but its bookkeeping). */
+static bool idle(const world *w)
+{
+    if (w->pairs.nfresh > 0) return false;
+    for (int i = 0; i < w->n; i++)
+        if (step_moves(w, i)) return false;
+    return true;
+}
+
 int sim_frame(world *w, char *err, size_t errlen)
 {
     return sim_frame_hooked(w, NULL, err, errlen);
@@ -339,6 +349,14 @@ int sim_frame_hooked(world *w, const sim_hook *hook, char *err, size_t errlen)
      * if there were none. */
     int calls = 0;
     double tn = hook ? hook->next(hook->ctx, w) : HUGE_VAL;
+    if (!hook && idle(w)) {
+        /* nothing moves: the steps would find nothing, and leave only what
+         * their searches remember reset, as here */
+        if (n > 1)
+            for (long k = 0; k < w->pairs.n; k++) w->pairs.p[k].toi_fa = w->pairs.p[k].toi_fb = -1;
+        w->st.subframes += n;
+        n = 0;
+    }
     for (long k = 0; k < n; k++) {
         double t_end = w->time + h;
         bool cut = tn < t_end;
