@@ -37,6 +37,9 @@ typedef struct body {
     shape_params sp;   /* the parameters as set; the body owns sp.src */
     shape shape;       /* geometry built from sp */
     bool built;        /* shape is built and matches sp */
+    int fell;          /* 1 once it has fallen more than SIM_FALL_DEPTH below the
+                        * lowest static object (sim.c), 2 once that was told
+                        * (the shell's warning), else 0 */
 
     double mass;       /* > 0 dynamic; < 0 static (infinite mass) */
     double elasticity; /* [0, 1] */

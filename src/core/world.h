@@ -73,6 +73,8 @@ typedef struct {
     long painleve;        /* contact problems with friction with no consistent
                            * answer (Painleve): answered without friction there */
     int first_painleve;   /* an object of the first of them (when painleve > 0) */
+    long fallen;          /* objects that fell more than SIM_FALL_DEPTH below the
+                           * lowest static object (each once: body.fell) */
     long heap_pops;       /* pairs taken from the schedule to be checked */
     long events_lost;     /* collisions not reported in events (out of memory) */
     long late_pairs;      /* (heap off) contacts found of pairs the broad phase did

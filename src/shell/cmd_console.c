@@ -196,6 +196,7 @@ cmd_status cmd_stats(shell *sh, const stmt *st)
     fprintf(sh->out, "energy_cuts = %ld\n", w->st.energy_cuts);
     fprintf(sh->out, "cone_unconverged = %ld\n", w->st.cone_unconverged);
     fprintf(sh->out, "painleve = %ld\n", w->st.painleve);
+    fprintf(sh->out, "fallen = %ld\n", w->st.fallen);
     long resting = 0;
     for (int i = 0; i < w->n; i++) resting += w->bodies[i]->state == STATE_RESTING;
     fprintf(sh->out, "resting = %ld\n", resting);
