@@ -9,10 +9,14 @@
  * (V-Clip's from-scratch start).  Prints queries/s, the median of 3 runs of about
  * `seconds` each, the mean walk lengths and the time ratios; then the same for other
  * pairs of primitives.  Goal (issue 4): cached costs the same at 10x10 and 40x40
- * within 1.5x, and at least 5x less than scratch at 40x40.
+ * within 1.5x, and at least 5x less than scratch at 40x40.  Then two polyhedra as
+ * files give them (issue 39): the hulls of 100 and of 5,000 points spread over a
+ * sphere (a Fibonacci lattice, every point on the hull); goal: cached within 1.5x
+ * of each other.
  *
  *   build/bench/bench_closest [seconds per run]
  */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -141,6 +145,31 @@ static int bench_pair(const char *label, shape_params pa, shape_params pb, doubl
     return 0;
 }
 
+/* A polyhedron's source of n points over the unit sphere (Fibonacci lattice), no
+ * faces: its hull is drawn. */
+static void source_release(shape_source *src)
+{
+    free(src->pts);
+    free(src);
+}
+
+static shape_source *sphere_points(int n)
+{
+    shape_source *src = calloc(1, sizeof *src);
+    if (!src || !(src->pts = malloc((size_t)n * sizeof *src->pts))) {
+        free(src);
+        return NULL;
+    }
+    src->np = n;
+    src->release = source_release;
+    const double golden = 3.14159265358979323846 * (3 - sqrt(5));
+    for (int i = 0; i < n; i++) {
+        double z = 1 - (2 * i + 1.0) / n, r = sqrt(1 - z * z);
+        src->pts[i] = v3(r * cos(golden * i), r * sin(golden * i), z);
+    }
+    return src;
+}
+
 int main(int argc, char **argv)
 {
     double seconds = argc > 1 ? atof(argv[1]) : 0.5;
@@ -166,5 +195,20 @@ int main(int argc, char **argv)
     if (bench_pair("sphere superquadric 40", ball, sq, seconds, NULL) != 0) return 1;
     if (bench_pair("sphere cube", ball, box, seconds, NULL) != 0) return 1;
     if (bench_pair("sphere sphere", ball, ball, seconds, NULL) != 0) return 1;
+
+    int np[2] = {100, 5000};
+    double prate[2] = {0, 0};
+    for (int i = 0; i < 2; i++) {
+        shape_source *src = sphere_points(np[i]);
+        if (!src) return 1;
+        shape_params p = shape_defaults(SHAPE_POLYHEDRON);
+        p.src = src;
+        char label[64];
+        snprintf(label, sizeof label, "polyhedron %d points", np[i]);
+        int rc = bench_pair(label, p, p, seconds, &prate[i]);
+        shape_source_release(src);
+        if (rc != 0) return 1;
+    }
+    printf("closest  cached time 5000 points / 100 points: %.2f (goal <= 1.5)\n", prate[0] / prate[1]);
     return 0;
 }

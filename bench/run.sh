@@ -18,6 +18,9 @@
 #     and its 3,000), each measured in a process of its own (its peak memory is its
 #     own), and the same objects run by Bullet at 1/60 s (build/bench/bullet_gas,
 #     when libbullet-dev was there to build it);
+#   - a room of one file (issue 39): 100 random objects in a room of 2,000 static
+#     pieces (tiles, bench/room.awk), against the same objects in the same room of
+#     its six faces alone (an empty box);
 #   - the mesh readers (issue 38): a binary STL of 1,000,000 triangles and an OBJ of
 #     600,000, made in the scratch folder (build/bench/bench_mesh), read, and read
 #     with the body built, against `assimp info` where assimp-utils is installed;
@@ -423,6 +426,26 @@ for b in view closest; do
         echo "build/bench/bench_$b is missing: skipped"
     fi
 done
+
+# a room of one file (issue 39): its pieces cost only those near each object
+echo
+echo "Polyhedra from files: a room of many static pieces (simulation only, heap on)"
+rule
+awk -v n=2.5 -v obj="$TMP/room2000.obj" -v scene="$TMP/room2000.vroc" -f bench/room.awk
+awk -v n=0 -v obj="$TMP/room6.obj" -v scene="$TMP/room6.vroc" -f bench/room.awk
+measure room2000 "$TMP/room2000.vroc" --frames "$F" --runs "$R" --min-time "$MT" --heap on
+measure room6 "$TMP/room6.vroc" --frames "$F" --runs "$R" --min-time "$MT" --heap on
+printf '%-34s %14s %14s %12s %14s\n' room "frames/s" "cpu frames/s" collisions/f "pair checks/f"
+for r in room2000 room6; do
+    printf '%-34s %14s %14s %12s %14s\n' "$(if [ $r = room6 ]; then echo "6 faces (an empty box)"; else echo "2,000 tiles"; fi)" \
+        "$(num "$(get "$r" frames_per_s)")" "$(num "$(get "$r" cpu_frames_per_s)")" \
+        "$(get "$r" collisions_per_frame)" "$(get "$r" pair_checks_per_frame)"
+done
+printf 'time with 2,000 pieces / with 6: %s of wall time, %s of processor time (goal <= 1.5)\n' \
+    "$(ratio "$(get room6 frames_per_s)" "$(get room2000 frames_per_s)")" \
+    "$(ratio "$(get room6 cpu_frames_per_s)" "$(get room2000 cpu_frames_per_s)")"
+echo "A room 8 m by 8 m, 6 m high, of one OBJ whose faces face in: 2,000 tiles 0.4 m across, or its"
+echo "six faces; each face a static slab; 100 objects of random 100 (seed 1) in it, 100 frames."
 
 # polyhedra from files (issue 38): the readers against assimp's, on files made here
 echo

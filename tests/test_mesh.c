@@ -3,9 +3,11 @@
  * One box, its corners exact in float32, written as OBJ, binary and ASCII STL,
  * OFF, and ASCII and both binary PLYs, each with its vertices in another order,
  * gives the same hull to the bit and the same mass properties, which are the
- * box's closed forms.  An L-shaped block collides as its hull, whose mass
- * properties the test derives (a box less a triangular prism), and its faces off
- * the hull are counted.  A ball dropped on a static polyhedron read from a file
+ * box's closed forms.  An L-shaped block collides as its hull (its faces off the
+ * hull are counted) with its own mass properties, which the test derives from
+ * its two boxes; read as two groups it is two pieces with the same.  Bodies of
+ * several pieces: a ball in a cup, a ball off a cup's outside, an L thrown into
+ * the hook of another, balls in a room of single faces, slabs.  A ball dropped on a static polyhedron read from a file
  * lands at the closed-form time and bounces as from the same cube.  Every kind of
  * bad file is refused with a message that names the file and the place.  The
  * files are made in memory: the readers parse bytes (the shell's tests read
@@ -214,9 +216,8 @@ static int parse(const buf *b, const char *name, mesh_file *m, char *err, size_t
     return mesh_parse((const unsigned char *)b->s, b->n, name, m, err, errlen);
 }
 
-/* The shape of a polyhedron from b (which must read), at scale k, and its source
- * (which the shape borrows from: free it after the shape). */
-static mesh_source *shape_of(const buf *b, const char *name, vec3 k, shape *s)
+/* The source of text b named name (which must read). */
+static mesh_source *source_of(const buf *b, const char *name)
 {
     mesh_file m;
     char err[512];
@@ -224,6 +225,15 @@ static mesh_source *shape_of(const buf *b, const char *name, vec3 k, shape *s)
     mesh_source *src = mesh_source_make(&m, name, err, sizeof err);
     assert_non_null(src);
     mesh_file_free(&m);
+    return src;
+}
+
+/* The shape of a polyhedron from b (which must read), at scale k, and its source
+ * (which the shape borrows from: free it after the shape). */
+static mesh_source *shape_of(const buf *b, const char *name, vec3 k, shape *s)
+{
+    char err[512];
+    mesh_source *src = source_of(b, name);
     shape_params p = shape_defaults(SHAPE_POLYHEDRON);
     p.src = &src->src;
     p.scale = k;
@@ -354,53 +364,503 @@ static void box_moments(vec3 lo, vec3 hi, double *vol, vec3 *first, mat3 *S)
             S->m[i][j] = i == j ? m2[i] * *vol / len[i] : m1[i] * m1[j] * *vol / (len[i] * len[j]);
 }
 
-static void l_block_collides_as_its_hull(void **state)
+/* ---- bodies of several convex pieces ---- */
+
+/* A box from lo to hi as an OBJ group named g (its faces outward), its corners
+ * counted from *nv + 1. */
+static void obj_box(buf *b, const char *g, vec3 lo, vec3 hi, int *nv)
 {
-    (void)state;
-    buf b = {0};
-    put(&b, L_OBJ, strlen(L_OBJ));
-    shape s;
-    mesh_source *src = shape_of(&b, "L.obj", v3(1, 1, 1), &s);
-    /* the hull: the box [0,2] x [0,1] x [0,2] less the prism over the triangle
-     * (1,2), (2,1), (2,2) in x and z, for y from 0 to 1 */
-    double vb, vt;
-    vec3 fb, ft;
-    mat3 Sb, St;
-    box_moments(v3(0, 0, 0), v3(2, 1, 2), &vb, &fb, &Sb);
-    /* the triangle's moments: the integral of u v over a triangle of area A is
-     * A/12 (sum of u_k v_k + (sum u_k)(sum v_k)) */
-    double tx[3] = {1, 2, 2}, tz[3] = {2, 1, 2}, A = 0.5;
-    double sx = 0, sz = 0, sxx = 0, szz = 0, sxz = 0;
-    for (int k = 0; k < 3; k++) {
-        sx += tx[k], sz += tz[k], sxx += tx[k] * tx[k], szz += tz[k] * tz[k], sxz += tx[k] * tz[k];
-    }
-    double Ixx = A / 12 * (sxx + sx * sx), Izz = A / 12 * (szz + sz * sz), Ixz = A / 12 * (sxz + sx * sz);
-    vt = A;
-    ft = v3(A * sx / 3, A * 0.5, A * sz / 3);
-    St = (mat3){{{Ixx, A * sx / 3 * 0.5, Ixz}, {A * sx / 3 * 0.5, A / 3, A * sz / 3 * 0.5},
-                 {Ixz, A * sz / 3 * 0.5, Izz}}};
-    double vol = vb - vt;
-    vec3 com = v3_scale(v3_sub(fb, ft), 1 / vol);
-    mat3 S;
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) S.m[i][j] = Sb.m[i][j] - St.m[i][j];
-    /* about the centre of mass: S_c = S - V c c^T; I = tr(S_c) E - S_c */
+    putf(b, "g %s\n", g);
+    for (int k = 0; k < 8; k++)
+        putf(b, "v %.17g %.17g %.17g\n", k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+    for (int f = 0; f < 6; f++)
+        putf(b, "f %d %d %d %d\n", *nv + 1 + QUADS[f][0], *nv + 1 + QUADS[f][1], *nv + 1 + QUADS[f][2],
+             *nv + 1 + QUADS[f][3]);
+    *nv += 8;
+}
+
+/* A polyhedron named name from text b in w, of mass mass (-1: static, set before
+ * its file, as a scene does), at x. */
+static body *add_file(world *w, const char *name, const buf *b, double mass, vec3 x)
+{
+    body *p = add(w, name, SHAPE_POLYHEDRON);
+    int i = w->n - 1;
+    char err[512];
+    double num[4] = {mass, 0, 0, 0}; /* (edit_property reads a statement's four numbers) */
+    if (edit_property(w, i, offsetof(body, mass), num, err, sizeof err) != 0) fail_msg("%s", err);
+    if (edit_source(w, i, &source_of(b, name)->src, err, sizeof err) != 0) fail_msg("%s: %s", name, err);
+    p->x = x;
+    return p;
+}
+
+/* The L's exact mass properties: the boxes [0,2] x [0,1] x [0,1] and [0,1] x
+ * [0,1] x [1,2] together, from their moments (I = tr(S_c) E - S_c). */
+static mass_props l_exact(void)
+{
+    double v1, v2;
+    vec3 f1, f2;
+    mat3 S1, S2, S;
+    box_moments(v3(0, 0, 0), v3(2, 1, 1), &v1, &f1, &S1);
+    box_moments(v3(0, 0, 1), v3(1, 1, 2), &v2, &f2, &S2);
+    double vol = v1 + v2;
+    vec3 com = v3_scale(v3_add(f1, f2), 1 / vol);
     double c[3] = {com.x, com.y, com.z}, tr = 0;
     for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) S.m[i][j] -= vol * c[i] * c[j];
+        for (int j = 0; j < 3; j++) S.m[i][j] = S1.m[i][j] + S2.m[i][j] - vol * c[i] * c[j];
     for (int i = 0; i < 3; i++) tr += S.m[i][i];
-    assert_rel(s.mass.volume, 3.5, 1e-15);
-    assert_rel(vol, 3.5, 1e-15);
-    assert_vec_near(s.mass.com, com, 1e-15);
+    mass_props mp = {vol, com, m3_zero()};
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) mp.inertia.m[i][j] = (i == j ? tr : 0) - S.m[i][j];
+    return mp;
+}
+
+static void same_mass(const mass_props *got, const mass_props *want, double rel, const char *what)
+{
+    double size = fabs(want->inertia.m[0][0]) + fabs(want->inertia.m[1][1]) + fabs(want->inertia.m[2][2]);
+    if (!(fabs(got->volume - want->volume) <= rel * want->volume)) fail_msg("%s: volume %.17g, not %.17g", what, got->volume, want->volume);
+    if (!(v3_dist(got->com, want->com) <= rel * v3_len(want->com)))
+        fail_msg("%s: centre of mass off by %g", what, v3_dist(got->com, want->com));
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
-            assert_near(s.mass.inertia.m[i][j], (i == j ? tr : 0) - S.m[i][j], 1e-14);
-    print_message("the L's hull: volume %.17g, centre (%.17g, %.17g, %.17g)\n", s.mass.volume,
+            if (!(fabs(got->inertia.m[i][j] - want->inertia.m[i][j]) <= rel * size))
+                fail_msg("%s: inertia [%d][%d] %.17g, not %.17g", what, i, j, got->inertia.m[i][j],
+                         want->inertia.m[i][j]);
+}
+
+/* An L read as one closed mesh, or as its two convex groups (in either order,
+ * scaled, and moved off the origin), has its own volume, centre of mass and
+ * inertia, to 1e-12; two open groups have their hulls' together. */
+static void l_block_has_its_own_mass_as_one_mesh_or_two_pieces(void **state)
+{
+    (void)state;
+    mass_props want = l_exact();
+    buf one = {0};
+    put(&one, L_OBJ, strlen(L_OBJ));
+    shape s;
+    mesh_source *src = shape_of(&one, "L.obj", v3(1, 1, 1), &s);
+    assert_int_equal(s.pieces, 1);
+    assert_int_equal(s.mass_from, MASS_MESH);
+    same_mass(&s.mass, &want, 1e-12, "the L as one mesh");
+    print_message("the L as one mesh: volume %.17g (3), centre (%.17g, %.17g, %.17g)\n", s.mass.volume,
                   s.mass.com.x, s.mass.com.y, s.mass.com.z);
-    /* its step (two quads: 4 triangles) is not on the hull; a convex file's are */
+    /* it collides as its hull: the step's two quads are off it */
     assert_int_equal(shape_off_hull(&s), 4);
     assert_int_equal(s.hull->nv, 10);
     free_shape(&s, src);
+    free(one.s);
+    /* two groups, each a closed box: two pieces, each its own hull */
+    static const vec3 scales[3] = {{1, 1, 1}, {0.25, 2, 3}, {1e-3, 1e-3, 1e-3}};
+    for (int order = 0; order < 2; order++)
+        for (int k = 0; k < 3; k++) {
+            buf two = {0};
+            int nv = 0;
+            vec3 sh = v3(0.5, -0.25, 1.5); /* the file's origin is not the L's corner */
+            vec3 lo[2] = {v3_add(sh, v3(0, 0, 0)), v3_add(sh, v3(0, 0, 1))};
+            vec3 hi[2] = {v3_add(sh, v3(2, 1, 1)), v3_add(sh, v3(1, 1, 2))};
+            obj_box(&two, "lower", lo[order], hi[order], &nv);
+            obj_box(&two, "upper", lo[1 - order], hi[1 - order], &nv);
+            src = shape_of(&two, "L2.obj", scales[k], &s);
+            assert_int_equal(s.pieces, 2);
+            assert_int_equal(s.mass_from, MASS_MESH);
+            assert_int_equal(shape_off_hull(&s), 0);
+            /* the exact L, moved and scaled */
+            vec3 q = scales[k];
+            double det = q.x * q.y * q.z;
+            mass_props w2 = want;
+            w2.volume *= det;
+            vec3 c = v3_add(want.com, sh);
+            w2.com = v3(c.x * q.x, c.y * q.y, c.z * q.z);
+            /* I about the com scales as: S' = K S K det, I = tr(S) E - S */
+            mat3 S;
+            double tr = want.inertia.m[0][0] + want.inertia.m[1][1] + want.inertia.m[2][2];
+            double qv[3] = {q.x, q.y, q.z};
+            for (int i = 0; i < 3; i++)
+                for (int j = 0; j < 3; j++)
+                    S.m[i][j] = ((i == j ? tr / 2 : 0) - want.inertia.m[i][j]) * qv[i] * qv[j] * det;
+            double tr2 = S.m[0][0] + S.m[1][1] + S.m[2][2];
+            for (int i = 0; i < 3; i++)
+                for (int j = 0; j < 3; j++) w2.inertia.m[i][j] = (i == j ? tr2 : 0) - S.m[i][j];
+            char what[64];
+            snprintf(what, sizeof what, "the L as two groups (order %d, scale %d)", order, k);
+            same_mass(&s.mass, &w2, 1e-12, what);
+            free_shape(&s, src);
+            free(two.s);
+        }
+    /* two groups that are not closed (each box without its top): their hulls'
+     * together */
+    buf open = {0};
+    int nv = 0;
+    obj_box(&open, "lower", v3(0, 0, 0), v3(2, 1, 1), &nv);
+    obj_box(&open, "upper", v3(0, 0, 1), v3(1, 1, 2), &nv);
+    char *top1 = strstr(open.s, "f 5 6 8 7\n");
+    assert_non_null(top1);
+    memcpy(top1, "#", 1);
+    src = shape_of(&open, "L-open.obj", v3(1, 1, 1), &s);
+    assert_int_equal(s.pieces, 2);
+    assert_int_equal(s.mass_from, MASS_PIECES);
+    same_mass(&s.mass, &want, 1e-12, "the L as two open groups");
+    free_shape(&s, src);
+    free(open.s);
+}
+
+/* Two boxes, the second shifted dx along x (1: they share a face; 3: apart), as
+ * a file of form: 0 OBJ with an o for each, 1 OBJ of one group, 2 ASCII STL of a
+ * solid for each, 3 binary STL, 4 OFF, 5 ASCII PLY, 6 binary PLY. */
+static void two_boxes(buf *b, int form, double dx)
+{
+    vec3 v[16];
+    for (int k = 0; k < 16; k++) v[k] = v3_add(corner(k % 8), v3(k < 8 ? 0 : dx, 0, 0));
+    int tri[12][3];
+    box_triangles(tri);
+    if (form <= 1) {
+        for (int box = 0; box < 2; box++) {
+            if (form == 0 || box == 0) putf(b, "o box%d\n", box + 1);
+            for (int k = 8 * box; k < 8 * box + 8; k++) putf(b, "v %.9g %.9g %.9g\n", v[k].x, v[k].y, v[k].z);
+            for (int f = 0; f < 6; f++)
+                putf(b, "f %d %d %d %d\n", QUADS[f][0] + 8 * box + 1, QUADS[f][1] + 8 * box + 1,
+                     QUADS[f][2] + 8 * box + 1, QUADS[f][3] + 8 * box + 1);
+        }
+    } else if (form == 2) {
+        for (int box = 0; box < 2; box++) {
+            putf(b, "solid box%d\n", box + 1);
+            for (int t = 0; t < 12; t++) {
+                putf(b, "facet normal 0 0 0\nouter loop\n");
+                for (int k = 0; k < 3; k++) {
+                    vec3 c = v[8 * box + tri[t][k]];
+                    putf(b, "vertex %.9g %.9g %.9g\n", c.x, c.y, c.z);
+                }
+                putf(b, "endloop\nendfacet\n");
+            }
+            putf(b, "endsolid box%d\n", box + 1);
+        }
+    } else if (form == 3) {
+        char h[80] = "two boxes";
+        put(b, h, 80);
+        put_u32(b, 24, false);
+        for (int t = 0; t < 24; t++) {
+            for (int k = 0; k < 3; k++) put_f32(b, 0, false);
+            for (int k = 0; k < 3; k++) {
+                vec3 c = v[8 * (t / 12) + tri[t % 12][k]];
+                put_f32(b, c.x, false);
+                put_f32(b, c.y, false);
+                put_f32(b, c.z, false);
+            }
+            put(b, "\0\0", 2);
+        }
+    } else {
+        if (form == 4) putf(b, "OFF\n16 12 0\n");
+        else
+            putf(b, "ply\nformat %s 1.0\nelement vertex 16\nproperty float x\nproperty float y\n"
+                    "property float z\nelement face 12\nproperty list uchar int vertex_indices\n"
+                    "end_header\n", form == 5 ? "ascii" : "binary_little_endian");
+        for (int k = 0; k < 16; k++) {
+            if (form == 6) {
+                put_f32(b, v[k].x, false);
+                put_f32(b, v[k].y, false);
+                put_f32(b, v[k].z, false);
+            } else {
+                putf(b, "%.9g %.9g %.9g\n", v[k].x, v[k].y, v[k].z);
+            }
+        }
+        for (int f = 0; f < 12; f++) {
+            if (form == 6) put(b, "\4", 1);
+            else putf(b, "4");
+            for (int k = 0; k < 4; k++) {
+                int i = QUADS[f % 6][k] + 8 * (f / 6);
+                if (form == 6) put_u32(b, (uint32_t)i, false);
+                else putf(b, " %d", i);
+            }
+            if (form != 6) putf(b, "\n");
+        }
+    }
+}
+
+/* Pieces: each OBJ group and each ASCII STL solid is one; in formats without
+ * groups (binary STL, OFF, PLY, or an OBJ of one group) each connected
+ * component of the faces, after welding, is one.  Two boxes apart are two
+ * pieces in every format; sharing a face, they are still two groups, but one
+ * component.  Either way the volume is the two boxes' and the centre of mass
+ * their middle. */
+static void pieces_are_groups_or_components(void **state)
+{
+    (void)state;
+    static const char *names[7] = {"two.obj", "one-group.obj", "two.stl", "two-binary.stl",
+                                   "two.off", "two.ply", "two-binary.ply"};
+    static const bool groups[7] = {true, false, true, false, false, false, false};
+    for (int form = 0; form < 7; form++)
+        for (int touch = 0; touch < 2; touch++) {
+            double dx = touch ? 2 * H.x : 3;
+            buf b = {0};
+            two_boxes(&b, form, dx);
+            shape s;
+            mesh_source *src = shape_of(&b, names[form], v3(1, 1, 1), &s);
+            int want = groups[form] || !touch ? 2 : 1;
+            if (s.pieces != want)
+                fail_msg("%s, dx = %g: %d pieces, not %d", names[form], dx, s.pieces, want);
+            double vol = 2 * 8 * H.x * H.y * H.z;
+            assert_rel(s.mass.volume, vol, 1e-12);
+            vec3 com = v3_add(C, v3(dx / 2, 0, 0));
+            assert_true(v3_dist(s.mass.com, com) <= 1e-12 * v3_len(com));
+            free_shape(&s, src);
+            free(b.s);
+        }
+}
+
+/* A cup: a base (a prism of 2n sides) and n wall pieces, inner radius ri, outer
+ * ro, height h, base thickness tb, as OBJ groups. */
+static void cup_obj(buf *b, int n, double ri, double ro, double h, double tb)
+{
+    const double PI = 3.14159265358979323846;
+    int nv = 0;
+    putf(b, "g base\n");
+    for (int z = 0; z < 2; z++)
+        for (int k = 0; k < 2 * n; k++)
+            putf(b, "v %.17g %.17g %.17g\n", ro * cos(PI * k / n), ro * sin(PI * k / n), z ? tb : 0.0);
+    putf(b, "f");
+    for (int k = 2 * n; k >= 1; k--) putf(b, " %d", k);
+    putf(b, "\nf");
+    for (int k = 1; k <= 2 * n; k++) putf(b, " %d", 2 * n + k);
+    putf(b, "\n");
+    for (int k = 1; k <= 2 * n; k++)
+        putf(b, "f %d %d %d %d\n", k, k % (2 * n) + 1, 2 * n + k % (2 * n) + 1, 2 * n + k);
+    nv = 4 * n;
+    for (int k = 0; k < n; k++) {
+        double t0 = 2 * PI * k / n, t1 = 2 * PI * (k + 1) / n;
+        putf(b, "g wall%d\n", k + 1);
+        double r[2] = {ri, ro}, t[2] = {t0, t1}, z[2] = {tb, h};
+        /* corner (radius i, angle j, height l) is nv + 1 + i + 2 j + 4 l */
+        for (int l = 0; l < 2; l++)
+            for (int j = 0; j < 2; j++)
+                for (int i = 0; i < 2; i++)
+                    putf(b, "v %.17g %.17g %.17g\n", r[i] * cos(t[j]), r[i] * sin(t[j]), z[l]);
+        int v = nv + 1;
+        putf(b, "f %d %d %d %d\n", v + 0, v + 2, v + 3, v + 1); /* bottom */
+        putf(b, "f %d %d %d %d\n", v + 4, v + 5, v + 7, v + 6); /* top */
+        putf(b, "f %d %d %d %d\n", v + 0, v + 4, v + 6, v + 2); /* inner */
+        putf(b, "f %d %d %d %d\n", v + 1, v + 3, v + 7, v + 5); /* outer */
+        putf(b, "f %d %d %d %d\n", v + 0, v + 1, v + 5, v + 4); /* side at t0 */
+        putf(b, "f %d %d %d %d\n", v + 2, v + 6, v + 7, v + 3); /* side at t1 */
+        nv += 8;
+    }
+}
+
+/* A ball dropped into a cup of convex pieces standing on a floor comes to rest
+ * inside, on its base, and is never outside its inner wall on the way; for
+ * several cups, balls, drop heights and places over the base. */
+static void a_ball_dropped_into_a_cup_rests_on_its_base(void **state)
+{
+    (void)state;
+    static const struct {
+        int n;
+        double ri, ball, h, off, e;
+    } cases[] = {{12, 0.05, 0.025, 0.3, 0.0, 0.5}, {12, 0.05, 0.03, 0.5, 0.012, 0.3},
+                 {8, 0.08, 0.02, 0.2, 0.04, 0.6}, {16, 0.04, 0.035, 0.4, 0.003, 0.2}};
+    for (size_t c = 0; c < sizeof cases / sizeof *cases; c++) {
+        double ri = cases[c].ri, ro = ri + 0.01, hc = 2 * ri, tb = 0.01, r = cases[c].ball;
+        world w;
+        world_init(&w);
+        w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
+        w.set.max_angular = 1000;
+        body *floor = add_static_box(&w, "floor", v3(1, 1, 0.05));
+        floor->x = v3(0, 0, -0.05);
+        buf b = {0};
+        cup_obj(&b, cases[c].n, ri, ro, hc, tb);
+        body *cup = add_file(&w, "cup", &b, 0.3, v3(0.1, -0.2, 1e-4));
+        free(b.s);
+        assert_int_equal(cup->shape.pieces, cases[c].n + 1);
+        cup->elasticity = 0.3;
+        body *ball = add_ball(&w, "ball", r);
+        ball->mass = 0.05;
+        body_set_mass(ball, 0.05);
+        ball->elasticity = cases[c].e;
+        ball->x = v3(0.1 + cases[c].off, -0.2 + 0.5 * cases[c].off, tb + r + cases[c].h);
+        char err[256];
+        double worst = 0;
+        bool in = false;
+        for (int f = 0; f < 100; f++) {
+            assert_int_equal(sim_frame(&w, err, sizeof err), 0);
+            /* the ball's centre in the cup's axes */
+            vec3 p = q_unrotate(cup->q, v3_sub(ball->x, cup->x));
+            double rad = sqrt(p.x * p.x + p.y * p.y);
+            if (p.z < hc) in = true;
+            /* inside the inner wall (a polygon of n sides inside the circle ri) */
+            if (in) worst = fmax(worst, rad + r * cos(3.14159265358979 / cases[c].n) - ri);
+            if (in && !(p.z < hc + r)) fail_msg("cup %zu: the ball left the cup (height %g)", c, p.z);
+        }
+        vec3 p = q_unrotate(cup->q, v3_sub(ball->x, cup->x));
+        print_message("cup %zu: at rest %d (mode %d), height over the base %.3g (radius %g), worst "
+                      "reach past the wall %.3g, speed %.3g\n", c, ball->state == STATE_RESTING,
+                      (int)ball->mode, p.z - tb, r, worst, v3_len(ball->v));
+        assert_true(worst <= 1e-6);
+        assert_int_equal(ball->state, STATE_RESTING);
+        assert_near(p.z, tb + r, 1e-6);
+        world_free(&w);
+    }
+}
+
+/* A ball thrown at a wall piece of a still cup from outside, along the piece's
+ * outward normal, at elasticity 1, comes straight back at the same speed: it met
+ * that piece's outer face and nothing else. */
+static void a_ball_beside_a_cup_bounces_off_its_outside(void **state)
+{
+    (void)state;
+    const double PI = 3.14159265358979323846;
+    for (int k = 0; k < 3; k++) {
+        world w;
+        world_init(&w);
+        buf b = {0};
+        int n = 12;
+        cup_obj(&b, n, 0.05, 0.06, 0.1, 0.01);
+        body *cup = add_file(&w, "cup", &b, -1, v3(0, 0, 0));
+        free(b.s);
+        body *ball = add_ball(&w, "ball", 0.02);
+        /* the middle of wall piece k's outer face, and its normal */
+        double t = 2 * PI * (k + 0.5) / n, ap = 0.06 * cos(PI / n);
+        vec3 nrm = v3(cos(t), sin(t), 0);
+        ball->x = v3_add(v3_scale(nrm, ap + 0.02 + 0.3), v3(0, 0, 0.055));
+        ball->v = v3_scale(nrm, -2.0);
+        char err[256];
+        for (int f = 0; f < 5; f++) assert_int_equal(sim_frame(&w, err, sizeof err), 0);
+        assert_vec_near(ball->v, v3_scale(nrm, 2.0), 1e-9);
+        /* where it turned: on the outer face, 0.3 m in (0.15 s), back out since */
+        assert_vec_near(ball->x, v3_add(v3_scale(nrm, ap + 0.02 + 2.0 * 0.5 - 0.3), v3(0, 0, 0.055)), 1e-9);
+        (void)cup;
+        world_free(&w);
+    }
+}
+
+/* A static L (two pieces) and a moving L (two pieces) thrown along the hook of
+ * the first so that both its pieces meet both of the static one's at once, with
+ * no friction and elasticity 1: the contacts are answered together (one
+ * collision), and energy is kept to 1e-6. */
+static void an_l_thrown_along_the_hook_of_an_l_keeps_its_energy(void **state)
+{
+    (void)state;
+    static const double speeds[3][2] = {{-1, -1}, {-2, -0.5}, {-0.7, -1.9}};
+    for (int c = 0; c < 3; c++) {
+        world w;
+        world_init(&w);
+        buf b = {0};
+        int nv = 0;
+        /* the static hook: a floor bar and a wall at its left */
+        obj_box(&b, "bar", v3(0, 0, 0), v3(3, 1, 0.5), &nv);
+        obj_box(&b, "wall", v3(0, 0, 0.5), v3(0.5, 1, 2), &nv);
+        body *hook = add_file(&w, "hook", &b, -1, v3(0, 0, 0));
+        free(b.s);
+        /* the moving L: the same shape, half as large, its corner 0.2 m off the
+         * hook's inner corner along the throw, so that its bar meets the hook's
+         * bar and its wall the hook's wall at the same instant */
+        buf m = {0};
+        nv = 0;
+        obj_box(&m, "bar", v3(0, 0, 0), v3(1.5, 0.5, 0.25), &nv);
+        obj_box(&m, "wall", v3(0, 0, 0.25), v3(0.25, 0.5, 1), &nv);
+        vec3 u = v3(speeds[c][0], 0, speeds[c][1]);
+        vec3 at = v3(0.5, 0.25, 0.5);
+        body *l = add_file(&w, "l", &m, 2, v3_sub(at, v3_scale(u, 0.2)));
+        free(m.s);
+        assert_int_equal(hook->shape.pieces, 2);
+        assert_int_equal(l->shape.pieces, 2);
+        l->v = u;
+        double e0 = body_energy(l);
+        char err[256];
+        long collisions = 0;
+        for (int f = 0; f < 3; f++) {
+            assert_int_equal(sim_frame(&w, err, sizeof err), 0);
+            collisions += w.nevents;
+        }
+        double e1 = body_energy(l);
+        print_message("throw %d: %ld collision(s), v (%.6f, %.6f, %.6f), energy %.12g -> %.12g\n", c,
+                      collisions, l->v.x, l->v.y, l->v.z, e0, e1);
+        assert_true(collisions == 1);
+        assert_true(fabs(e1 - e0) <= 1e-6 * e0);
+        /* both pieces pushed: it leaves the corner along both axes */
+        assert_true(l->v.x > 0 && l->v.z > 0);
+        world_free(&w);
+    }
+}
+
+/* A room of one OBJ file whose walls, floor and ceiling are single faces facing
+ * in (a closed surface facing inward: no solid): each face is a slab behind it,
+ * and balls thrown inside stay inside for 60 s; with few objects (every pair
+ * near) and with many (the static tree, piece by piece). */
+static void balls_stay_inside_a_room_of_single_faces(void **state)
+{
+    (void)state;
+    static const char *ROOM =
+        "o room\nv -2 -1.5 0\nv 2 -1.5 0\nv 2 1.5 0\nv -2 1.5 0\n"
+        "v -2 -1.5 2.5\nv 2 -1.5 2.5\nv 2 1.5 2.5\nv -2 1.5 2.5\n"
+        "f 1 2 3 4\nf 5 8 7 6\nf 1 5 6 2\nf 2 6 7 3\nf 3 7 8 4\nf 4 8 5 1\n";
+    static const int counts[2] = {6, 30};
+    for (int c = 0; c < 2; c++) {
+        world w;
+        world_init(&w);
+        w.set.force = (dir_amount){v3(0, 0, -1), 9.8};
+        w.set.max_angular = 1000;
+        buf b = {0};
+        put(&b, ROOM, strlen(ROOM));
+        body *room = add_file(&w, "room", &b, -1, v3(0, 0, 0));
+        free(b.s);
+        assert_int_equal(room->shape.pieces, 6);
+        assert_int_equal(room->shape.slabs, 6);
+        unsigned long long seed = 7 + (unsigned long long)c;
+        body *balls[30];
+        for (int k = 0; k < counts[c]; k++) {
+            char name[16];
+            snprintf(name, sizeof name, "ball%d", k);
+            double r = urand(&seed, 0.05, 0.15);
+            balls[k] = add_ball(&w, name, r);
+            balls[k]->elasticity = urand(&seed, 0.5, 1);
+            balls[k]->x = v3(-1.6 + 3.2 * (k % 6) / 5.0, -1 + 2.0 * (k / 6 % 5) / 4.0, 1.2 + 0.2 * (k % 2));
+            balls[k]->v = v3(urand(&seed, -6, 6), urand(&seed, -6, 6), urand(&seed, -3, 6));
+        }
+        char err[256];
+        double worst = -1;
+        for (int f = 0; f < 600; f++) {
+            assert_int_equal(sim_frame(&w, err, sizeof err), 0);
+            for (int k = 0; k < counts[c]; k++) {
+                vec3 p = balls[k]->x;
+                double r = balls[k]->sp.radius;
+                double out = fmax(fmax(fabs(p.x) + r - 2, fabs(p.y) + r - 1.5), fmax(r - p.z, p.z + r - 2.5));
+                worst = fmax(worst, out);
+                if (!(out <= 1e-6)) fail_msg("%d balls: ball%d left the room at frame %d: (%g, %g, %g)",
+                                             counts[c], k, f, p.x, p.y, p.z);
+            }
+        }
+        print_message("%d balls in the room for 60 s: %ld collisions, deepest past a wall %.3g m\n",
+                      counts[c], w.st.collisions, worst);
+        world_free(&w);
+    }
+}
+
+/* A piece that closes no volume: refused on a moving object, with the way to a
+ * static one; a slab per face on a static one; and a slab's thickness follows
+ * `thickness`. */
+static void open_pieces_are_slabs_only_when_static(void **state)
+{
+    (void)state;
+    static const char *QUAD = "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n";
+    buf b = {0};
+    put(&b, QUAD, strlen(QUAD));
+    mesh_source *src = source_of(&b, "floor.obj");
+    shape_params p = shape_defaults(SHAPE_POLYHEDRON);
+    p.src = &src->src;
+    shape s;
+    char err[512];
+    assert_int_equal(shape_build(&s, &p, err, sizeof err), -1);
+    print_message("%s\n", err);
+    assert_non_null(strstr(err, "mass = -1 before file"));
+    p.fixed = true;
+    for (int k = 0; k < 2; k++) {
+        p.thickness = k ? 0.5 : 0.02;
+        assert_int_equal(shape_build(&s, &p, err, sizeof err), 0);
+        assert_int_equal(s.slabs, 1);
+        /* behind the face, opposite its normal (+z) */
+        assert_near(s.box_lo.z, -p.thickness, 1e-15);
+        assert_near(s.box_hi.z, 0, 1e-15);
+        assert_rel(s.mass.volume, 4 * p.thickness, 1e-14);
+        shape_free(&s);
+    }
+    shape_source_release(&src->src);
     free(b.s);
 }
 
@@ -748,7 +1208,13 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(one_box_in_every_format_gives_one_hull),
-        cmocka_unit_test(l_block_collides_as_its_hull),
+        cmocka_unit_test(l_block_has_its_own_mass_as_one_mesh_or_two_pieces),
+        cmocka_unit_test(pieces_are_groups_or_components),
+        cmocka_unit_test(a_ball_dropped_into_a_cup_rests_on_its_base),
+        cmocka_unit_test(a_ball_beside_a_cup_bounces_off_its_outside),
+        cmocka_unit_test(an_l_thrown_along_the_hook_of_an_l_keeps_its_energy),
+        cmocka_unit_test(balls_stay_inside_a_room_of_single_faces),
+        cmocka_unit_test(open_pieces_are_slabs_only_when_static),
         cmocka_unit_test(a_ball_lands_on_a_file_as_on_a_cube),
         cmocka_unit_test(obj_forms_groups_and_continuations),
         cmocka_unit_test(off_headers),

@@ -22,6 +22,7 @@
 #include "view/png_out.h"
 #include "view/view.h"
 #include "core/world.h"
+#include "mesh/meshfile.h"
 
 #define TW 160
 #define TH 128
@@ -453,6 +454,46 @@ static void test_real(void **state)
     free(rgb);
 }
 
+/* hulls = on: a polyhedron of two pieces (two boxes side by side, read from an
+ * OBJ of two groups) gets white wire frames over its green faces; off, none;
+ * and the other objects are drawn as before. */
+static void test_hulls(void **state)
+{
+    fixture *f = *state;
+    static const char *TWO =
+        "g a\nv -0.3 -0.1 -0.1\nv 0 -0.1 -0.1\nv -0.3 0.1 -0.1\nv 0 0.1 -0.1\n"
+        "v -0.3 -0.1 0.1\nv 0 -0.1 0.1\nv -0.3 0.1 0.1\nv 0 0.1 0.1\n"
+        "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n"
+        "g b\nv 0.05 -0.1 -0.1\nv 0.3 -0.1 -0.1\nv 0.05 0.1 -0.1\nv 0.3 0.1 -0.1\n"
+        "v 0.05 -0.1 0.1\nv 0.3 -0.1 0.1\nv 0.05 0.1 0.1\nv 0.3 0.1 0.1\n"
+        "f 9 11 12 10\nf 13 14 16 15\nf 9 10 14 13\nf 11 15 16 12\nf 9 13 15 11\nf 10 12 16 14\n";
+    mesh_file m;
+    char err[256];
+    assert_int_equal(mesh_parse((const unsigned char *)TWO, strlen(TWO), "two.obj", &m, err, sizeof err), 0);
+    mesh_source *src = mesh_source_make(&m, "two.obj", err, sizeof err);
+    mesh_file_free(&m);
+    assert_non_null(src);
+    body *p = add(f, "two", SHAPE_POLYHEDRON, v3(0, 1.5, 0), 0, 200, 0);
+    p->sp.src = &src->src;
+    build(p);
+    body_set_rotation(p, v3(1, 0.5, 0.3), 0.6);
+    assert_int_equal(p->shape.pieces, 2);
+    long white[2];
+    for (int on = 0; on < 2; on++) {
+        f->vs.hulls = on;
+        refresh_ok(f, 20 + on);
+        unsigned char *rgb = read_frame(f, 20 + on, "left", TW, TH);
+        white[on] = 0;
+        for (size_t i = 0; i < (size_t)TW * TH; i++)
+            white[on] += rgb[3 * i] == 255 && rgb[3 * i + 1] == 255 && rgb[3 * i + 2] == 255;
+        assert_true(coverage(rgb, TW, TH, NULL) > 500);
+        free(rgb);
+    }
+    print_message("white pixels: %ld with hulls off, %ld on\n", white[0], white[1]);
+    assert_int_equal(white[0], 0);
+    assert_true(white[1] > 50);
+}
+
 /* An object whose shape is not built is skipped. */
 static void test_unbuilt_skipped(void **state)
 {
@@ -614,6 +655,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_sbs, setup, teardown),
         cmocka_unit_test_setup_teardown(test_anaglyph, setup, teardown),
         cmocka_unit_test_setup_teardown(test_mono, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_hulls, setup, teardown),
         cmocka_unit_test_setup_teardown(test_real, setup, teardown),
         cmocka_unit_test_setup_teardown(test_unbuilt_skipped, setup, teardown),
         cmocka_unit_test_setup_teardown(test_output_unwritable, setup, teardown),

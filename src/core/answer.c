@@ -267,6 +267,7 @@ static void stay_or_part(world *w, const collision *c)
     pair *p = c->p;
     double still = 1e3 * tol_speed(w->bodies[p->a], w->bodies[p->b]);
     p->hit = w->pairs.hits[c->k].cache;
+    pieces_hit_from_found(pair_pieces(w, p));
     for (int r = 0; r < c->own && c->held < 0; r++) {
         /* (a lossy contact that opens too slowly to see a rebound: none) */
         double open = c->rows[r].e < 1 || c->e < 1 ? SIM_BOUNCE_SPEED : still;

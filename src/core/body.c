@@ -6,6 +6,8 @@
  */
 #include "body.h"
 
+#include "pieces.h"
+
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
@@ -162,14 +164,6 @@ double body_energy(const body *b)
     return 0.5 * b->mass * v3_len2(b->v) + 0.5 * v3_dot(b->w, b->L);
 }
 
-/* Canonical order of a pair: by name, then by address. */
-static bool body_before(const body *a, const body *b)
-{
-    int c = strcmp(a->name, b->name);
-    if (c != 0) return c < 0;
-    return (uintptr_t)a <= (uintptr_t)b;
-}
-
 static closest_result distance_of(const body *a, const body *b, closest_cache *cache, bool depth)
 {
     closest_result r;
@@ -177,6 +171,7 @@ static closest_result distance_of(const body *a, const body *b, closest_cache *c
         closest_invalid(&r);
         return r;
     }
+    if (body_compound(a) || body_compound(b)) return pieces_distance(a, b, NULL, PIECES_PEEK, depth);
     closest_proxy pa = shape_proxy(&a->shape, a->x, a->q), pb = shape_proxy(&b->shape, b->x, b->q);
     if (body_before(a, b))
         return depth ? closest_distance(&pa, &pb, cache) : closest_distance_apart(&pa, &pb, cache);

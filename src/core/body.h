@@ -16,6 +16,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "closest.h"
@@ -139,7 +140,9 @@ void body_update_w(body *b);
 double body_energy(const body *b);
 
 /* Distance between bodies a and b from their shape, x and q (closest.h).  cache
- * (may be NULL) gives the features to start from and receives the new ones.  The
+ * (may be NULL) gives the features to start from and receives the new ones; for
+ * bodies of several pieces it is not used: the least over every pair of their
+ * pieces (pieces.h), each from none.  The
  * pair is computed in a canonical order (by name, then by address) so that
  * swapping a and b mirrors the result exactly (pa and pb, fa and fb swapped,
  * normal negated), also when the closest features are not unique.  A body whose
@@ -149,6 +152,14 @@ closest_result body_distance(const body *a, const body *b, closest_cache *cache)
 
 /* The same as closest_distance_apart: no penetration estimate. */
 closest_result body_distance_apart(const body *a, const body *b, closest_cache *cache);
+
+/* The canonical order of a pair (body_distance): by name, then by address. */
+static inline bool body_before(const body *a, const body *b)
+{
+    int c = strcmp(a->name, b->name);
+    if (c != 0) return c < 0;
+    return (uintptr_t)a <= (uintptr_t)b;
+}
 
 /* A type name: "sphere", "cube", "superquadric", "polyhedron". */
 const char *body_type_name(shape_kind kind);

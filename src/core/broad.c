@@ -64,10 +64,10 @@ static double slack(const body *b, vec3 c, double reach)
     return SIM_TOUCH + SIM_ROUND_REL * b->shape.r_out + 1e-9 * (b->shape.r_out + m + reach);
 }
 
-/* The box of object b's shape where it stands (its body-axes box turned). */
-static aabb still_box(const body *b)
+/* The box from lo to hi in object b's axes, turned and placed as b stands, and
+ * widened by its slack. */
+static aabb turned_box(const body *b, vec3 lo, vec3 hi)
 {
-    vec3 lo = b->shape.box_lo, hi = b->shape.box_hi;
     vec3 mid = v3_scale(v3_add(lo, hi), 0.5), half = v3_scale(v3_sub(hi, lo), 0.5);
     mat3 r = m3_from_quat(b->q);
     vec3 c = v3_add(b->x, m3_mulv(r, mid)), e;
@@ -77,6 +77,9 @@ static aabb still_box(const body *b)
     aabb a = {v3_sub(c, e), v3_add(c, e)};
     return box_grow(a, slack(b, c, 0)); /* (|e| <= the outer radius) */
 }
+
+/* The box of object b's shape where it stands (its body-axes box turned). */
+static aabb still_box(const body *b) { return turned_box(b, b->shape.box_lo, b->shape.box_hi); }
 
 /* Where a parabola x0 + v s + a s^2 / 2 goes for s in [s0, s1]: its lowest and
  * highest. */
@@ -111,6 +114,12 @@ static aabb swept_box(const body *b, const flight *f, double t0, double t1, doub
     sweep1(c.z, f->v0.z, acc.z, s0, s1, &a.lo.z, &a.hi.z);
     double reach = v3_len(f->v0) * s1 + v3_len(acc) * s1 * s1 + r;
     return box_grow(a, r + slack(b, c, reach) + more);
+}
+
+/* The box of piece k of static object b of several pieces, as still_box. */
+static aabb piece_box(const body *b, int k)
+{
+    return turned_box(b, b->shape.piece[k].box_lo, b->shape.piece[k].box_hi);
 }
 
 /* The box a moving object's sphere needs where it stands. */
@@ -407,23 +416,98 @@ void broad_free(broad_phase *bp)
     free(bp->until);
     free(bp->stack);
     free(bp->found);
+    free(bp->item);
+    free(bp->first_item);
     broad_init(bp);
 }
 
+static int cmp_int(const void *x, const void *y)
+{
+    int a = *(const int *)x, b = *(const int *)y;
+    return (a > b) - (a < b);
+}
+
+/* True when static object j, of several pieces, has an item in the sorted
+ * found items f (n of them). */
+static bool found_body(const broad_phase *bp, const int *f, int n, int j)
+{
+    int lo = 0, hi = n;
+    while (lo < hi) {
+        int mid = lo + (hi - lo) / 2;
+        if (bp->item[f[mid]].body < j) lo = mid + 1;
+        else hi = mid;
+    }
+    return lo < n && bp->item[f[lo]].body == j;
+}
+
+/* The pieces of static object j (several) whose boxes meet box, into out: their
+ * count. */
+static int pieces_meeting(const broad_phase *bp, const world *w, int j, aabb box, int *out)
+{
+    int n = 0;
+    for (int k = 0; k < w->bodies[j]->shape.pieces; k++)
+        if (box_meets(bp->item[bp->first_item[j] + k].box, box)) out[n++] = k;
+    return n;
+}
+
 /* Object i's pairs with the objects of tree t whose boxes meet its box (those of
- * the others not static when i is).  Returns 0 or -1. */
+ * the others not static when i is): a static object of several pieces with the
+ * pieces whose boxes meet it.  Returns 0 or -1.  (The static tree's items found
+ * stay in bp->found, sorted.) */
 static int meet(world *w, int i, const broad_tree *t)
 {
     broad_phase *bp = &w->broad;
     if (tree_query(bp, t, bp->box[i]) != 0) return -1;
-    for (int k = 0; k < bp->nfound; k++) {
-        int j = bp->found[k];
-        if (j != i && pair_near(w, i, j) != 0) return -1;
+    if (t == &bp->fixed) {
+        /* whole objects as the tree gives them; then the pieces, in order: by
+         * object, then piece */
+        for (int k = 0; k < bp->nfound; k++) {
+            const broad_item *it = &bp->item[bp->found[k]];
+            if (it->piece < 0 && pair_near(w, i, it->body) != 0) return -1;
+        }
+        qsort(bp->found, (size_t)bp->nfound, sizeof *bp->found, cmp_int);
+        for (int k = 0; k < bp->nfound;) {
+            const broad_item *it = &bp->item[bp->found[k]];
+            int j = it->body, m = 1;
+            if (it->piece < 0) {
+                k++;
+                continue;
+            }
+            while (k + m < bp->nfound && bp->item[bp->found[k + m]].body == j) m++;
+            /* (the found items' pieces, in place of their items) */
+            int *pc = &bp->found[k];
+            int *tmp = malloc((size_t)m * sizeof *tmp);
+            if (!tmp) return -1;
+            for (int q = 0; q < m; q++) tmp[q] = bp->item[pc[q]].piece;
+            int rc = pair_near_pieces(w, i, j, tmp, m);
+            free(tmp);
+            if (rc != 0) return -1;
+            k += m;
+        }
+        return 0;
     }
+    bool compound = body_is_static(w->bodies[i]) && body_compound(w->bodies[i]);
+    int *pc = NULL;
+    if (compound && !(pc = malloc((size_t)w->bodies[i]->shape.pieces * sizeof *pc))) return -1;
+    for (int k = 0; k < bp->nfound; k++) {
+        int j = bp->found[k], n;
+        if (j == i) continue;
+        if (!compound) {
+            if (pair_near(w, i, j) != 0) return -1;
+        } else if ((n = pieces_meeting(bp, w, i, bp->box[j], pc)) > 0 &&
+                   pair_near_pieces(w, j, i, pc, n) != 0) {
+            free(pc);
+            return -1;
+        }
+    }
+    free(pc);
     return 0;
 }
 
-static int build_trees(world *w);
+static int build(world *w, bool fixed);
+
+/* Both trees anew. */
+static int build_trees(world *w) { return build(w, true); }
 
 /* Object i has a new box: it goes into its tree, its pairs with the boxes it now
  * meets are made, and those with the boxes it no longer meets end.  Returns 0 or
@@ -432,46 +516,110 @@ static int refit(world *w, int i, aabb box)
 {
     broad_phase *bp = &w->broad;
     bool fixed = body_is_static(w->bodies[i]);
-    broad_tree *t = fixed ? &bp->fixed : &bp->moving;
+    broad_tree *t = &bp->moving;
     bp->box[i] = box;
-    if (bp->leaf[i] >= 0 && !fixed) {
-        tree_enlarge(t, bp->leaf[i], box);
-    } else {
-        if (bp->leaf[i] >= 0) tree_remove(t, bp->leaf[i]);
-        if ((bp->leaf[i] = tree_insert(t, box, i)) < 0) return -1;
-    }
     bp->refits++;
+    if (fixed && body_compound(w->bodies[i])) {
+        /* (a command moved it: the static tree anew, its pieces' boxes too) */
+        if (build_trees(w) != 0) return -1;
+    } else if (fixed) {
+        int it = bp->first_item[i];
+        bp->item[it].box = box;
+        if (bp->leaf[i] >= 0) tree_remove(&bp->fixed, bp->leaf[i]);
+        if ((bp->leaf[i] = tree_insert(&bp->fixed, box, it)) < 0) return -1;
+    } else if (bp->leaf[i] >= 0) {
+        tree_enlarge(t, bp->leaf[i], box);
+    } else if ((bp->leaf[i] = tree_insert(t, box, i)) < 0) {
+        return -1;
+    }
     /* the boxes of the tree only grow: once as many boxes as there are objects
      * were made again, the tree is built anew */
-    if (++bp->since_build > BROAD_REBUILD * w->n && build_trees(w) != 0) return -1;
+    if (++bp->since_build > BROAD_REBUILD * w->n && build(w, false) != 0) return -1;
     if (meet(w, i, &bp->moving) != 0 || (!fixed && meet(w, i, &bp->fixed) != 0)) return -1;
     /* (backwards: ending a pair takes it out of the list) */
     const pair_adj *adj = &w->pairs.adj[i];
     for (int k = adj->n - 1; k >= 0; k--) {
         const pair_link *l = &adj->l[k];
         if (k >= adj->n || !w->pairs.p[l->slot].near) continue;
-        if (!box_meets(box, bp->box[l->other])) pair_far(w, l->slot);
+        const body *o = w->bodies[l->other];
+        bool apart = !box_meets(box, bp->box[l->other]);
+        if (!apart && !fixed && body_is_static(o) && body_compound(o))
+            apart = !found_body(bp, bp->found, bp->nfound, l->other);
+        if (!apart && fixed && body_compound(w->bodies[i])) {
+            int dummy_n = 0;
+            for (int q = 0; q < w->bodies[i]->shape.pieces && dummy_n == 0; q++)
+                dummy_n = box_meets(bp->item[bp->first_item[i] + q].box, bp->box[l->other]);
+            apart = dummy_n == 0;
+        }
+        if (apart) pair_far(w, l->slot);
     }
     return 0;
 }
 
-/* Both trees anew from the boxes, top down (a better tree than one made by
- * insertions); the refits count starts again.  Returns 0 or -1. */
-static int build_trees(world *w)
+/* The static tree's items: each static object's box, or its pieces' boxes.
+ * Returns 0 or -1. */
+static int make_items(world *w)
 {
     broad_phase *bp = &w->broad;
-    int *obj = malloc((size_t)(w->n ? w->n : 1) * sizeof *obj);
-    if (!obj) return -1;
-    int rc = 0;
-    for (int fixed = 0; fixed < 2 && rc == 0; fixed++) {
-        broad_tree *t = fixed ? &bp->fixed : &bp->moving;
+    long n = 0;
+    for (int i = 0; i < w->n; i++)
+        if (body_is_static(w->bodies[i])) n += body_compound(w->bodies[i]) ? w->bodies[i]->shape.pieces : 1;
+    if (n > bp->capitem) {
+        broad_item *it = realloc(bp->item, (size_t)n * sizeof *it);
+        if (!it || n > 1000000000L) return -1;
+        bp->item = it;
+        bp->capitem = (int)n;
+    }
+    bp->nitem = 0;
+    for (int i = 0; i < w->n; i++) {
+        const body *b = w->bodies[i];
+        if (!body_is_static(b)) continue;
+        bp->first_item[i] = bp->nitem;
+        if (!body_compound(b)) {
+            bp->item[bp->nitem++] = (broad_item){i, -1, bp->box[i]};
+            continue;
+        }
+        for (int k = 0; k < b->shape.pieces; k++) bp->item[bp->nitem++] = (broad_item){i, k, piece_box(b, k)};
+    }
+    return 0;
+}
+
+/* The moving tree anew from the boxes (and the static one too when `fixed`), top
+ * down (a better tree than one made by insertions); the refits count starts
+ * again.  Returns 0 or -1. */
+static int build(world *w, bool fixed)
+{
+    broad_phase *bp = &w->broad;
+    if (fixed && make_items(w) != 0) return -1;
+    int big = w->n > bp->nitem ? w->n : bp->nitem;
+    int *obj = malloc((size_t)(big ? big : 1) * sizeof *obj);
+    aabb *box = malloc((size_t)(bp->nitem ? bp->nitem : 1) * sizeof *box);
+    int *leaf = malloc((size_t)(bp->nitem ? bp->nitem : 1) * sizeof *leaf);
+    int rc = obj && box && leaf ? 0 : -1;
+    if (rc == 0) { /* the moving objects */
+        broad_tree *t = &bp->moving;
         tree_init(t);
         int n = 0;
-        for (int i = 0; i < w->n; i++)
-            if (body_is_static(w->bodies[i]) == (fixed != 0)) obj[n++] = i;
+        for (int i = 0; i < w->n; i++) {
+            if (!body_is_static(w->bodies[i])) obj[n++] = i;
+            else if (fixed) bp->leaf[i] = -1;
+        }
         if (n > 0 && (t->root = tree_build(t, obj, n, bp->box, bp->leaf)) < 0) rc = -1;
     }
+    if (rc == 0 && fixed) { /* the static items */
+        broad_tree *t = &bp->fixed;
+        tree_init(t);
+        for (int k = 0; k < bp->nitem; k++) {
+            obj[k] = k;
+            box[k] = bp->item[k].box;
+        }
+        if (bp->nitem > 0 && (t->root = tree_build(t, obj, bp->nitem, box, leaf)) < 0) rc = -1;
+        for (int k = 0; k < bp->nitem && rc == 0; k++)
+            if (bp->item[k].piece < 0) bp->leaf[bp->item[k].body] = leaf[k];
+    }
     free(obj);
+    free(box);
+    free(leaf);
     bp->since_build = 0;
     return rc;
 }
@@ -489,7 +637,9 @@ int broad_rebuild(world *w)
         if (box) bp->box = box;
         double *until = realloc(bp->until, (size_t)w->n * sizeof *until);
         if (until) bp->until = until;
-        if (!leaf || !box || !until) return -1;
+        int *first = realloc(bp->first_item, (size_t)w->n * sizeof *first);
+        if (first) bp->first_item = first;
+        if (!leaf || !box || !until || !first) return -1;
         bp->cap = w->n;
     }
     tree_init(&bp->moving);
@@ -568,6 +718,16 @@ int broad_check(const world *w, char *err, size_t errlen)
             if (body_is_static(w->bodies[i]) && body_is_static(w->bodies[j])) continue;
             long k = pair_index(w, i, j);
             bool meets = box_meets(bp->box[i], bp->box[j]);
+            /* a static object of several pieces meets by its pieces' boxes */
+            for (int s = 0; s < 2 && meets && !everywhere(w); s++) {
+                int st = s ? j : i, mv = s ? i : j;
+                const body *o = w->bodies[st];
+                if (!body_is_static(o) || !body_compound(o)) continue;
+                bool any = false;
+                for (int q = 0; q < o->shape.pieces && !any; q++)
+                    any = box_meets(piece_box(o, q), bp->box[mv]);
+                meets = any;
+            }
             bool near = k >= 0 && w->pairs.p[k].near;
             if (meets && !near) {
                 snprintf(err, errlen, "objects %d and %d: boxes meet, no near pair", i, j);

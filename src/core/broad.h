@@ -21,7 +21,11 @@
  * The moving objects' boxes sit in a dynamic bounding-volume tree (Box2D's
  * dynamic_tree.c, Bullet's btDbvt: insertion by the surface-area cost, AVL
  * rotations); the static objects' in a tree of their own, made when the pairs
- * are made and changed only by a command that moves a static object.
+ * are made and made again only by a command that moves a static object.  A
+ * static object of several pieces (pieces.h) is in that tree piece by piece, each
+ * with its own box: its pair with a moving object lists the pieces whose boxes
+ * meet the moving one's (pair_near_pieces), and ends when none does, so that a
+ * room of thousands of pieces costs only the pieces near each moving object.
  */
 #ifndef VROC_BROAD_H
 #define VROC_BROAD_H
@@ -50,9 +54,20 @@ typedef struct {
     int cap, root, free_list, count;
 } broad_tree;
 
+/* A box of the static tree: a static object's, or one piece's of a static object
+ * of several (piece >= 0). */
+typedef struct {
+    int body, piece;
+    aabb box;
+} broad_item;
+
 typedef struct {
     broad_tree moving;    /* the boxes of the objects that are not static */
-    broad_tree fixed;     /* the static objects' boxes */
+    broad_tree fixed;     /* the static objects' boxes, and their pieces' (its
+                           * leaves are items) */
+    broad_item *item;     /* the static tree's boxes, by object, then piece */
+    int nitem, capitem;
+    int *first_item;      /* per object: its first item (static objects) */
     int *leaf;            /* per object: its node in its tree, or -1 */
     aabb *box;            /* per object: its box */
     double *until;        /* per object: its box covers it, on the motion it had when

@@ -797,6 +797,9 @@ void closest_mirror(closest_result *r)
     r->pb = p;
     r->fa = r->fb;
     r->fb = f;
+    int k = r->ka;
+    r->ka = r->kb;
+    r->kb = k;
     r->normal = v3_neg(r->normal);
 }
 

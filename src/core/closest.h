@@ -71,6 +71,8 @@ typedef struct {
     vec3 pa, pb;        /* points on A and on B, world coordinates */
     vec3 normal;        /* unit, from B towards A */
     closest_feature fa, fb; /* the features pa and pb lie on */
+    int ka, kb;         /* the pieces of A and B they are on, for bodies of several
+                           (pieces.h); 0 otherwise */
     int steps;          /* feature-walk steps taken (0 for closed forms) */
     bool restarted;     /* the walk exceeded its step bound and was redone from scratch;
                            never expected: callers count these so that a fault shows */
@@ -115,8 +117,8 @@ closest_result closest_distance(const closest_proxy *a, const closest_proxy *b,
 closest_result closest_distance_apart(const closest_proxy *a, const closest_proxy *b,
                                       closest_cache *cache);
 
-/* r as the query of the swapped pair gives it: points and features swapped,
- * normal negated. */
+/* r as the query of the swapped pair gives it: points, features and pieces
+ * swapped, normal negated. */
 void closest_mirror(closest_result *r);
 
 /* An invalid result: status CLOSEST_INVALID, distance NAN, the rest zero. */

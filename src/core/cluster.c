@@ -93,9 +93,7 @@ static int deepest_rows(world *w, points *pts, body **bs, double *floor_gap, dou
     for (int c = 0; c < pts->np && pts->rows.n < SIM_CLUSTER_ROWS; c++) {
         pair *p = pts->pr[c];
         const body *A = bs[p->a], *B = bs[p->b];
-        closest_cache cache = p->cache;
-        closest_result r = body_distance(A, B, &cache);
-        w->st.pair_checks++;
+        closest_result r = pair_query_peek(w, p, A, B);
         if (r.status == CLOSEST_INVALID) continue;
         /* the least floor of its points, and the tolerance of their gaps */
         double least = HUGE_VAL, tol = 0;

@@ -3,6 +3,8 @@
  */
 #include "contact.h"
 
+#include "pieces.h"
+
 #include <assert.h>
 
 #include <stdlib.h>
@@ -371,8 +373,10 @@ static vec3 region_world(const region *z, vec3 n, p2 c)
     return v3_add(v3_add(v3_scale(z->u, c.x), v3_scale(z->v, c.y)), v3_scale(n, z->h));
 }
 
-vec3 contact_point(const body *a, const body *b, const closest_result *r, double tol)
+vec3 contact_point(const body *a0, const body *b0, const closest_result *r, double tol)
 {
+    body ta, tb;
+    const body *a = pieces_view(a0, r->ka, &ta), *b = pieces_view(b0, r->kb, &tb);
     region z;
     vec3 p = v3_scale(v3_add(r->pa, r->pb), 0.5);
     if (region_of(a, b, r, tol, &z) && z.n > 0) p = region_world(&z, z.n_used, z.c);
@@ -380,9 +384,11 @@ vec3 contact_point(const body *a, const body *b, const closest_result *r, double
     return p;
 }
 
-vec3 contact_closing_corner(const body *a, const body *b, const closest_result *r, double tol,
+vec3 contact_closing_corner(const body *a0, const body *b0, const closest_result *r, double tol,
                             vec3 p)
 {
+    body ta, tb;
+    const body *a = pieces_view(a0, r->ka, &ta), *b = pieces_view(b0, r->kb, &tb);
     region z;
     if (region_of(a, b, r, tol, &z)) {
         double best = 0;
@@ -530,8 +536,9 @@ static void sphere_against(const body *s, const body *o, closest_feature f, vec3
     }
 }
 
-int contact_cpoints(const body *a, const body *b, const closest_result *r, double tol, cpoint *out,
-                    int max)
+/* contact_cpoints for one convex piece of each. */
+static int cpoints_of(const body *a, const body *b, const closest_result *r, double tol, cpoint *out,
+                      int max)
 {
     if (max < 1) return 0;
     vec3 n = r->normal;
@@ -584,7 +591,11 @@ int contact_cpoints(const body *a, const body *b, const closest_result *r, doubl
          * so that their gaps are the objects' own, however thick the region */
         const support *sp = pside == 0 ? &z.sa : &z.sb;
         int fp = np >= 3 ? contact_facing(P, v3_neg(m)) : -1;
-        for (int i = 0; i < z.n && count < max; i++) {
+        /* (more corners than room: every so many, around the whole region, so
+         * that what they hold is still about its centre) */
+        int take = z.n < max ? z.n : max;
+        for (int k = 0; k < take; k++) {
+            int i = z.n <= max ? k : (int)((long)k * z.n / take);
             vec3 x = v3_mad(region_world(&z, n, z.p[i]), m, half);
             lift(P, sp, np, fp, m, &x);
             out[count] = base;
@@ -611,6 +622,31 @@ int contact_cpoints(const body *a, const body *b, const closest_result *r, doubl
     }
     free_points(z.pts, z.local);
     return count;
+}
+
+int contact_cpoints(const body *a, const body *b, const piece_pairs *pp, const closest_result *r,
+                    double tol, cpoint *out, int max)
+{
+    if (!body_compound(a) && !body_compound(b)) return cpoints_of(a, b, r, tol, out, max);
+    /* bodies of several pieces: the points of every pair of their pieces that
+     * touch, one contact problem (pieces.h); r's own pair first, as r has it */
+    closest_result near[CONTACT_MAX_POINTS];
+    int n = pieces_touching(a, b, pp, d_max(tol, r->distance), near, CONTACT_MAX_POINTS), count = 0;
+    body ta, tb;
+    count = cpoints_of(pieces_view(a, r->ka, &ta), pieces_view(b, r->kb, &tb), r, tol, out, max);
+    for (int k = 0; k < n && count < max; k++) {
+        if (near[k].ka == r->ka && near[k].kb == r->kb) continue;
+        const body *va = pieces_view(a, near[k].ka, &ta), *vb = pieces_view(b, near[k].kb, &tb);
+        count += cpoints_of(va, vb, &near[k], tol, out + count, max - count);
+    }
+    return count;
+}
+
+int contact_cpoints_of_pieces(const body *a, const body *b, const closest_result *r, double tol,
+                              cpoint *out, int max)
+{
+    body ta, tb;
+    return cpoints_of(pieces_view(a, r->ka, &ta), pieces_view(b, r->kb, &tb), r, tol, out, max);
 }
 
 /* The gap of EDGES point cp (see cpoint_eval), its normal and point. */
@@ -668,7 +704,19 @@ double cpoint_eval(const cpoint *cp, const body *P, const body *Q, vec3 *n, vec3
     return gap;
 }
 
-bool contact_holds(const body *m, const body *s, const closest_result *r, double tol, int *face)
+static bool holds(const body *m, const body *s, const closest_result *r, double tol, int *face);
+
+bool contact_holds(const body *m0, const body *s0, const closest_result *r, double tol, int *face)
+{
+    body tm, ts;
+    const body *m = pieces_view(m0, r->ka, &tm), *s = pieces_view(s0, r->kb, &ts);
+    bool held = holds(m, s, r, tol, face);
+    if (*face >= 0) *face = shape_face_number(&s0->shape, r->kb, *face);
+    return held;
+}
+
+/* contact_holds for one convex piece of each. */
+static bool holds(const body *m, const body *s, const closest_result *r, double tol, int *face)
 {
     *face = -1;
     const poly *h = s->shape.hull;
@@ -733,8 +781,12 @@ double contact_closing_speed(const body *a, const body *b, vec3 p, vec3 n)
     return -v3_dot(rel, n);
 }
 
-bool contact_level(body *m, const body *s, int face, double max_tilt, double gap)
+bool contact_level(body *m, const body *s0, int face, double max_tilt, double gap)
 {
+    body ts;
+    int k = shape_face_piece(&s0->shape, face, &face);
+    if (k < 0) return false;
+    const body *s = pieces_view(s0, k, &ts);
     const poly *hs = s->shape.hull, *hm = m->shape.hull;
     if (!hs || !hm || m->sp.kind == SHAPE_SPHERE || face < 0 || face >= hs->nf) return false;
     vec3 n = q_rotate(s->q, hs->f[face].n);

@@ -13,6 +13,7 @@
 
 #include "body.h"
 #include "closest.h"
+#include "pieces.h"
 
 /* The centre of the contact region of a and b, touching or nearly touching with
  * closest result r: the centroid of the overlap of a's and b's features that lie
@@ -49,8 +50,9 @@ typedef struct {
     double sgn; /*   and the sign that turns sd x f1 from q towards p */
 } cpoint;
 
-/* The most points one contact is followed by: the corners of its region beyond
- * these are left out (two quadrilaterals overlap in eight at most). */
+/* The most points one contact is followed by: of a region with more corners,
+ * this many spread around it are kept (two quadrilaterals overlap in eight at
+ * most; a cup's round base has more). */
 #define CONTACT_MAX_POINTS 16
 
 /* The points at which touching (or nearly touching) polyhedra or spheres a and b
@@ -58,9 +60,16 @@ typedef struct {
  * region): a sphere's one point; the corners of a contact region (a segment's two
  * ends, a polygon's corners), each against the plane of the face side; or the one
  * closest pair.  At most max written (CONTACT_MAX_POINTS is enough for every
- * caller); returns the count (0 when out of memory). */
-int contact_cpoints(const body *a, const body *b, const closest_result *r, double tol, cpoint *out,
-                    int max);
+ * caller); returns the count (0 when out of memory).  Bodies of several pieces:
+ * the points of each pair of their pieces that touches, among those of pp (their
+ * pair's: pieces.h), or of every pair of pieces when pp is NULL or empty. */
+int contact_cpoints(const body *a, const body *b, const piece_pairs *pp, const closest_result *r,
+                    double tol, cpoint *out, int max);
+
+/* contact_cpoints at the pair of pieces r names alone (pieces.h): for bodies of
+ * one piece, the same. */
+int contact_cpoints_of_pieces(const body *a, const body *b, const closest_result *r, double tol,
+                              cpoint *out, int max);
 
 /* The gap of point cp with its objects in the states P and Q (> 0 apart), the
  * unit normal there (from Q towards P) and the world point where they press (on

@@ -106,6 +106,16 @@ int edit_property(world *w, int i, size_t off, const double *num, char *err, siz
         disturb(w, i, false);
         return 0;
     case offsetof(body, mass):
+        if (b->sp.kind == SHAPE_POLYHEDRON && (num[0] < 0) != b->sp.fixed) {
+            /* a static polyhedron's open pieces are slabs, a moving one's hulls */
+            double was = b->mass;
+            b->sp.fixed = num[0] < 0;
+            b->mass = num[0];
+            if (rebuild(b, old, err, errlen) != 0) {
+                b->mass = was;
+                return -1;
+            }
+        }
         disturb(w, i, true);
         body_set_mass(b, num[0]);
         if (num[0] < 0) b->held = false; /* (the hand lets go: hold.h) */
@@ -129,6 +139,7 @@ int edit_property(world *w, int i, size_t off, const double *num, char *err, siz
     case offsetof(body, sp.ures): b->sp.ures = (int)num[0]; break;
     case offsetof(body, sp.vres): b->sp.vres = (int)num[0]; break;
     case offsetof(body, sp.scale): b->sp.scale = v; break;
+    case offsetof(body, sp.thickness): b->sp.thickness = num[0]; break;
     default: snprintf(err, errlen, "no property at offset %zu", off); return -1;
     }
     if (rebuild(b, old, err, errlen) != 0) return -1;
@@ -261,12 +272,14 @@ int edit_exact_contact(world *w, int i, body_mode mode, bool resting, char *err,
     if (mode == MODE_SLIDE) {
         int support = b->slide_on, face = b->slide_face;
         const body *s = support >= 0 && support < w->n ? w->bodies[support] : NULL;
-        if (!s || !body_is_static(s) || !s->shape.hull || face < 0 || face >= s->shape.hull->nf) {
+        int local;
+        const poly *h = s && body_is_static(s) ? shape_face(&s->shape, face, &local) : NULL;
+        if (!h) {
             snprintf(err, errlen, "a slide needs slide_on, a static object, and slide_face, one "
                      "of its faces, before it");
             return -1;
         }
-        b->slide_n = v3_norm(q_rotate(s->q, s->shape.hull->f[face].n));
+        b->slide_n = v3_norm(q_rotate(s->q, h->f[local].n));
     } else {
         b->slide_on = b->slide_face = -1;
     }

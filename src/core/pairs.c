@@ -23,6 +23,8 @@ void pairs_free(pair_list *pl)
 {
     free(pl->p);
     free(pl->hits);
+    for (long k = 0; pl->pieces && k < pl->cap; k++) free(pl->pieces[k].e);
+    free(pl->pieces);
     free(pl->free_slots);
     for (int i = 0; i < pl->nadj; i++) free(pl->adj[i].l);
     free(pl->adj);
@@ -86,10 +88,23 @@ static bool scheduled(const world *w)
     return w->sched.heap != NULL && !w->sched_dirty && w->sched.nobj == w->n;
 }
 
-/* A pair of a and b with no memory. */
-static pair fresh_pair(int a, int b, bool near)
+/* A pair of a and b with no memory, in slot k of pl. */
+static pair fresh_pair(pair_list *pl, long k, int a, int b, bool near)
 {
-    return (pair){.a = a, .b = b, .near = near, .toi_fa = -1, .toi_fb = -1, .toi = HUGE_VAL};
+    return (pair){.a = a, .b = b, .near = near, .toi_fa = -1, .toi_fb = -1, .toi = HUGE_VAL,
+                  .pieces = &pl->pieces[k]};
+}
+
+/* Slot k's piece pairs: every pair of its objects' pieces (none when neither
+ * has several).  Returns 0 or -1. */
+static int list_all(world *w, long k)
+{
+    const pair *p = &w->pairs.p[k];
+    piece_pairs *pp = &w->pairs.pieces[k];
+    const body *a = w->bodies[p->a], *b = w->bodies[p->b];
+    pp->n = 0;
+    if (!body_compound(a) && !body_compound(b)) return 0;
+    return pieces_list(pp, a, b, NULL, 0);
 }
 
 /* A new pair of a < b in a free slot, in the lists of both: its slot, or -1 when
@@ -109,13 +124,19 @@ static long pair_new(world *w, int a, int b, bool near)
             if (nh) pl->hits = nh;
             long *nf = realloc(pl->free_slots, (size_t)cap * sizeof *nf);
             if (nf) pl->free_slots = nf;
-            if (!np || !nh || !nf) return -1;
+            piece_pairs *npp = realloc(pl->pieces, (size_t)cap * sizeof *npp);
+            if (npp) {
+                memset(npp + pl->cap, 0, (size_t)(cap - pl->cap) * sizeof *npp);
+                pl->pieces = npp;
+                for (long j = 0; j < pl->n; j++) pl->p[j].pieces = &npp[j]; /* (moved) */
+            }
+            if (!np || !nh || !nf || !npp) return -1;
             pl->cap = cap;
         }
         k = pl->n++;
     }
-    pl->p[k] = fresh_pair(a, b, near);
-    if (adj_insert(&pl->adj[a], b, k) != 0) {
+    pl->p[k] = fresh_pair(pl, k, a, b, near);
+    if (list_all(w, k) != 0 || adj_insert(&pl->adj[a], b, k) != 0) {
         pl->p[k].a = -1;
         pl->free_slots[pl->nfree++] = k;
         return -1;
@@ -161,7 +182,8 @@ int pair_near(world *w, int a, int b)
     if (k >= 0) {
         if (pl->p[k].near) return 0;
         /* (heap off) near again: afresh, as the pair the heap would make now */
-        pl->p[k] = fresh_pair(a, b, true);
+        pl->p[k] = fresh_pair(pl, k, a, b, true);
+        if (list_all(w, k) != 0) return -1;
         if (scheduled(w)) sched_set(w, sched_pair_id(&w->sched, k), -HUGE_VAL);
     } else if ((k = pair_new(w, a, b, true)) < 0) {
         return -1;
@@ -174,6 +196,7 @@ void pair_far(world *w, long k)
     pair_list *pl = &w->pairs;
     pair *p = &pl->p[k];
     if (p->touching) return;
+    pl->pieces[k].n = 0; /* (every pair of pieces while it is far: heap off) */
     if (pl->every) {
         p->near = false;
         return;
@@ -311,7 +334,9 @@ int pairs_update(world *w)
 
 closest_result pair_query(world *w, pair *p, const body *a, const body *b)
 {
-    closest_result r = body_distance(a, b, &p->cache);
+    piece_pairs *pp = pair_pieces(w, p);
+    closest_result r = pp->n > 0 ? pieces_distance(a, b, pp, PIECES_QUERY, true)
+                                 : body_distance(a, b, &p->cache);
     w->st.pair_checks++;
     if (r.restarted) w->st.restarts++;
     return r;
@@ -319,8 +344,57 @@ closest_result pair_query(world *w, pair *p, const body *a, const body *b)
 
 closest_result pair_query_apart(world *w, pair *p, const body *a, const body *b)
 {
-    closest_result r = body_distance_apart(a, b, &p->cache);
+    piece_pairs *pp = pair_pieces(w, p);
+    closest_result r = pp->n > 0 ? pieces_distance(a, b, pp, PIECES_QUERY, false)
+                                 : body_distance_apart(a, b, &p->cache);
     w->st.pair_checks++;
     if (r.restarted) w->st.restarts++;
     return r;
+}
+
+closest_result pair_query_peek(world *w, pair *p, const body *a, const body *b)
+{
+    piece_pairs *pp = pair_pieces(w, p);
+    closest_cache cache = p->cache;
+    closest_result r = pp->n > 0 ? pieces_distance(a, b, pp, PIECES_PEEK, true)
+                                 : body_distance(a, b, &cache);
+    w->st.pair_checks++;
+    if (r.restarted) w->st.restarts++;
+    return r;
+}
+
+piece_pairs *pair_pieces(world *w, const pair *p)
+{
+    (void)w;
+    return p->pieces;
+}
+
+int pair_near_pieces(world *w, int i, int j, const int *jk, int n)
+{
+    pair_list *pl = &w->pairs;
+    long k = pair_index(w, i, j);
+    if ((k < 0 || !pl->p[k].near) && pair_near(w, i, j) != 0) return -1;
+    k = pair_index(w, i, j);
+    const pair *p = &pl->p[k];
+    const body *a = w->bodies[p->a], *b = w->bodies[p->b];
+    piece_pairs *now = &pl->pieces[k];
+    if (pieces_listed(now, a, b, j == p->b, jk, n)) return 0;
+    /* the new list, with no memory: the pair is searched anew */
+    int rc = j == p->b ? pieces_list(now, a, b, jk, n) : pieces_list_first(now, a, b, jk, n);
+    if (rc != 0) return -1;
+    pl->p[k].toi_fa = pl->p[k].toi_fb = -1;
+    if (scheduled(w)) sched_set(w, sched_pair_id(&w->sched, k), -HUGE_VAL);
+    return note_fresh(pl, k);
+}
+
+void pair_hit_from_query(world *w, pair *p)
+{
+    p->hit = p->cache;
+    pieces_hit_from_query(pair_pieces(w, p));
+}
+
+void pair_forget(world *w, pair *p)
+{
+    p->cache.valid = p->hit.valid = false;
+    pieces_forget(pair_pieces(w, p));
 }

@@ -29,6 +29,7 @@
 
 #include "body.h"
 #include "closest.h"
+#include "pieces.h"
 
 typedef struct world world;
 
@@ -47,6 +48,7 @@ typedef struct pair {
                            * (a search's answer holds while they fly them), */
     double toi;           /*   when it found them touching (+inf: apart through the
                            *   step's end, until next) */
+    piece_pairs *pieces;  /* its piece pairs (pair_list's pieces[slot]) */
 } pair;
 
 /* A pair's last search's contact (toi.h): the pair there and the features the
@@ -71,6 +73,9 @@ typedef struct {
 typedef struct {
     pair *p;              /* slots 0 .. n - 1 (free ones have a = -1) */
     pair_hit *hits;       /* each slot's pair's last contact found */
+    piece_pairs *pieces;  /* each slot's pair's piece pairs, for bodies of several
+                           * pieces (pieces.h; empty otherwise): kept with the slot
+                           * when it is freed, to be used again */
     long n, cap;          /* slots used and allocated */
     long live;            /* pairs that exist */
     long *free_slots;     /* freed slots, to use again (the last first) */
@@ -110,12 +115,31 @@ void pair_far(world *w, long slot);
 const long *pairs_take_fresh(world *w, long *n);
 
 /* The query of pair p with its objects in the states a and b (body_distance),
- * from and into the pair's cache; counted in the world's pair_checks. */
+ * from and into the pair's cache (its piece pairs' for bodies of several
+ * pieces); counted in the world's pair_checks. */
 closest_result pair_query(world *w, pair *p, const body *a, const body *b);
 
 /* The same for a check that needs only whether the pair is apart, and how far
  * (body_distance_apart). */
 closest_result pair_query_apart(world *w, pair *p, const body *a, const body *b);
+
+/* The same from the pair's cache, which it leaves as it was. */
+closest_result pair_query_peek(world *w, pair *p, const body *a, const body *b);
+
+/* Pair p's piece pairs (empty unless one of its objects has several pieces). */
+piece_pairs *pair_pieces(world *w, const pair *p);
+
+/* The broad phase's word that the pair of moving object i and static object j
+ * of several pieces meets those pieces listed in jk (n of them, in order, n >= 1):
+ * the pair is made near as by pair_near when it is not, and lists those pieces
+ * (with no memory of them: the pair is searched anew, as a fresh one, when the
+ * list changed).  Returns 0, or -1 when out of memory. */
+int pair_near_pieces(world *w, int i, int j, const int *jk, int n);
+
+/* What a query that found p touching leaves as its hit (p->hit = p->cache, its
+ * piece pairs' too); and forgets every feature (a frame's start). */
+void pair_hit_from_query(world *w, pair *p);
+void pair_forget(world *w, pair *p);
 
 /* Walks object i's pairs, in the order of the other object: link the pair_link,
  * pr its pair.  (An object with no pairs may have no list at all, NULL, to which

@@ -102,6 +102,41 @@ static bool try_roll(world *w, body *m, const body *s, int si, int face, vec3 n,
     return true;
 }
 
+/* A slide goes on across a seam, onto a face of another static object, when the
+ * two faces are coplanar within this angle (rad) and this offset (m); a centre of
+ * mass on the seam that is short of the new face by no more than REST_SEAM_GAP
+ * and moves onto it is over it. */
+#define REST_SEAM_ANGLE 1e-9
+#define REST_SEAM_GAP 1e-9
+
+/* A point's height inside one edge of a face, in the face's plane, as it moves:
+ * g0 + g1 tau + g2 tau^2 at tau from now. */
+typedef struct {
+    double g0, g1, g2;
+} edge_gap;
+
+/* The height of point c inside edge k of face F of hull h of static s (n the
+ * face's normal), for a point moving at v with acceleration a.  (Inlined: a
+ * slide's exit is asked for at every internal step.) */
+static inline __attribute__((always_inline)) edge_gap gap_to_edge(const body *s, const poly *h,
+                                                                  const poly_face *F, int k,
+                                                                  vec3 n, vec3 c, vec3 v, vec3 a)
+{
+    vec3 p0 = v3_add(s->x, q_rotate(s->q, h->v[h->face_vert[F->first + k]]));
+    vec3 p1 = v3_add(s->x, q_rotate(s->q, h->v[h->face_vert[F->first + (k + 1) % F->count]]));
+    vec3 in = v3_norm(v3_cross(n, v3_sub(p1, p0))); /* into the face, across this edge */
+    return (edge_gap){v3_dot(in, v3_sub(c, p0)), v3_dot(in, v), 0.5 * v3_dot(in, a)};
+}
+
+/* True when a point at g is past its edge: outside it, and not coming onto the
+ * face across it from within REST_SEAM_GAP (a seam's other side). */
+static bool past_edge(edge_gap g)
+{
+    if (g.g0 > 0) return false;
+    bool entering = g.g1 > 0 || (g.g1 == 0 && g.g2 > 0);
+    return !(entering && g.g0 >= -REST_SEAM_GAP);
+}
+
 /* Makes m slide on face `face` of static s, if that face holds it (see rest.h):
  * true when it did.  p the pair. */
 static bool try_slide(world *w, int mi, int si, pair *p)
@@ -123,9 +158,17 @@ static bool try_slide(world *w, int mi, int si, pair *p)
     if (!contact_holds(m, s, &r, thick, &face)) {
         return false;
     }
-    vec3 n = v3_norm(q_rotate(s->q, s->shape.hull->f[face].n));
+    int local;
+    const poly *hf = shape_face(&s->shape, face, &local);
+    vec3 n = v3_norm(q_rotate(s->q, hf->f[local].n));
     /* pressed onto the face, moving along it, turning about its normal only */
     if (!(v3_dot(world_accel(w), n) < -tol_accel(m, s))) return false;
+    /* its centre of mass over the face, as rest_slide_exit sees it: else the
+     * slide would end where it begins, and begin again (on a seam of two pieces
+     * of one body, a centre of mass on the edge of the face the contact names) */
+    const poly_face *F = &hf->f[local];
+    for (int k = 0; k < F->count; k++)
+        if (past_edge(gap_to_edge(s, hf, F, k, n, body_com(m), m->v, world_accel(w)))) return false;
     /* a lossy contact ends a rocking too slow to see as a rebound would (impulse's
      * SIM_BOUNCE_SPEED): it lands flat */
     double tol = e < 1 || rough ? SIM_BOUNCE_SPEED : 1e3 * tol_speed(m, s);
@@ -186,42 +229,6 @@ void rest_classify(world *w, const int *list, int n)
     }
 }
 
-/* A slide goes on across a seam, onto a face of another static object, when the
- * two faces are coplanar within this angle (rad) and this offset (m); a centre of
- * mass on the seam that is short of the new face by no more than REST_SEAM_GAP
- * and moves onto it is over it. */
-#define REST_SEAM_ANGLE 1e-9
-#define REST_SEAM_GAP 1e-9
-
-/* A point's height inside one edge of a face, in the face's plane, as it moves:
- * g0 + g1 tau + g2 tau^2 at tau from now. */
-typedef struct {
-    double g0, g1, g2;
-} edge_gap;
-
-/* The height of point c inside edge k of face F of static s (n the face's normal),
- * for a point moving at v with acceleration a.  (Inlined: a slide's exit is asked
- * for at every internal step.) */
-static inline __attribute__((always_inline)) edge_gap gap_to_edge(const body *s, const poly_face *F,
-                                                                  int k, vec3 n, vec3 c, vec3 v,
-                                                                  vec3 a)
-{
-    const poly *h = s->shape.hull;
-    vec3 p0 = v3_add(s->x, q_rotate(s->q, h->v[h->face_vert[F->first + k]]));
-    vec3 p1 = v3_add(s->x, q_rotate(s->q, h->v[h->face_vert[F->first + (k + 1) % F->count]]));
-    vec3 in = v3_norm(v3_cross(n, v3_sub(p1, p0))); /* into the face, across this edge */
-    return (edge_gap){v3_dot(in, v3_sub(c, p0)), v3_dot(in, v), 0.5 * v3_dot(in, a)};
-}
-
-/* True when a point at g is past its edge: outside it, and not coming onto the
- * face across it from within REST_SEAM_GAP (a seam's other side). */
-static bool past_edge(edge_gap g)
-{
-    if (g.g0 > 0) return false;
-    bool entering = g.g1 > 0 || (g.g1 == 0 && g.g2 > 0);
-    return !(entering && g.g0 >= -REST_SEAM_GAP);
-}
-
 /* The first tau > 0 at which g0 + g1 tau + g2 tau^2 (g0 >= 0) turns negative, or
  * HUGE_VAL. */
 static double first_below(double g0, double g1, double g2)
@@ -239,9 +246,9 @@ double rest_slide_exit(const world *w, int i, double t)
     const body *m = w->bodies[i];
     if (m->state != STATE_DYNAMIC || m->mode != MODE_SLIDE || m->slide_on < 0) return HUGE_VAL;
     const body *s = w->bodies[m->slide_on];
-    const poly *h = s->shape.hull;
-    int face = m->slide_face;
-    if (!h || face < 0 || face >= h->nf) return HUGE_VAL;
+    int face;
+    const poly *h = shape_face(&s->shape, m->slide_face, &face);
+    if (!h) return HUGE_VAL;
     const flight *f = &w->step.fl[i];
     double h0 = t - f->t0;
     /* (a ball that rolls goes no further once it stops) */
@@ -253,7 +260,7 @@ double rest_slide_exit(const world *w, int i, double t)
     const poly_face *F = &h->f[face];
     double best = HUGE_VAL;
     for (int k = 0; k < F->count; k++) {
-        edge_gap g = gap_to_edge(s, F, k, n, c, v, a);
+        edge_gap g = gap_to_edge(s, h, F, k, n, c, v, a);
         if (past_edge(g)) return t; /* over the edge already */
         best = d_min(best, first_below(d_max(g.g0, 0), g.g1, g.g2));
     }
@@ -265,14 +272,19 @@ bool rest_slide_on(world *w, int i)
     body *m = w->bodies[i];
     int from = m->slide_on;
     const body *s = w->bodies[from];
-    const poly *h = s->shape.hull;
-    if (!h || m->slide_face < 0 || m->slide_face >= h->nf) return false;
+    int local;
+    const poly *h = shape_face(&s->shape, m->slide_face, &local);
+    if (!h) return false;
     vec3 n = m->slide_n, c = body_com(m), a = w->step.fl[i].a;
-    vec3 on = v3_add(s->x, q_rotate(s->q, h->v[h->face_vert[h->f[m->slide_face].first]]));
+    vec3 on = v3_add(s->x, q_rotate(s->q, h->v[h->face_vert[h->f[local].first]]));
     FOR_PAIRS_OF(w, i, link, p) {
         const body *o = w->bodies[link->other];
         const poly *ho = o->shape.hull;
-        if (link->other == from || !body_is_static(o) || !ho || o->sp.kind == SHAPE_SPHERE) continue;
+        /* (not across the seams of a body of several pieces: it leaves its face
+         * and lands on the next as on another object) */
+        if (link->other == from || !body_is_static(o) || !ho || o->sp.kind == SHAPE_SPHERE ||
+            body_compound(o))
+            continue;
         /* its face that way: coplanar with this one */
         int face = contact_facing(o, n);
         const poly_face *F = &ho->f[face];
@@ -283,14 +295,14 @@ bool rest_slide_on(world *w, int i)
             continue;
         /* the centre of mass over it (or coming onto it), pressed onto it */
         bool over = true;
-        for (int k = 0; k < F->count && over; k++) over = !past_edge(gap_to_edge(o, F, k, n2, c, m->v, a));
+        for (int k = 0; k < F->count && over; k++) over = !past_edge(gap_to_edge(o, ho, F, k, n2, c, m->v, a));
         if (!over || !(v3_dot(world_accel(w), n2) < -tol_accel(m, o))) continue;
         /* it slides on that face from here, the hover gap above it */
         long old = pair_index(w, i, from);
         if (old >= 0) w->pairs.p[old].touching = false;
         p->touching = true;
         closest_result r = pair_query(w, p, w->bodies[p->a], w->bodies[p->b]);
-        p->hit = p->cache;
+        pair_hit_from_query(w, p);
         if (r.status != CLOSEST_INVALID) m->x = v3_mad(m->x, n2, tol_hover(m, o) - r.distance);
         m->slide_on = link->other;
         m->slide_face = face;

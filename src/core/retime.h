@@ -22,7 +22,10 @@
  * pressed together. */
 static inline bool retime_searched(const world *w, const pair *p)
 {
-    return !p->touching && (step_moves(w, p->a) || step_moves(w, p->b));
+    /* (a pair of bodies of several pieces in lasting contact is searched for
+     * its other pieces: toi.h) */
+    return (!p->touching || p->pieces->n > 0) &&
+           (step_moves(w, p->a) || step_moves(w, p->b));
 }
 
 /* Pair k's cheap bound from time t, as its objects fly now (t itself for a held

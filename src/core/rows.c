@@ -7,7 +7,7 @@ int rows_add(row_list *l, const pair *p, const body *a, const body *b, const clo
              double tol, double e, body *const *bs)
 {
     cpoint cp[CONTACT_MAX_POINTS];
-    int nc = contact_cpoints(a, b, r, tol, cp, CONTACT_MAX_POINTS), added = 0;
+    int nc = contact_cpoints(a, b, p->pieces, r, tol, cp, CONTACT_MAX_POINTS), added = 0;
     for (int c = 0; c < nc; c++) {
         if (l->n == l->cap) {
             l->full = true;

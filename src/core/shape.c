@@ -12,8 +12,14 @@
  * Angles are multiples of pi / (2 vres) and 2 pi / ures, so their sines and cosines
  * are computed by octant reduction: exactly 0 and 1 at the axes and symmetric, so
  * that |cos|^e with a small e gives no stray points near the poles and axes.
- * A polyhedron (the thesis's future work, 6.2) collides as the exact convex hull of
- * its source's points, scaled, and has that hull's mass properties; it is drawn
+ * A polyhedron (the thesis's future work, 6.2) collides as the exact convex hulls
+ * of its source's pieces, scaled: a rigid union of convex pieces (Mirtich 1998,
+ * V-Clip on hierarchies of convex pieces; Bullet's btCompoundShape), or one hull.
+ * A static piece whose faces close no volume (a room's wall as one face) becomes
+ * one slab per face, `thickness` behind it.  Mass properties: one convex piece's
+ * hull's; a closed, consistently oriented mesh's by the signed tetrahedra sum
+ * (Blow and Binstock 2004: each triangle with the origin is a tetrahedron whose
+ * covariance has a closed form); else the pieces' hulls' summed.  It is drawn
  * with its source's own mesh (normals turned by the inverse of the scale).
  */
 #include "shape.h"
@@ -50,7 +56,8 @@ shape_params shape_defaults(shape_kind kind)
                           .ures = 10,
                           .vres = 10,
                           .scale = v3(1, 1, 1),
-                          .src = NULL};
+                          .src = NULL,
+                          .thickness = 0.02};
 }
 
 void shape_free(shape *s)
@@ -58,6 +65,11 @@ void shape_free(shape *s)
     if (!s) return;
     closest_hull_free(s->feat);
     poly_free(s->hull);
+    for (int k = 0; s->piece && k < s->pieces; k++) {
+        closest_hull_free(s->piece[k].feat);
+        poly_free(s->piece[k].hull);
+    }
+    free(s->piece);
     if (!s->draw_borrowed) {
         free(s->draw.pos);
         free(s->draw.nrm);
@@ -358,11 +370,258 @@ static int scaled_mesh(shape *s, const mesh *src, vec3 k)
     return 0;
 }
 
-static int build_polyhedron(shape *s, char *err, size_t errlen)
+/* ---- polyhedra: one hull, or a union of convex pieces ---- */
+
+static int cmp_ll(const void *x, const void *y)
+{
+    long long a = *(const long long *)x, b = *(const long long *)y;
+    return (a > b) - (a < b);
+}
+
+/* True when faces first .. last - 1 of src close volumes consistently oriented:
+ * every edge that a face runs from u to v another runs from v to u, as often
+ * (their boundary is empty).  Sorts the directed edges: n log n. */
+static bool faces_closed(const shape_source *src, int first, int last)
+{
+    long ne = src->face_first[last] - src->face_first[first];
+    if (last - first < 4) return false;
+    long long *e = malloc((size_t)ne * sizeof *e), *r = malloc((size_t)ne * sizeof *r);
+    bool closed = e && r;
+    long n = 0;
+    for (int f = first; f < last && closed; f++) {
+        int a = src->face_first[f], b = src->face_first[f + 1];
+        for (int k = a; k < b; k++) {
+            long long u = src->corner[k], v = src->corner[k + 1 < b ? k + 1 : a];
+            e[n] = u * 2147483648LL + v;
+            r[n++] = v * 2147483648LL + u;
+        }
+    }
+    if (closed) {
+        qsort(e, (size_t)n, sizeof *e, cmp_ll);
+        qsort(r, (size_t)n, sizeof *r, cmp_ll);
+        closed = memcmp(e, r, (size_t)n * sizeof *e) == 0;
+    }
+    free(e);
+    free(r);
+    return closed;
+}
+
+/* Six times the signed volume faces first .. last - 1 of src enclose (fans with
+ * the origin): > 0 when they face outward. */
+static double faces_volume6(const shape_source *src, int first, int last)
+{
+    double v = 0;
+    for (int f = first; f < last; f++) {
+        int a = src->face_first[f], e = src->face_first[f + 1];
+        for (int k = a + 1; k + 1 < e; k++)
+            v += v3_dot(src->pts[src->corner[a]],
+                        v3_cross(src->pts[src->corner[k]], src->pts[src->corner[k + 1]]));
+    }
+    return v;
+}
+
+/* True when faces first .. last - 1 of src close a solid for a static object:
+ * closed, and facing outward (a closed surface whose faces all face inward, as
+ * a room's walls, floor and ceiling do, holds the room's empty inside: its
+ * faces are slabs). */
+static bool faces_solid(const shape_source *src, int first, int last)
+{
+    return faces_closed(src, first, last) && faces_volume6(src, first, last) > 0;
+}
+
+/* Newell's normal of face f of the scaled points pts: twice its area long. */
+static vec3 face_newell(const shape_source *src, const vec3 *pts, int f)
+{
+    vec3 n = v3(0, 0, 0);
+    int a = src->face_first[f], e = src->face_first[f + 1];
+    for (int k = a; k < e; k++) {
+        vec3 p = pts[src->corner[k]], q = pts[src->corner[k + 1 < e ? k + 1 : a]];
+        n.x += (p.y - q.y) * (p.z + q.z);
+        n.y += (p.z - q.z) * (p.x + q.x);
+        n.z += (p.x - q.x) * (p.y + q.y);
+    }
+    return n;
+}
+
+/* Mass properties of the closed mesh of faces 0 .. nf - 1 (fans of the polygons,
+ * each triangle with the origin a signed tetrahedron: volume det / 6, second
+ * moment det / 120 (a a' + b b' + c c' + s s'), s = a + b + c), turned outward
+ * when the faces run inward.  Volume 0 when they enclose nothing. */
+static mass_props mesh_mass(const shape_source *src, const vec3 *pts)
+{
+    double vol = 0, m[3][3] = {{0}};
+    vec3 first = v3(0, 0, 0);
+    for (int f = 0; f < src->nf; f++) {
+        int a = src->face_first[f], e = src->face_first[f + 1];
+        for (int k = a + 1; k + 1 < e; k++) {
+            vec3 p[3] = {pts[src->corner[a]], pts[src->corner[k]], pts[src->corner[k + 1]]};
+            double det = v3_dot(p[0], v3_cross(p[1], p[2]));
+            vec3 sum = v3_add(p[0], v3_add(p[1], p[2]));
+            vol += det / 6;
+            first = v3_add(first, v3_scale(sum, det / 24));
+            double c[3][3] = {{0}};
+            for (int t = 0; t < 4; t++) {
+                vec3 x = t < 3 ? p[t] : sum;
+                double xv[3] = {x.x, x.y, x.z};
+                for (int i = 0; i < 3; i++)
+                    for (int j = 0; j < 3; j++) c[i][j] += xv[i] * xv[j];
+            }
+            for (int i = 0; i < 3; i++)
+                for (int j = 0; j < 3; j++) m[i][j] += det / 120 * c[i][j];
+        }
+    }
+    if (vol < 0) { /* inside out: the same solid */
+        vol = -vol;
+        first = v3_neg(first);
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++) m[i][j] = -m[i][j];
+    }
+    mass_props mp = {0};
+    if (!(vol > 0)) return mp;
+    vec3 com = v3_scale(first, 1 / vol);
+    double cv[3] = {com.x, com.y, com.z};
+    /* the second moment about the centre of mass, then the inertia tensor */
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) m[i][j] -= vol * cv[i] * cv[j];
+    double tr = m[0][0] + m[1][1] + m[2][2];
+    mat3 I;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) I.m[i][j] = (i == j ? tr : 0) - m[i][j];
+    mp.volume = vol;
+    mp.com = com;
+    mp.inertia = I;
+    return mp;
+}
+
+/* The sum of parts' mass properties (each about its own centre of mass). */
+static mass_props mass_add(mass_props a, mass_props b)
+{
+    double v = a.volume + b.volume;
+    if (!(v > 0)) return a;
+    vec3 c = v3_scale(v3_add(v3_scale(a.com, a.volume), v3_scale(b.com, b.volume)), 1 / v);
+    mat3 I = m3_zero();
+    const mass_props *part[2] = {&a, &b};
+    for (int k = 0; k < 2; k++) {
+        vec3 d = v3_sub(part[k]->com, c);
+        double dd[3] = {d.x, d.y, d.z}, l2 = v3_len2(d);
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                I.m[i][j] += part[k]->inertia.m[i][j] +
+                             part[k]->volume * ((i == j ? l2 : 0) - dd[i] * dd[j]);
+    }
+    return (mass_props){v, c, I};
+}
+
+/* Piece list being made: its hulls. */
+typedef struct {
+    shape_piece *p;
+    int n, cap;
+} piece_list;
+
+/* Adds the exact hull of the n points pts as a piece; -1 with err on failure
+ * (what names the piece in the message). */
+static int piece_add(piece_list *pl, const vec3 *pts, int n, const char *what, char *err,
+                     size_t errlen)
+{
+    if (pl->n == pl->cap) {
+        int cap = pl->cap ? 2 * pl->cap : 8;
+        shape_piece *np = realloc(pl->p, (size_t)cap * sizeof *np);
+        if (!np) {
+            errmsg_set(err, errlen, "polyhedron: out of memory for its pieces");
+            return -1;
+        }
+        pl->p = np;
+        pl->cap = cap;
+    }
+    char why[200];
+    shape_piece *pc = &pl->p[pl->n];
+    memset(pc, 0, sizeof *pc);
+    pc->hull = poly_hull_merge(pts, n, 0, why, sizeof why);
+    if (!pc->hull) {
+        errmsg_set(err, errlen, "polyhedron: %s makes no solid: %s", what, strip_hull(why));
+        return -1;
+    }
+    pl->n++;
+    if (!(pc->feat = closest_hull_new(pc->hull))) {
+        errmsg_set(err, errlen, "out of memory for the closest-feature data");
+        return -1;
+    }
+    const poly *h = pc->hull;
+    pc->box_lo = pc->box_hi = h->v[0];
+    for (int k = 1; k < h->nv; k++) {
+        pc->box_lo = v3_min(pc->box_lo, h->v[k]);
+        pc->box_hi = v3_max(pc->box_hi, h->v[k]);
+    }
+    pc->c = v3_scale(v3_add(pc->box_lo, pc->box_hi), 0.5);
+    for (int k = 0; k < h->nv; k++) pc->r = fmax(pc->r, v3_dist(h->v[k], pc->c));
+    return 0;
+}
+
+static void pieces_free(piece_list *pl)
+{
+    for (int k = 0; k < pl->n; k++) {
+        closest_hull_free(pl->p[k].feat);
+        poly_free(pl->p[k].hull);
+    }
+    free(pl->p);
+}
+
+/* The pieces of src at the scaled points pts: each run of faces the hull of its
+ * points, or, when fixed and the run closes no volume, one slab per face. */
+static int make_pieces(const shape_source *src, const vec3 *pts, bool fixed, double thick,
+                       piece_list *pl, int *slabs, char *err, size_t errlen)
+{
+    int runs = src->npieces > 1 ? src->npieces : 1, maxc = 0;
+    for (int f = 0; f < src->nf; f++) maxc = fmax(maxc, src->face_first[f + 1] - src->face_first[f]);
+    vec3 *buf = malloc((size_t)(src->np + 2 * maxc + 1) * sizeof *buf);
+    int *seen = calloc((size_t)src->np + 1, sizeof *seen);
+    int rc = buf && seen ? 0 : -1;
+    if (rc) errmsg_set(err, errlen, "polyhedron: out of memory for its pieces");
+    char what[96];
+    for (int k = 0; k < runs && rc == 0; k++) {
+        int first = src->npieces > 1 ? src->piece_first[k] : 0;
+        int last = src->npieces > 1 ? src->piece_first[k + 1] : src->nf;
+        if (fixed && !faces_solid(src, first, last)) {
+            for (int f = first; f < last && rc == 0; f++) {
+                vec3 n = face_newell(src, pts, f);
+                double l = v3_len(n);
+                if (!(l > 0)) continue; /* (no area: no slab) */
+                n = v3_scale(n, -thick / l);
+                int m = 0;
+                for (int c = src->face_first[f]; c < src->face_first[f + 1]; c++) {
+                    buf[m++] = pts[src->corner[c]];
+                    buf[m++] = v3_add(pts[src->corner[c]], n);
+                }
+                snprintf(what, sizeof what, "the slab of face %d", f + 1);
+                rc = piece_add(pl, buf, m, what, err, errlen);
+                (*slabs)++;
+            }
+            continue;
+        }
+        int m = 0;
+        for (int c = src->face_first[first]; c < src->face_first[last]; c++)
+            if (seen[src->corner[c]] != k + 1) {
+                seen[src->corner[c]] = k + 1;
+                buf[m++] = pts[src->corner[c]];
+            }
+        snprintf(what, sizeof what, "piece %d of %d (%d points)", k + 1, runs, m);
+        rc = piece_add(pl, buf, m, what, err, errlen);
+        if (rc && !fixed)
+            errmsg_set(err + strlen(err), errlen - strlen(err),
+                       "; a static object (mass = -1 before file) makes an open piece a slab "
+                       "per face");
+    }
+    free(buf);
+    free(seen);
+    return rc;
+}
+
+/* The scaled points of s's source into *out (allocated): -1 with err when one
+ * lies beyond LIM_LENGTH_MAX of the origin. */
+static int scaled_points(const shape *s, vec3 **out, char *err, size_t errlen)
 {
     const shape_source *src = s->p.src;
     vec3 k = s->p.scale;
-    if (!src) return build_box(s, k, "polyhedron: the box of scale", err, errlen);
     vec3 *pts = malloc((size_t)(src->np > 0 ? src->np : 1) * sizeof *pts);
     if (!pts) {
         errmsg_set(err, errlen, "polyhedron: out of memory for %d points", src->np);
@@ -381,32 +640,141 @@ static int build_polyhedron(shape *s, char *err, size_t errlen)
         }
         pts[i] = q;
     }
+    *out = pts;
+    return 0;
+}
+
+static int build_polyhedron(shape *s, char *err, size_t errlen)
+{
+    const shape_source *src = s->p.src;
+    vec3 k = s->p.scale;
+    if (!src) return build_box(s, k, "polyhedron: the box of scale", err, errlen);
+    vec3 *pts;
+    if (scaled_points(s, &pts, err, errlen) != 0) return -1;
     char why[200];
-    /* the exact hull: "the hull of all its vertices", and shape_off_hull's test is
-     * then exact too */
-    s->hull = poly_hull_merge(pts, src->np, 0, why, sizeof why);
-    free(pts);
-    if (!s->hull) {
-        errmsg_set(err, errlen, "polyhedron: its %d points make no solid: %s", src->np,
-                strip_hull(why));
+    bool whole = src->nf == 0 || (src->npieces <= 1 && !(s->p.fixed && !faces_solid(src, 0, src->nf)));
+    piece_list pl = {0};
+    int slabs = 0;
+    if (!whole && make_pieces(src, pts, s->p.fixed, s->p.thickness, &pl, &slabs, err, errlen) != 0) {
+        pieces_free(&pl);
+        free(pts);
         return -1;
+    }
+    whole = whole || (pl.n == 1 && slabs == 0);
+    if (whole) {
+        /* one piece: the exact hull of all the points ("the hull of all its
+         * vertices"), and shape_off_hull's test is then exact too */
+        pieces_free(&pl);
+        pl = (piece_list){0};
+        s->hull = poly_hull_merge(pts, src->np, 0, why, sizeof why);
+        if (!s->hull) {
+            errmsg_set(err, errlen, "polyhedron: its %d points make no solid: %s%s", src->np,
+                       strip_hull(why),
+                       s->p.fixed ? "" : "; a static object (mass = -1 before file) makes an "
+                                         "open piece a slab per face");
+            free(pts);
+            return -1;
+        }
+    } else {
+        /* the hull of them all: a bound of the whole, as the hand and the view see it */
+        int nv = 0;
+        for (int p = 0; p < pl.n; p++) nv += pl.p[p].hull->nv;
+        vec3 *all = malloc((size_t)nv * sizeof *all);
+        nv = 0;
+        for (int p = 0; all && p < pl.n; p++)
+            for (int v = 0; v < pl.p[p].hull->nv; v++) all[nv++] = pl.p[p].hull->v[v];
+        s->hull = all ? poly_hull_merge(all, nv, 0, why, sizeof why) : NULL;
+        free(all);
+        if (!s->hull) {
+            errmsg_set(err, errlen, "polyhedron: its pieces make no solid together: %s",
+                       all ? strip_hull(why) : "out of memory");
+            pieces_free(&pl);
+            free(pts);
+            return -1;
+        }
+        s->pieces = pl.n;
+        s->piece = pl.p;
+        s->slabs = slabs;
+        for (int p = 0; p < pl.n; p++) {
+            pl.p[p].face0 = s->nfaces;
+            s->nfaces += pl.p[p].hull->nf;
+        }
     }
     int rc = src->draw.nt > 0 ? scaled_mesh(s, &src->draw, k) : hull_mesh(s->hull, &s->draw);
     if (rc < 0) {
         errmsg_set(err, errlen, "polyhedron: out of memory for its mesh");
+        free(pts);
         return -1;
     }
-    s->mass = poly_mass(s->hull);
-    s->r_in = poly_inner_radius(s->hull, s->mass.com);
+    s->mass_from = MASS_HULL;
+    if (whole) {
+        s->mass = poly_mass(s->hull);
+    } else {
+        s->mass_from = MASS_PIECES;
+        s->mass = poly_mass(s->piece[0].hull);
+        for (int p = 1; p < s->pieces; p++) s->mass = mass_add(s->mass, poly_mass(s->piece[p].hull));
+    }
+    s->r_out = poly_outer_radius(s->hull, s->mass.com); /* (shape_off_hull's tolerance) */
+    /* a closed mesh's own, unless it is its hull (the hull's are the same, and
+     * were what such a file had before pieces: the same motion to the bit) */
+    if ((!whole || shape_off_hull(s) > 0) && slabs == 0 && faces_closed(src, 0, src->nf)) {
+        mass_props mm = mesh_mass(src, pts);
+        if (mm.volume > 1e-12 * s->mass.volume) {
+            s->mass = mm;
+            s->mass_from = MASS_MESH;
+        }
+    }
+    free(pts);
+    if (whole) {
+        s->r_in = poly_inner_radius(s->hull, s->mass.com);
+    } else {
+        s->r_in = 0; /* (a bound the schedule takes off a turning object's gap) */
+        if (!(s->feat = closest_hull_new(s->hull))) {
+            errmsg_set(err, errlen, "out of memory for the closest-feature data");
+            return -1;
+        }
+    }
     s->r_out = poly_outer_radius(s->hull, s->mass.com);
     return 0;
+}
+
+int shape_face_piece(const shape *s, int face, int *local)
+{
+    *local = face;
+    if (s->pieces <= 1) return s->hull && face >= 0 && face < s->hull->nf ? 0 : -1;
+    if (face < 0 || face >= s->nfaces) return -1;
+    int lo = 0, hi = s->pieces - 1;
+    while (lo < hi) {
+        int mid = (lo + hi + 1) / 2;
+        if (s->piece[mid].face0 <= face) lo = mid;
+        else hi = mid - 1;
+    }
+    *local = face - s->piece[lo].face0;
+    return lo;
+}
+
+const poly *shape_face(const shape *s, int face, int *local)
+{
+    int k = shape_face_piece(s, face, local);
+    return k < 0 ? NULL : shape_piece_hull(s, k);
+}
+
+/* True when the plane of normal n through mid supports hull h (either way round)
+ * within tol; *j the vertex a climb starts from. */
+static bool on_hull(const poly *h, vec3 n, vec3 mid, double tol, int *j)
+{
+    for (int side = 0; side < 2; side++, n = v3_neg(n)) {
+        *j = poly_climb(h, n, *j);
+        if (v3_dot(n, v3_sub(h->v[*j], mid)) <= tol) return true;
+    }
+    return false;
 }
 
 long shape_off_hull(const shape *s)
 {
     const poly *h = s->hull;
     const mesh *m = &s->draw;
-    if (!h || s->p.kind != SHAPE_POLYHEDRON) return 0;
+    if (!h || s->p.kind != SHAPE_POLYHEDRON || s->slabs > 0) return 0;
     double tol = 1e-6 * s->r_out;
     long off = 0;
     int j = 0;
@@ -417,9 +785,13 @@ long shape_off_hull(const shape *s)
         n = v3_norm(n);
         vec3 mid = v3_scale(v3_add(a, v3_add(b, c)), 1.0 / 3);
         bool on = false;
-        for (int side = 0; side < 2 && !on; side++, n = v3_neg(n)) {
-            j = poly_climb(h, n, j);
-            on = v3_dot(n, v3_sub(h->v[j], mid)) <= tol;
+        if (s->pieces <= 1) on = on_hull(h, n, mid, tol, &j);
+        /* on the surface of a piece whose box holds it */
+        for (int k = 0; k < s->pieces && s->pieces > 1 && !on; k++) {
+            const shape_piece *pc = &s->piece[k];
+            if (v3_dist(mid, pc->c) > pc->r + tol) continue;
+            int jk = 0;
+            on = on_hull(pc->hull, n, mid, tol, &jk);
         }
         if (!on) off++;
     }
@@ -476,8 +848,11 @@ int shape_build(shape *s, const shape_params *p, char *err, size_t errlen)
         errmsg_set(err, errlen, "unknown shape kind %d", (int)params.kind);
         rc = -1;
     }
-    if (rc == 0) { /* one piece, and the bounding box, in body axes */
-        s->pieces = 1;
+    if (rc == 0) { /* one piece unless more were made, and the bounding box, in body axes */
+        if (s->pieces == 0) {
+            s->pieces = 1;
+            s->nfaces = s->hull ? s->hull->nf : 0;
+        }
         vec3 r = v3(s->p.radius, s->p.radius, s->p.radius);
         s->box_lo = v3_neg(r);
         s->box_hi = r;
@@ -489,7 +864,7 @@ int shape_build(shape *s, const shape_params *p, char *err, size_t errlen)
         }
     }
     /* the Voronoi regions of the hull's features, for closest-feature tracking */
-    if (rc == 0 && s->hull && !(s->feat = closest_hull_new(s->hull))) {
+    if (rc == 0 && s->hull && !s->feat && !(s->feat = closest_hull_new(s->hull))) {
         errmsg_set(err, errlen, "out of memory for the closest-feature data");
         rc = -1;
     }

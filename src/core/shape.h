@@ -35,8 +35,10 @@ typedef struct {
 } mesh;
 
 /* A polyhedron's geometry as its maker gives it (a mesh file: src/mesh/), in the
- * maker's units, before the shape's scale: the points whose convex hull collides
- * and the mesh drawn (no triangles: the hull is drawn).  The points are distinct
+ * maker's units, before the shape's scale: the points, the mesh drawn (no
+ * triangles: the hull is drawn), and the maker's faces (polygons, corners into
+ * pts) in runs, one run per convex piece.  Each piece collides as the hull of its
+ * faces' points; a source without faces is one piece, the hull of all its points.  The points are distinct
  * and in a canonical order (the maker sorts them), so that the same points give
  * the same hull to the bit whatever order or format they came in.  It never
  * changes once made.  A body owns the one of its parameters (body.h); shapes
@@ -45,6 +47,13 @@ typedef struct shape_source {
     int np;
     vec3 *pts;
     mesh draw;
+    int nf;               /* faces: face f's corners are corner[face_first[f] ..
+                           * face_first[f + 1] - 1]; 0: none */
+    int *face_first;      /* nf + 1 offsets */
+    int *corner;          /* each corner's point (into pts) */
+    int npieces;          /* runs of faces: piece k's are piece_first[k] ..
+                           * piece_first[k + 1] - 1; 0 or 1: one piece */
+    int *piece_first;     /* npieces + 1 offsets */
     void (*release)(struct shape_source *src);
 } shape_source;
 
@@ -64,14 +73,42 @@ typedef struct {
     vec3 scale;              /* polyhedron: its source's units into metres (each > 0) */
     shape_source *src;       /* polyhedron: its geometry; NULL: the box a new cube
                               * is, scaled */
+    double thickness;        /* polyhedron: a static open piece's slabs, m (> 0) */
+    bool fixed;              /* polyhedron: static, so that a piece whose faces do
+                              * not close a volume becomes one slab per face */
 } shape_params;
+
+/* One convex piece of a shape of several (a rigid union: shape.pieces > 1), in
+ * the body frame. */
+typedef struct {
+    poly *hull;
+    closest_hull *feat;
+    vec3 box_lo, box_hi; /* its box, in body axes */
+    vec3 c;              /* the centre of that box, and the radius about it that */
+    double r;            /*   holds the piece */
+    int face0;           /* its first face in the shape's numbering of faces (the
+                          * pieces' faces one after another) */
+} shape_piece;
+
+/* How a polyhedron's mass properties were found (shape.mass_from). */
+typedef enum {
+    MASS_HULL,   /* its one convex piece's hull (a primitive's: its own) */
+    MASS_MESH,   /* the closed, consistently oriented mesh: signed tetrahedra */
+    MASS_PIECES  /* the union of its pieces' hulls: overlaps counted twice */
+} mass_source;
 
 typedef struct {
     shape_params p;
     poly *hull;          /* collision polyhedron; NULL for a sphere */
     mesh draw;           /* what the renderer draws */
     bool draw_borrowed;  /* draw is the source's own (a polyhedron at scale 1) */
-    int pieces;          /* convex pieces it collides as: 1 */
+    int pieces;          /* convex pieces it collides as */
+    shape_piece *piece;  /* pieces > 1: each piece; hull and feat are then the
+                          * hull of them all (a bound, never used with the
+                          * features of a query: those name their piece) */
+    int nfaces;          /* faces of its pieces together (shape_face) */
+    mass_source mass_from;
+    int slabs;           /* pieces that are slabs of a static open piece's faces */
     mass_props mass;     /* unit density, body frame */
     double r_in, r_out;  /* inscribed and circumscribed radius about mass.com */
     vec3 box_lo, box_hi; /* the box, in body axes, that holds the shape */
@@ -79,15 +116,21 @@ typedef struct {
 } shape;
 
 /* The thesis's defaults for a primitive of the given kind: radius 1, size (1,1,1),
- * exponents 1, a1..a3 1, resolutions 10; scale (1,1,1) and no source. */
+ * exponents 1, a1..a3 1, resolutions 10; scale (1,1,1), no source, thickness
+ * 0.02 m. */
 shape_params shape_defaults(shape_kind kind);
 
 /* Builds s from p (s need not be initialised).  Returns 0, or -1 with a message in
  * err (then s holds nothing to free).  Parameters are assumed validated: positive
  * sizes, exponents > 0, resolutions >= 3, scale components within core/limits.h's
  * lengths.  A polyhedron's points, scaled, must lie within LIM_LENGTH_MAX of its
- * origin on each axis and not all in one plane: its collision shape is their exact
- * convex hull (poly_hull_merge at angle 0), its mass properties the hull's. */
+ * origin on each axis.  Each of its pieces collides as the exact convex hull of
+ * its points (poly_hull_merge at angle 0), which must not lie in one plane; but a
+ * fixed (static) piece whose faces do not close a volume becomes one slab per
+ * face instead, `thickness` deep behind it (opposite its normal).  Mass
+ * properties: one convex piece's are its hull's; else the signed tetrahedra sum
+ * of the source's faces when they close consistently oriented volumes (every
+ * edge run once each way), else the sum over the pieces' hulls (mass_from). */
 int shape_build(shape *s, const shape_params *p, char *err, size_t errlen);
 
 void shape_free(shape *s);
@@ -97,6 +140,27 @@ void shape_free(shape *s);
  * r_out): none for a convex mesh, some for a concave one, which collides as its
  * hull.  0 for a sphere. */
 long shape_off_hull(const shape *s);
+
+/* The hull of piece k of s (its own hull when it has one piece). */
+static inline const poly *shape_piece_hull(const shape *s, int k)
+{
+    return s->pieces > 1 ? s->piece[k].hull : s->hull;
+}
+
+/* Face `face` of s in its numbering of faces (the pieces' one after another):
+ * the piece's hull, and the face's index in it in *local; NULL when there is no
+ * such face. */
+const poly *shape_face(const shape *s, int face, int *local);
+
+/* The piece face `face` of s is on (its index in that piece in *local), or -1
+ * when there is no such face. */
+int shape_face_piece(const shape *s, int face, int *local);
+
+/* The number, in s's numbering, of face `local` of piece k. */
+static inline int shape_face_number(const shape *s, int k, int local)
+{
+    return s->pieces > 1 ? s->piece[k].face0 + local : local;
+}
 
 /* s placed with body frame to world p -> q p q* + x, as closest-feature queries
  * take it. */

@@ -78,7 +78,8 @@ static double search(world *w, long k, double t_step, double t_end, double *agai
     if (step_moves(w, p->b)) from = d_max(from, fb->t0);
     /* no further than either flight lasts: an object's own event ends it */
     double to = d_min(t_end, d_min(w->step.event[p->a], w->step.event[p->b]));
-    toi_output o = toi_find(w, &(toi_input){p->a, p->b, p->hit, from, d_max(from, to)});
+    toi_output o = toi_find(w, &(toi_input){p->a, p->b, p->hit, from, d_max(from, to),
+                                            pair_pieces(w, p)});
     w->st.pair_checks += o.queries;
     p->toi_fa = fa->id;
     p->toi_fb = fb->id;
@@ -212,7 +213,7 @@ static void find_contacts(world *w)
         double touch = tol_touch(a, b);
         if (r.distance <= touch && r.distance >= -touch) {
             p->touching = true;
-            p->hit = p->cache;
+            pair_hit_from_query(w, p);
             a->woken = b->woken = true;
         }
     }
@@ -416,7 +417,7 @@ int sim_frame_hooked(world *w, const sim_hook *hook, char *err, size_t errlen)
     /* the pairs' closest features only speed queries up, but where features are
      * equally close they pick which is reported: every frame starts from none, so
      * that a world read back from save (which has none) goes on to the bit */
-    for (long k = 0; k < w->pairs.n; k++) w->pairs.p[k].cache.valid = w->pairs.p[k].hit.valid = false;
+    for (long k = 0; k < w->pairs.n; k++) pair_forget(w, &w->pairs.p[k]);
     /* and each object's w is the one its L and orientation give, as when read back */
     for (int i = 0; i < w->n; i++)
         if (!body_is_static(w->bodies[i])) body_update_w(w->bodies[i]);

@@ -150,12 +150,13 @@ static double envelope_time(const body *a, const sched_move *ma, const body *b,
 
 /* How a (moving as ma) and b (mb), touching with closest result r, meet there: 1
  * when some point of their contact region closes (approach) or is pressed together
- * (the relative acceleration along the normal closes), else 0. */
+ * (the relative acceleration along the normal closes), else 0.  (Bodies of
+ * several pieces: at the pair of pieces r names alone.) */
 static int meeting(const body *a, const sched_move *ma, const body *b, const sched_move *mb,
                    const closest_result *r, double tol)
 {
     cpoint cp[CONTACT_MAX_POINTS];
-    int n = contact_cpoints(a, b, r, tol, cp, CONTACT_MAX_POINTS);
+    int n = contact_cpoints_of_pieces(a, b, r, tol, cp, CONTACT_MAX_POINTS);
     flight_motion fa = flight_motion_of(a, ma->moves, ma->a, ma->held ? &ma->c : NULL);
     flight_motion fb = flight_motion_of(b, mb->moves, mb->a, mb->held ? &mb->c : NULL);
     double su = tol_speed(a, b), sc = tol_accel(a, b);
@@ -172,19 +173,75 @@ static int meeting(const body *a, const sched_move *ma, const body *b, const sch
     return 0;
 }
 
+/* The time, never late, before which a and b, d apart, cannot close their gap to
+ * target whatever the direction: their points' relative speed is at most the
+ * centres' |v_a - v_b| and each turn's rate R, and grows by at most the centres'
+ * |a_a - a_b| and 2 rate^2 R each a second.  For bodies of several pieces, whose
+ * nearest pieces change as they move: a bound along the normal of the nearest
+ * (the schedule's) holds only for convex shapes. */
+static double any_way_time(const body *a, const sched_move *ma, const body *b, const sched_move *mb,
+                           double d, double target)
+{
+    double goal = d - target - tol_margin(a, b);
+    if (!(goal > 0)) return 0;
+    vec3 va = ma->moves ? ma->v : v3(0, 0, 0), vb = mb->moves ? mb->v : v3(0, 0, 0);
+    vec3 aa = ma->moves ? ma->a : v3(0, 0, 0), ab = mb->moves ? mb->a : v3(0, 0, 0);
+    double ra = ma->moves ? ma->rate : 0, rb = mb->moves ? mb->rate : 0;
+    double s = v3_len(v3_sub(va, vb)) + ra * ma->reach + rb * mb->reach;
+    double acc = v3_len(v3_sub(aa, ab)) + 2 * (ra * ra * ma->reach + rb * rb * mb->reach);
+    /* goal = s t + acc t^2 / 2: the positive root, in the stable form */
+    if (!(s > 0) && !(acc > 0)) return HUGE_VAL;
+    double t = 2 * goal / (s + sqrt(s * s + 2 * acc * goal));
+    return t * (1 - 1e-12);
+}
+
 /* The time, never late, before which a and b (distance d apart, closest result
  * r) cannot close their gap down to target: the later of the schedule's bound
  * and the points' (envelope_time), looked for within T. */
 static double advance(const body *a, const sched_move *ma, const body *b, const sched_move *mb,
-                      const closest_result *r, double d, double target, double T)
+                      const closest_result *r, double d, const pieces_near *near, double target,
+                      double T)
 {
     if (!(d > target)) return 0;
+    /* bodies of several pieces: each pair of pieces the query met as two convex
+     * bodies, the others (no nearer than near->others) whatever their direction */
+    double dt_near = HUGE_VAL;
+    for (int k = 0; near && k < near->n; k++) {
+        const closest_result *q = &near->r[k];
+        body tq, tr;
+        const body *qa = pieces_view(a, q->ka, &tq), *qb = pieces_view(b, q->kb, &tr);
+        if (q->status != CLOSEST_SEPARATED || !(q->distance > target)) return 0;
+        dt_near = d_min(dt_near, sched_ca_time(qa, ma, qb, mb, q->distance, q->normal, q->pa, q->pb, target));
+    }
+    if (near && near->others < HUGE_VAL)
+        dt_near = d_min(dt_near, any_way_time(a, ma, b, mb, near->others, target));
+    body ta, tb;
+    if (near) { /* (only bodies of several pieces have them) */
+        a = pieces_view(a, r->ka, &ta);
+        b = pieces_view(b, r->kb, &tb);
+    }
     double dt = sched_ca_time(a, ma, b, mb, d, r->normal, r->pa, r->pb, target);
     /* the points' bound costs a pass over their vertices: only where the surfaces'
      * would crawl (a twentieth of what is left to search, or less) */
     if (dt < TOI_ENVELOPE_WHEN * T)
         dt = d_max(dt, envelope_time(a, ma, b, mb, r->normal, r->pb, target, T));
-    return dt;
+    return d_min(dt, dt_near);
+}
+
+/* A search of a pair in lasting contact (its bodies of several pieces: pieces.h)
+ * leaves out the pairs of pieces that touch as it begins (within the contact
+ * region's thickness: a lasting contact hovers above it): the contact forces
+ * keep those; it looks for another of their pieces meeting.  Marks them held. */
+static void held_pieces(world *w, const toi_input *in, piece_pairs *pp, double touch)
+{
+    long k = pair_index(w, in->a, in->b);
+    bool lasting = k >= 0 && w->pairs.p[k].touching;
+    if (lasting) {
+        const body *a = step_flown(w, in->a, in->lo, 0), *b = step_flown(w, in->b, in->lo, 0);
+        pieces_hold(a, b, pp, d_max(touch, tol_contact(a, b)));
+        return;
+    }
+    for (int t = 0; t < pp->n; t++) pp->e[t].held = false;
 }
 
 toi_output toi_find(world *w, const toi_input *in)
@@ -194,18 +251,25 @@ toi_output toi_find(world *w, const toi_input *in)
     closest_cache cache = in->cache;
     double t = in->lo;
     const body *A0 = w->bodies[in->a], *B0 = w->bodies[in->b];
+    piece_pairs *pp = in->pieces && in->pieces->n > 0 ? in->pieces : NULL;
+    for (int k = 0; pp && k < pp->n; k++) pp->e[k].found = pp->e[k].hit;
     double touch = tol_touch(A0, B0);
+    if (pp) held_pieces(w, in, pp, touch);
     double depth0 = 0; /* how deep in the pair was when first found in (by rounding) */
     while (out.queries < TOI_MAX_QUERIES) {
         const body *a = step_flown(w, in->a, t, 0), *b = step_flown(w, in->b, t, 0);
-        closest_result r = body_distance_apart(a, b, &cache);
+        pieces_near near_, *near = pp ? &near_ : NULL;
+        closest_result r = pp ? pieces_distance_near(a, b, pp, PIECES_SEARCH, false, near)
+                              : body_distance_apart(a, b, &cache);
         out.queries++;
         if (r.status == CLOSEST_INVALID) return out;
         sched_move ma = step_move(w, in->a, a), mb = step_move(w, in->b, b);
         double d = r.status == CLOSEST_SEPARATED ? r.distance : 0, target = 0.5 * touch, inside = 0;
         if (d <= touch) {
             if (r.status != CLOSEST_SEPARATED) {
-                r = body_distance(a, b, &cache); /* the normal, with the depth */
+                /* the normal, with the depth */
+                r = pp ? pieces_distance_near(a, b, pp, PIECES_SEARCH, true, near)
+                       : body_distance(a, b, &cache);
                 out.queries++;
             }
             double thick = touch + (r.status == CLOSEST_SEPARATED ? 0 : -r.distance);
@@ -223,7 +287,7 @@ toi_output toi_find(world *w, const toi_input *in)
                 depth0 = d_max(depth0, inside);
             }
         }
-        double dt = advance(a, &ma, b, &mb, &r, d, target, in->hi - t);
+        double dt = advance(a, &ma, b, &mb, &r, d, near, target, in->hi - t);
         if (!(t + dt > t)) {
             /* apart by less than rounding, not meeting: the time to move a contact
              * distance at their relative speed */
@@ -239,7 +303,7 @@ toi_output toi_find(world *w, const toi_input *in)
             /* apart through hi; they cannot touch before their gap could close to
              * the contact distance (not the search's half of it: that is where it
              * would look next) */
-            double key = d > touch ? t + advance(a, &ma, b, &mb, &r, d, touch, HUGE_VAL) : t;
+            double key = d > touch ? t + advance(a, &ma, b, &mb, &r, d, near, touch, HUGE_VAL) : t;
             out.t = d_max(key, nextafter(in->hi, HUGE_VAL));
             return out;
         }

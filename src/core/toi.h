@@ -17,6 +17,7 @@
 
 #include "body.h"
 #include "closest.h"
+#include "pieces.h"
 
 typedef struct world world;
 
@@ -24,6 +25,9 @@ typedef struct {
     int a, b;             /* the two objects (body indices, a < b) */
     closest_cache cache;  /* the features to start from */
     double lo, hi;        /* search [lo, hi]: absolute times */
+    piece_pairs *pieces;  /* the pair's piece pairs (pieces.h), whose hit features
+                           * it starts from, and whose found ones it ends on, when
+                           * it has any; else cache alone */
 } toi_input;
 
 typedef enum {

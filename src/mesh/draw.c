@@ -103,10 +103,101 @@ void mesh_source_release(shape_source *src)
 {
     free(((mesh_source *)src)->path);
     free(src->pts);
+    free(src->face_first);
+    free(src->corner);
+    free(src->piece_first);
     free(src->draw.pos);
     free(src->draw.nrm);
     free(src->draw.tri);
     free(src);
+}
+
+/* ---- the pieces ---- */
+
+static int root_of(int *parent, int v)
+{
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+}
+
+/* Each face's piece into piece[] (the file's groups when it names more than one,
+ * else the connected components of its faces, joined at shared vertices, in the
+ * order of their first faces): their number, or -1 when out of memory. */
+static int pieces_of(const mesh_file *m, int *piece)
+{
+    if (m->ng > 1) {
+        int n = 0;
+        for (int g = 0; g < m->ng; g++) {
+            if (m->g[g].count == 0) continue;
+            for (int f = m->g[g].first; f < m->g[g].first + m->g[g].count; f++) piece[f] = n;
+            n++;
+        }
+        return n;
+    }
+    int *parent = malloc((size_t)(m->nv + 1) * sizeof *parent);
+    int *label = malloc((size_t)(m->nv + 1) * sizeof *label);
+    if (!parent || !label) {
+        free(parent);
+        free(label);
+        return -1;
+    }
+    for (int v = 0; v < m->nv; v++) parent[v] = v, label[v] = -1;
+    for (int f = 0; f < m->nf; f++) {
+        int a = root_of(parent, m->corner[m->face_first[f]]);
+        for (int c = m->face_first[f] + 1; c < m->face_first[f + 1]; c++) {
+            int b = root_of(parent, m->corner[c]);
+            if (a != b) parent[b < a ? a : b] = b < a ? b : a, a = b < a ? b : a;
+        }
+    }
+    int n = 0;
+    for (int f = 0; f < m->nf; f++) {
+        int r = root_of(parent, m->corner[m->face_first[f]]);
+        if (label[r] < 0) label[r] = n++;
+        piece[f] = label[r];
+    }
+    free(parent);
+    free(label);
+    return n;
+}
+
+/* src's faces, from m's, in runs by piece (the file's order within each). */
+static int faces_by_piece(const mesh_file *m, shape_source *src)
+{
+    long nc = m->nf > 0 ? m->face_first[m->nf] : 0;
+    int *piece = malloc((size_t)(m->nf + 1) * sizeof *piece);
+    src->face_first = malloc((size_t)(m->nf + 1) * sizeof *src->face_first);
+    src->corner = malloc((size_t)(nc + 1) * sizeof *src->corner);
+    int n = piece && src->face_first && src->corner ? pieces_of(m, piece) : -1;
+    if (n >= 0) src->piece_first = calloc((size_t)n + 2, sizeof *src->piece_first);
+    if (n < 0 || !src->piece_first) {
+        free(piece);
+        return -1;
+    }
+    /* counting sort of the faces by piece */
+    for (int f = 0; f < m->nf; f++) src->piece_first[piece[f] + 1]++;
+    for (int k = 0; k < n; k++) src->piece_first[k + 1] += src->piece_first[k];
+    int *at = malloc((size_t)(m->nf + 1) * sizeof *at), *place = malloc((size_t)(n + 1) * sizeof *place);
+    if (!at || !place) {
+        free(at);
+        free(place);
+        free(piece);
+        return -1;
+    }
+    memcpy(place, src->piece_first, (size_t)n * sizeof *place);
+    for (int f = 0; f < m->nf; f++) at[place[piece[f]]++] = f;
+    int c = 0;
+    for (int k = 0; k < m->nf; k++) {
+        int f = at[k];
+        src->face_first[k] = c;
+        for (int j = m->face_first[f]; j < m->face_first[f + 1]; j++) src->corner[c++] = m->corner[j];
+    }
+    src->face_first[m->nf] = c;
+    src->nf = m->nf;
+    src->npieces = n;
+    free(at);
+    free(place);
+    free(piece);
+    return 0;
 }
 
 /* Newell's normal of face f: its direction the face's, its length twice its area
@@ -173,6 +264,7 @@ mesh_source *mesh_source_make(const mesh_file *m, const char *path, char *err, s
     d->nrm = malloc((size_t)cap * sizeof *d->nrm);
     if (!src->pts || !d->pos || !d->nrm) goto oom;
     memcpy(src->pts, m->v, (size_t)m->nv * sizeof *src->pts);
+    if (faces_by_piece(m, src) != 0) goto oom;
     for (int f = 0; f < m->nf; f++) {
         vec3 n = newell(m, f);
         double l = v3_len(n);

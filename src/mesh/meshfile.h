@@ -12,7 +12,8 @@
  * allocated.  The readers use no library but libc.
  *
  * mesh_source_make then makes the core's shape_source (core/shape.h): the welded
- * points, and a triangle mesh of the file's own faces to draw (concave polygons
+ * points, the faces in runs by convex piece (the groups when the file names more
+ * than one, else the connected components of the faces), and a triangle mesh of the file's own faces to draw (concave polygons
  * cut into triangles by ear clipping; the file's normals, or smooth ones made
  * where it gives none, with creases kept at sharp edges).
  */

@@ -161,6 +161,9 @@ cmd_status cmd_distance(shell *sh, const stmt *st)
     writer_vec(sh->out, r.normal, s);
     fprintf(sh->out, "\nfeature_A = %s\nfeature_B = %s\n", feature_name(r.fa, fa),
             feature_name(r.fb, fb));
+    /* (bodies of several pieces: whose hull the feature is of) */
+    if (sh->w.bodies[ia]->shape.pieces > 1) fprintf(sh->out, "piece_A = %d\n", r.ka + 1);
+    if (sh->w.bodies[ib]->shape.pieces > 1) fprintf(sh->out, "piece_B = %d\n", r.kb + 1);
     const body *A = sh->w.bodies[ia], *B = sh->w.bodies[ib];
     fprintf(sh->out, "friction = %s\n", fmt_shown(a, friction_mu(A, B), s));
     fprintf(sh->out, "rolling_friction = %s\n", fmt_shown(a, friction_rolling(A, B), s));

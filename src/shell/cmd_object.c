@@ -261,6 +261,12 @@ cmd_status cmd_file(shell *sh, const stmt *st)
                 "its hull, not as drawn; to collide as drawn, split it offline into convex "
                 "pieces (CoACD or V-HACD) saved as OBJ groups",
                 st->word, off, b->shape.draw.nt);
+    if (b->shape.mass_from == MASS_PIECES && !body_is_static(b))
+        sh_warn(sh, st,
+                "'%s': its faces do not close a consistently oriented surface, so its mass "
+                "properties are those of its %d pieces' hulls together, where overlaps count "
+                "twice",
+                st->word, b->shape.pieces);
     return CMD_OK;
 }
 

@@ -16,6 +16,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 
+#include "core/pieces.h"
 #include "handlers.h"
 #include "shell.h"
 
@@ -182,6 +183,9 @@ static bool clear_of(const ball *b, vec3 c, double r)
 {
     if (v3_dist(c, b->c) >= r + b->r) return true;
     if (!b->obj) return false;
+    /* (a body of several pieces, a room of one file, piece by piece: the hull of
+     * them all would fill the room) */
+    if (body_compound(b->obj)) return pieces_ball_gap(b->obj, c, r) > 0;
     closest_proxy place = {NULL, NULL, r, v3(0, 0, 0), c, q_identity()};
     closest_proxy there = shape_proxy(&b->obj->shape, b->obj->x, b->obj->q);
     return closest_distance_apart(&place, &there, NULL).status == CLOSEST_SEPARATED;

@@ -95,6 +95,7 @@ const command command_table[] = {
     {"file", FORM_PROPERTY, VAL_FILE, 0, 0, 0, NULL, C_POLY, OWN_NONE, offsetof(body, sp.src),
      cmd_file, NO_AFTER},
     PROP("scale", VAL_SCALE, R_RANGE, LIM_LENGTH_MIN, LIM_LENGTH_MAX, C_POLY, sp.scale),
+    PROP("thickness", VAL_NUMBER, R_RANGE, LIM_LENGTH_MIN, LIM_LENGTH_MAX, C_POLY, sp.thickness),
     /* read only: checked against the object (print writes it) */
     {"pieces", FORM_PROPERTY, VAL_INTEGER, R_RANGE, 1, 1e6, NULL, C_POLY, OWN_NONE,
      offsetof(body, shape.pieces), cmd_pieces, NO_AFTER},
@@ -175,6 +176,7 @@ const command command_table[] = {
     CHOICE("stereo", "pair|sbs|anaglyph|mono", cmd_stereo),
     VIEW("background", VAL_COLOR, R_RANGE, 0, 255, background),
     CHOICE("real", "solid|wire|hidden", cmd_real),
+    VIEW("hulls", VAL_ONOFF, 0, 0, 0, hulls),
     VIEW("record", VAL_ONOFF, 0, 0, 0, record),
     OTHER("window", VAL_ONOFF, cmd_window),
     HANDF("hand", VAL_VECTOR, R_RANGE, -POS, POS, hand, cmd_hand),

@@ -321,6 +321,8 @@ static void polyhedron_write(FILE *out, const body *b, write_style st)
     const char *save_path = st.save_path;
     fmt_style s = st.num;
     const mesh_source *src = mesh_source_of(b->sp.src);
+    /* (before the file: a static one's open pieces are built at their thickness) */
+    fprintf(out, "thickness = %s\n", fmt_shown(a, b->sp.thickness, s));
     if (src) {
         char path[PATH_MAX];
         if (save_path) writer_path(src->path, save_path, path, sizeof path);

@@ -81,6 +81,7 @@ view_settings view_settings_defaults(void)
     s.stereo = STEREO_PAIR;
     s.real = REAL_SOLID;
     s.record = false;
+    s.hulls = false;
     s.movie_rate = 30;
     return s;
 }
@@ -359,6 +360,18 @@ static void view_draw_solid(const body *b, const view_pose *p)
     glPopMatrix();
 }
 
+/* The edges of polyhedron p, in the body's frame set up by the caller. */
+static void view_hull_edges(const poly *p)
+{
+    glBegin(GL_LINES);
+    for (int i = 0; i < p->ne; i++) {
+        vec3 a = p->v[p->e[i].v[0]], c = p->v[p->e[i].v[1]];
+        glVertex3d(a.x, a.y, a.z);
+        glVertex3d(c.x, c.y, c.z);
+    }
+    glEnd();
+}
+
 /* The body's edges, unlit, front and back: those of the collision polyhedron (the
  * real edges of a box, without the triangulation's diagonals), or the mesh's for a
  * sphere and for a polyhedron from a file (its own faces, not its hull), at pose
@@ -372,13 +385,7 @@ static void view_draw_wire(const body *b, const view_pose *pose)
     glMultMatrixd(model);
     view_color(b);
     if (p && p->ne > 0 && b->sp.kind != SHAPE_POLYHEDRON) {
-        glBegin(GL_LINES);
-        for (int i = 0; i < p->ne; i++) {
-            vec3 a = p->v[p->e[i].v[0]], c = p->v[p->e[i].v[1]];
-            glVertex3d(a.x, a.y, a.z);
-            glVertex3d(c.x, c.y, c.z);
-        }
-        glEnd();
+        view_hull_edges(p);
     } else {
         const mesh *m = &b->shape.draw;
         glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
@@ -387,6 +394,20 @@ static void view_draw_wire(const body *b, const view_pose *pose)
                             m->tri);
         glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     }
+    glPopMatrix();
+}
+
+/* A polyhedron's pieces' hulls (`hulls = on`), as wire frames in white over what
+ * is drawn of it, at pose pose (NULL: its own).  Lighting and culling must be
+ * off. */
+static void view_draw_hulls(const body *b, const view_pose *pose)
+{
+    GLdouble model[16];
+    view_model_matrix(b, pose, model);
+    glPushMatrix();
+    glMultMatrixd(model);
+    glColor3ub(255, 255, 255);
+    for (int k = 0; k < b->shape.pieces; k++) view_hull_edges(shape_piece_hull(&b->shape, k));
     glPopMatrix();
 }
 
@@ -455,13 +476,17 @@ static void view_draw_eye(view *v, const world *w, const view_pose *poses, const
         if (style == 1) view_draw_solid(w->bodies[i], poses ? &poses[i] : NULL);
         any_wire = any_wire || style == 2;
     }
-    if (any_wire) {
+    if (any_wire || s->hulls) {
         glDisable(GL_LIGHTING);
         glDisable(GL_CULL_FACE);
         glDisableClientState(GL_NORMAL_ARRAY);
-        for (int i = 0; i < w->n; i++)
-            if (view_style(w->bodies[i], s->real) == 2)
-                view_draw_wire(w->bodies[i], poses ? &poses[i] : NULL);
+        for (int i = 0; i < w->n; i++) {
+            const body *b = w->bodies[i];
+            int style = view_style(b, s->real);
+            if (style == 2) view_draw_wire(b, poses ? &poses[i] : NULL);
+            if (s->hulls && style != 0 && b->sp.kind == SHAPE_POLYHEDRON && b->shape.hull)
+                view_draw_hulls(b, poses ? &poses[i] : NULL);
+        }
         glEnableClientState(GL_NORMAL_ARRAY);
         glEnable(GL_LIGHTING);
         glEnable(GL_CULL_FACE);

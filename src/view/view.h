@@ -76,13 +76,14 @@ typedef struct {
     stereo_mode stereo;
     int background[3];        /* 0..255 */
     real_mode real;           /* how static objects are drawn */
+    bool hulls;               /* polyhedra's pieces' hulls drawn as wire frames over them */
     bool record;              /* write the views of every frame while time runs */
     double movie_rate;        /* a movie's pictures per second of simulated time */
     view_overlay overlay;     /* the hand and the panel (the shell keeps it current) */
 } view_settings;
 
 /* The start-up values: head at the origin looking along +y with z up, ipd 0.064,
- * fov 60, 640x512, output "frames", pair, black, solid, record off, movie_rate 30,
+ * fov 60, 640x512, output "frames", pair, black, solid, hulls off, record off, movie_rate 30,
  * no hand or panel drawn. */
 view_settings view_settings_defaults(void);
 
