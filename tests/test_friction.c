@@ -319,6 +319,22 @@ static void frames(world *w, int n)
     for (int i = 0; i < n; i++) assert_int_equal(sim_frame(w, err, sizeof err), 0);
 }
 
+/* w, a world under gravity with fast speed limits and frames of time_step: a
+ * level floor (its top at z = 0, half as wide as `half`) of friction mu and
+ * rolling resistance c. */
+static void rough_floor(world *w, double half, double mu, double c, double time_step)
+{
+    world_init(w);
+    w->set.force = (dir_amount){v3(0, 0, -1), G};
+    w->set.max_linear = 50;
+    w->set.max_angular = 100;
+    w->set.time_step = time_step;
+    body *floor = add_static_box(w, "floor", v3(half, half, 0.1));
+    floor->x = v3(0, 0, -0.1);
+    floor->friction = mu;
+    floor->rolling_friction = c;
+}
+
 /* A box launched along its face's diagonal slides along it, decelerating at
  * mu g, and stops where u^2 / (2 mu g) says. */
 static void box_slides_along_the_diagonal(void **state)
@@ -327,14 +343,7 @@ static void box_slides_along_the_diagonal(void **state)
     double yaws[] = {0, 0.4, -1.1};
     for (int y = 0; y < 3; y++) {
         world w;
-        world_init(&w);
-        w.set.force = (dir_amount){v3(0, 0, -1), G};
-        w.set.max_linear = 50;
-        w.set.max_angular = 50;
-        w.set.time_step = 0.05;
-        body *floor = add_static_box(&w, "floor", v3(10, 10, 0.1));
-        floor->x = v3(0, 0, -0.1);
-        floor->friction = 0.4;
+        rough_floor(&w, 10, 0.4, 0, 0.05);
         body *box = add_box(&w, "box", v3(0.2, 0.2, 0.1));
         box->friction = 0.4;
         box->elasticity = 0;
@@ -366,15 +375,7 @@ static void ball_rolls_and_slows_at_five_sevenths_c_g(void **state)
 {
     (void)state;
     world w;
-    world_init(&w);
-    w.set.force = (dir_amount){v3(0, 0, -1), G};
-    w.set.max_linear = 50;
-    w.set.max_angular = 100;
-    w.set.time_step = 0.1;
-    body *floor = add_static_box(&w, "floor", v3(50, 50, 0.1));
-    floor->x = v3(0, 0, -0.1);
-    floor->friction = 0.5;
-    floor->rolling_friction = 0.02;
+    rough_floor(&w, 50, 0.5, 0.02, 0.1);
     body *ball = add_ball(&w, "ball", 0.1);
     ball->friction = 0.5;
     ball->rolling_friction = 0.02;

@@ -266,6 +266,12 @@ static bool local_solve(double B[3][3], const double b[3], double mu, double z[3
     return false;
 }
 
+static void swap(double *a, double *b)
+{
+    double t = *a;
+    *a = *b, *b = t;
+}
+
 /* The square system M x = r (k x k, row-major, overwritten) by Gaussian
  * elimination with full pivoting; an unknown whose pivot is below 1e-13 of the
  * largest is 0 (the system is then singular: points given twice).  Returns the
@@ -287,18 +293,11 @@ static int solve_full(int k, double *M, double *r, double *x)
             break;
         }
         if (pr != c) {
-            for (int j = 0; j < k; j++) {
-                double t = M[c * k + j];
-                M[c * k + j] = M[pr * k + j], M[pr * k + j] = t;
-            }
-            double t = r[c];
-            r[c] = r[pr], r[pr] = t;
+            for (int j = 0; j < k; j++) swap(&M[c * k + j], &M[pr * k + j]);
+            swap(&r[c], &r[pr]);
         }
         if (pc != c) {
-            for (int i = 0; i < k; i++) {
-                double t = M[i * k + c];
-                M[i * k + c] = M[i * k + pc], M[i * k + pc] = t;
-            }
+            for (int i = 0; i < k; i++) swap(&M[i * k + c], &M[i * k + pc]);
             int t = perm[c];
             perm[c] = perm[pc], perm[pc] = t;
         }
