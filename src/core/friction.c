@@ -326,6 +326,11 @@ static int solve_full(int k, double *M, double *r, double *x)
  * sweep (points given twice, or nearly: a face's corners, an edge's ends). */
 #define FRICTION_STALL 1e3
 
+/* Where a pattern's system is singular, the polish's answer (its basic
+ * solution, the inconsistency left in the equations it drops) may leave up to
+ * this many times what the sweeps' answer leaves (their own share of it). */
+#define POLISH_SLACK 4
+
 /* Rounds of a polish, at most. */
 #define POLISH_ROUNDS 20
 
@@ -354,7 +359,7 @@ static bool polish(int m, const double *A, const double *q, const double *mu, do
      * singular (two points of one object side by side, whose slips along the
      * line between them are one, measured at two places), no answer of the
      * pattern leaves less than its inconsistency, and the polish's answer is
-     * kept when it leaves no more than the sweeps' */
+     * kept when it leaves about as little as the sweeps' (POLISH_SLACK) */
     double left = 0;
     for (int k = 0; k < m; k++) {
         if (kind[k] == STICK)
@@ -397,7 +402,7 @@ static bool polish(int m, const double *A, const double *q, const double *mu, do
          * the change is small) */
         for (int i = 0; i < nu; i++)
             for (int j = 0; j < nu; j++) r[i] -= M[i * nu + j] * xs[col[j]];
-        double tol_eq = solve_full(nu, M, r, x) < nu ? d_max(tol, left) : tol;
+        double tol_eq = solve_full(nu, M, r, x) < nu ? d_max(tol, POLISH_SLACK * left) : tol;
         for (int j = 0; j < nu; j++) x[j] += xs[col[j]];
         for (int j = 0; j < nu; j++) xs[col[j]] = x[j];
         for (int i = 0; i < n; i++) zz[i] = 0;
