@@ -94,3 +94,18 @@ xvfb_start() {
     export DISPLAY
 }
 xvfb_stop() { [ -n "$XPID" ] && kill "$XPID" 2>/dev/null; XPID=; }
+
+# split_runs NAME FILE: a run split anywhere equals the whole, by hash (run 10
+# then step equals run 11, run 7 then run 13 equals run 20), and the two differ.
+split_runs() {
+    h11=$("$VROC" -b -q "$2" -c "run 11; hash" 2>&1)
+    h10=$("$VROC" -b -q "$2" -c "run 10; step; hash" 2>&1)
+    h20=$("$VROC" -b -q "$2" -c "run 20; hash" 2>&1)
+    h713=$("$VROC" -b -q "$2" -c "run 7; run 13; hash" 2>&1)
+    if [ "$h11" = "$h10" ] && [ "$h20" = "$h713" ] && [ "$h11" != "$h20" ]; then
+        ok "$1: run 10 then step equals run 11, run 7 then run 13 equals run 20"
+    else
+        notok "$1: run 10 then step equals run 11, run 7 then run 13 equals run 20" \
+            "run 11: $h11" "run 10; step: $h10" "run 20: $h20" "run 7; run 13: $h713"
+    fi
+}

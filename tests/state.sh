@@ -24,16 +24,7 @@ for f in "$S"/*.vroc; do
         notok "$n: saved at frame 20 and read back, 30 frames on give the same trace and hash" \
             "$(cat "$n.a.txt" "$n.b.txt" | head -4)" "$(cmp "$n.a.csv" "$n.b.csv" 2>&1)"
     fi
-    h11=$("$VROC" -b -q "$f" -c "run 11; hash" 2>&1)
-    h10=$("$VROC" -b -q "$f" -c "run 10; step; hash" 2>&1)
-    h20=$("$VROC" -b -q "$f" -c "run 20; hash" 2>&1)
-    h713=$("$VROC" -b -q "$f" -c "run 7; run 13; hash" 2>&1)
-    if [ "$h11" = "$h10" ] && [ "$h20" = "$h713" ] && [ "$h11" != "$h20" ]; then
-        ok "$n: run 10 then step equals run 11, run 7 then run 13 equals run 20"
-    else
-        notok "$n: run 10 then step equals run 11, run 7 then run 13 equals run 20" \
-            "run 11: $h11" "run 10; step: $h10" "run 20: $h20" "run 7; run 13: $h713"
-    fi
+    split_runs "$n" "$f"
 done
 
 # saving a world whose logs are open, and reading it back, leaves the logs as they were

@@ -535,7 +535,9 @@ static void rocking_block_finds_its_next_corner(void **state)
     }
     print_message("rocking block: %ld collisions, %ld pair checks\n", collisions, checks);
     assert_true(collisions > 4);
-    assert_true(checks < 1000 * 4); /* rocking on a corner is a lasting contact: few queries */
+    /* rocking on a corner is a lasting contact: few queries (its landings on the
+     * next corners are collisions since issue 34, and it rocks on with them) */
+    assert_true(checks < 2000 * 4);
 }
 
 /* A box dropped onto a box resting on the floor: both come to rest, the top one on
@@ -569,16 +571,20 @@ static void stack_comes_to_rest(void **state)
     world_free(&w);
 }
 
-/* A box thrown down onto a box resting on the floor: the floor takes the blow
- * through the lower box (shock propagation), so there is one collision, the lower
- * box stays at rest where it was, and the upper one leaves as from a fixed
- * support, by Newton's law of restitution: at e times its speed of impact. */
+/* A box (2 kg) thrown down onto a box (1 kg) resting on the floor, restitution
+ * 0.3 between them and at the floor (the lesser of each pair's), both centred:
+ * in the limit of vanishing gaps (instant.h) the blow goes down to the floor and
+ * back up in waves, each a textbook impact of two bodies, ever smaller (from 3 m/s
+ * the eighth still closes at 0.08 m/s).  After 4 n waves of n = 2 contacts the
+ * last solve, with no restitution, stops both: the floor takes the upper box's
+ * momentum m v through the lower one, each contact's impulse m v, and the upper
+ * box does not bounce.  Both rest then where they lie. */
 static void blow_on_a_stack_passes_to_the_floor(void **state)
 {
     (void)state;
     world w;
     world_init(&w);
-    const double g = 9.8, e = 0.3, v0 = 3, gap = 0.01, step = 0.05;
+    const double g = 9.8, e = 0.3, v0 = 3, gap = 0.01, step = 0.05, m = 2;
     w.set.force = (dir_amount){v3(0, 0, -1), g};
     w.set.time_step = step;
     add_static_box(&w, "floor", v3(3, 3, 0.1));
@@ -590,31 +596,55 @@ static void blow_on_a_stack_passes_to_the_floor(void **state)
     vec3 rest = low->x;
     body *top = add_box(&w, "top", v3(0.1, 0.1, 0.1));
     top->elasticity = 0.5;
-    body_set_mass(top, 2);
-    top->x = v3(0.05, 0.02, rest.z + 0.2 + gap);
+    body_set_mass(top, m);
+    top->x = v3(0, 0, rest.z + 0.2 + gap);
     top->v = v3(0, 0, -v0);
     long before = w.st.collisions;
-    double t0 = w.time;
     frames(&w, 1);
-    /* v0 t + g t^2 / 2 = gap, then up at e times the speed of impact (it rises for
-     * 0.3 s, longer than the frame) */
+    /* v0 t + g t^2 / 2 = gap: the speed of impact */
     double ti = 2 * gap / (v0 + sqrt(v0 * v0 + 2 * g * gap)), vi = v0 + g * ti;
-    double want = e * vi - g * (w.time - t0 - ti);
-    print_message("blow: %ld collisions, v %.9f (want %.9f)\n", w.st.collisions - before, top->v.z,
-                  want);
-    assert_int_equal(w.st.collisions - before, 1);
+    /* the waves, each impact in turn: they do not end by themselves */
+    double v1 = -vi, v2 = 0;
+    for (int wave = 0; wave < 8; wave++) {
+        if (wave % 2 == 0) { /* the boxes: e * closing is above the threshold */
+            double c = v2 - v1, j = (1 + e) * c / (1 / m + 1);
+            assert_true(e * c > SIM_BOUNCE_SPEED);
+            v1 += j / m;
+            v2 -= j;
+        } else { /* the lower one off the floor */
+            assert_true(-v2 * e > SIM_BOUNCE_SPEED);
+            v2 = -e * v2;
+        }
+    }
+    assert_true(v1 < v2); /* still closing after the eighth */
+    const sim_event *tl = NULL, *lf = NULL;
+    for (long k = 0; k < w.nevents; k++) {
+        const sim_event *ev = &w.events[k];
+        if (ev->a == 1 || ev->b == 1) tl = ev->a == 2 || ev->b == 2 ? ev : tl;
+        if ((ev->a == 0 && ev->b == 1) || (ev->a == 1 && ev->b == 0)) lf = ev;
+    }
+    print_message("blow: %ld collisions, %ld instants cut, impulses %.9f and %.9f (want %.9f); the "
+                  "lower box %.3g m from where it rested\n", w.st.collisions - before, w.st.waves_cut,
+                  tl ? tl->j : 0, lf ? lf->j : 0, m * vi, v3_len(v3_sub(low->x, rest)));
+    assert_int_equal(w.st.collisions - before, 2);
+    assert_int_equal(w.st.waves_cut, 1);
+    assert_non_null(tl);
+    assert_non_null(lf);
+    assert_rel(tl->j, m * vi, 1e-6);
+    assert_rel(lf->j, m * vi, 1e-6);
     assert_int_equal(low->state, STATE_RESTING);
-    assert_true(v3_len(v3_sub(low->x, rest)) == 0);
-    assert_near(top->v.z, want, 1e-6);
+    assert_int_equal(top->state, STATE_RESTING);
+    assert_true(v3_len(v3_sub(low->x, rest)) < 1e-12);
+    assert_near(top->x.z, rest.z + 0.2, 1e-6);
     world_free(&w);
 }
 
-/* A ball falls on a ball that slides on the floor, off centre: the sliding ball is
- * held by the floor along the vertical and moves across it only.  Textbook
- * answer: the contact impulse j along the normal n and the floor's k along z with
- * the lower ball's vertical speed staying 0 (k = j n_z) and the normal relative
- * speed reversed times e; the floor does not act horizontally, so horizontal
- * momentum is kept. */
+/* A ball falls on a ball that slides on the floor, off centre.  In the limit of
+ * vanishing gaps (instant.h) the sliding ball takes the blow along the line of
+ * centres n as a free ball would, then the floor answers it along z with its
+ * restitution, and the balls again if they close: each a textbook impact,
+ * answered in turn (balls_on_floor).  The floor does not act horizontally, so
+ * horizontal momentum is kept. */
 static void blow_on_a_slider_moves_it_along_the_floor(void **state)
 {
     (void)state;
@@ -641,10 +671,6 @@ static void blow_on_a_slider_moves_it_along_the_floor(void **state)
     top->x = c1;
     top->v = v1;
     w.sched_dirty = true; /* as after a command */
-    long before = w.st.collisions;
-    double t0 = w.time;
-    frames(&w, 1);
-    assert_int_equal(w.st.collisions - before, 1);
     /* the instant of contact: |c1(t) - c2(t)| = 2 r, by bisection */
     double lo = 0, hi = step;
     for (int k = 0; k < 200; k++) {
@@ -654,18 +680,27 @@ static void blow_on_a_slider_moves_it_along_the_floor(void **state)
         else hi = t;
     }
     double ti = lo;
+    long before = w.st.collisions;
+    w.set.time_step = ti + 1e-6; /* a frame that ends just after it */
+    frames(&w, 1);
+    assert_int_equal(w.st.collisions - before, 2); /* the balls, the floor */
     vec3 d = v3_sub(v3_add(c1, v3(0, 0, v1.z * ti - 0.5 * g * ti * ti)), v3_mad(c2, v2, ti));
-    vec3 n = v3_scale(d, 1 / v3_len(d)), u1 = v3(0, 0, v1.z - g * ti);
-    double closing = -v3_dot(v3_sub(u1, v2), n), nz = n.z;
-    /* (u1 + j n / m1 - v2 - (-j n + k z) / m2) . n = e closing, with k = j nz */
-    double j = (1 + e) * closing / (1 / m1 + (1 - nz * nz) / m2);
-    vec3 want1 = v3_add(v3_mad(u1, n, j / m1), v3(0, 0, -g * (w.time - t0 - ti)));
-    vec3 want2 = v3_add(v2, v3_scale(v3_mad(v3_neg(n), v3(0, 0, 1), nz), j / m2));
-    print_message("slider: top v (%.6f %.6f %.6f) want (%.6f %.6f %.6f); low v (%.6f %.6f %.6f)\n",
-                  top->v.x, top->v.y, top->v.z, want1.x, want1.y, want1.z, low->v.x, low->v.y, low->v.z);
+    vec3 n = v3_scale(d, 1 / v3_len(d)), u1 = v3(0, 0, v1.z - g * ti), u2 = v2;
+    double j12, j2f;
+    int waves = balls_on_floor(m1, &u1, m2, &u2, n, e, e, &j12, &j2f);
+    assert_true(u2.z > 0); /* the lower ball leaves the floor: both fly on */
+    const sim_event *ev = NULL; /* the balls' */
+    for (long k = 0; k < w.nevents; k++)
+        if (w.events[k].a >= 1 && w.events[k].b >= 1) ev = &w.events[k];
+    assert_non_null(ev);
+    double after = w.time - ev->t;
+    vec3 want1 = v3_add(u1, v3(0, 0, -g * after)), want2 = v3_add(u2, v3(0, 0, -g * after));
+    print_message("slider: %d waves; top v (%.6f %.6f %.6f) want (%.6f %.6f %.6f); low v (%.6f %.6f %.6f) "
+                  "want (%.6f %.6f %.6f)\n", waves, top->v.x, top->v.y, top->v.z, want1.x, want1.y,
+                  want1.z, low->v.x, low->v.y, low->v.z, want2.x, want2.y, want2.z);
+    assert_near(ev->j, j12, 1e-6 * j12);
     assert_true(v3_len(v3_sub(top->v, want1)) < 1e-6);
     assert_true(v3_len(v3_sub(low->v, want2)) < 1e-6);
-    assert_true(low->v.z == 0);
     assert_near(m1 * top->v.x + m2 * low->v.x, m2 * v2.x, 1e-9);
     world_free(&w);
 }
@@ -786,11 +821,6 @@ static void slides_outlast_other_objects_coming_and_going(void **state)
     world_free(&w);
 }
 
-/* No force: a box strikes a wall and stops there (restitution 0 between them);
- * 5 ms later a heavy ball strikes the box, pressing it back against the wall.
- * The wall takes the blow through the box, as a support takes a blow through a
- * stack: two collisions in all, the box stays, and the ball leaves as from the
- * wall, at e times its speed. */
 /* The sandwich's world, with no force: a wall with its face at x = 0.1
  * (restitution 0), a 1 kg box 1 cm from it arriving at 1 m/s (there at 10 ms),
  * and a 5 kg ball for the caller to aim. */
@@ -810,6 +840,14 @@ static void sandwich(world *w, body **box, body **ball)
     body_set_mass(*ball, 5);
 }
 
+/* The box strikes the wall and stops there; 5 ms later the heavy ball strikes
+ * the box.  In the limit of vanishing gaps (instant.h) each blow on the box
+ * (restitution 0.5) sends it into the wall, which stops it (0), and the ball,
+ * five times heavier, comes on at 3/4 of its speed after each such pair of
+ * waves: 2, 1.5, 1.125 m/s ... ever faster, ever smaller, never apart.  After 4 n
+ * waves of n = 2 contacts the last solve with no restitution stops the ball
+ * against the box against the wall: three collisions in all, the wall and the
+ * box each taking the ball's momentum, 10 N s. */
 static void sandwich_against_a_wall_passes_the_blow_on(void **state)
 {
     (void)state;
@@ -819,21 +857,26 @@ static void sandwich_against_a_wall_passes_the_blow_on(void **state)
     ball->x = v3(0.4 + 0.03, 0, 0); /* 3 cm from the box's far side, at 2 m/s: 15 ms */
     ball->v = v3(-2, 0, 0);
     frames(&w, 1);
-    print_message("sandwich: %ld collisions, box v %.9f, ball v %.9f\n", w.st.collisions, box->v.x,
-                  ball->v.x);
-    assert_int_equal(w.st.collisions, 2);
+    print_message("sandwich: %ld collisions, %ld instants cut, box v %.9f, ball v %.9f\n",
+                  w.st.collisions, w.st.waves_cut, box->v.x, ball->v.x);
+    assert_int_equal(w.st.collisions, 3);
+    assert_int_equal(w.st.waves_cut, 1);
     assert_true(fabs(box->v.x) < 1e-12);
-    assert_near(ball->v.x, 0.5 * 2, 1e-9);
+    assert_true(fabs(ball->v.x) < 1e-12);
+    for (long k = 0; k < w.nevents; k++)
+        if (w.events[k].t > 0.012) assert_near(w.events[k].j, 5 * 2, 1e-9);
     assert_near(box->x.x, 0.2, 1e-6);
     world_free(&w);
 }
 
 /* The same with the ball's blow 30 degrees off the wall's normal, on the box's
- * edge: the wall takes the part of it along its normal, so the box keeps still
- * along that normal and moves only across it (the textbook impulse of a
- * collision with one object constrained to a line); across the normal, where
- * the wall pushes nothing, the momentum of box and ball is kept, and no energy
- * is made.  The rule for head-on blows only gives a run of ever smaller blows. */
+ * edge.  The wall pushes along its normal (x) only, and the box pushes the ball
+ * along n only, so the momentum across the wall's normal is kept and the ball
+ * moves along n throughout.  As head-on, the ball chases the box into the wall
+ * wave after wave, and the last solve (no restitution) ends it: the box held by
+ * the wall, the ball moving with it along n.  So the ball at b n and the box at
+ * (0, B) with 5 b n_y + B = 5 (-2) n_y (momentum across) and b = B n_y (together
+ * along n): B = -20/9, b = -10/9 m/s.  No energy is made. */
 static void oblique_sandwich_passes_the_blow_on(void **state)
 {
     (void)state;
@@ -849,22 +892,17 @@ static void oblique_sandwich_passes_the_blow_on(void **state)
     frames(&w, 1);
     vec3 p = v3_add(v3_scale(box->v, box->mass), v3_scale(ball->v, ball->mass));
     double e1 = body_energy(box) + body_energy(ball), e0 = 0.5 * 5 * 4;
-    print_message("oblique sandwich: %ld collisions, box v (%.3g, %.6f), ball v (%.6f, %.6f), "
-                  "box w %.3g, momentum across %.9f, energy %.6f of %.6f\n", w.st.collisions, box->v.x,
-                  box->v.y, ball->v.x, ball->v.y, v3_len(box->w), p.y, e1, e0);
-    assert_true(w.st.collisions <= 3);
-    /* held along the wall's normal, but for the rebound of the corner that its
-     * slight turn (1e-5 rad/s, from the blow 1e-7 m off its edge) brings onto the
-     * wall */
+    print_message("oblique sandwich: %ld collisions, %ld instants cut, box v (%.3g, %.6f), ball v "
+                  "(%.6f, %.6f), box w %.3g, momentum across %.9f, energy %.6f of %.6f\n",
+                  w.st.collisions, w.st.waves_cut, box->v.x, box->v.y, ball->v.x, ball->v.y,
+                  v3_len(box->w), p.y, e1, e0);
+    assert_int_equal(w.st.waves_cut, 1);
+    /* (to 1e-6: the box stands 1e-7 m off the wall after its own collision,
+     * which turns the normal by 1e-6) */
     assert_true(fabs(box->v.x) < 1e-6);
-    /* the constrained impulse j along n: the pair parts at e times 2 m/s, the
-     * ball (5 kg) taking j / 5 and the box (1 kg) j n_y across the normal:
-     * -2 + j / 5 + j n_y^2 = 1, so j = 20 / 3 (to 1e-5: the box stands 1e-7 m
-     * off the wall after its own collision, which turns the normal by 1e-6) */
-    assert_near(box->v.y, -10.0 / 3 * 2 * n.y, 1e-5);
-    assert_vec_near(ball->v, v3_scale(n, -2.0 / 3), 1e-5);
-    assert_near(p.y, 5 * -2 * n.y, 1e-9);            /* momentum across the normal */
-    assert_true(v3_dot(v3_sub(ball->v, box->v), n) > 0.5); /* they part */
+    assert_near(box->v.y, -20.0 / 9, 1e-6);
+    assert_vec_near(ball->v, v3_scale(n, -10.0 / 9), 1e-6);
+    assert_near(p.y, 5 * -2 * n.y, 1e-9); /* momentum across the normal */
     assert_true(e1 <= e0 * (1 + 1e-12));
     world_free(&w);
 }

@@ -734,6 +734,234 @@ static void full_rank_forces_are_unique(void **state)
     free(wk);
 }
 
+/* ---- the least-norm answer ---- */
+
+/* The least-norm x of the consistent system M x = b (M m x k, row-major), found
+ * another way than lcp.c's: an orthonormal basis Q of M's row space by modified
+ * Gram-Schmidt, then x = Q c with c from the normal equations of (M Q) c = b.
+ * False when M x = b has no solution (residual above tol). */
+static bool min_norm_solve(int m, int k, const double *M, const double *b, double tol, double *x)
+{
+    double Q[MAXN * MAXN], MQ[MAXN * MAXN], N[MAXN * MAXN], c[MAXN];
+    int nq = 0;
+    for (int i = 0; i < m; i++) {
+        double t[MAXN], len = 0;
+        for (int j = 0; j < k; j++) len += M[i * k + j] * M[i * k + j];
+        for (int j = 0; j < k; j++) t[j] = M[i * k + j];
+        for (int pass = 0; pass < 2; pass++)
+            for (int a = 0; a < nq; a++) {
+                double d = 0;
+                for (int j = 0; j < k; j++) d += t[j] * Q[a * k + j];
+                for (int j = 0; j < k; j++) t[j] -= d * Q[a * k + j];
+            }
+        double res = 0;
+        for (int j = 0; j < k; j++) res += t[j] * t[j];
+        if (!(res > 1e-16 * len) || len == 0) continue;
+        for (int j = 0; j < k; j++) Q[nq * k + j] = t[j] / sqrt(res);
+        nq++;
+    }
+    for (int i = 0; i < m; i++)
+        for (int a = 0; a < nq; a++) {
+            double v = 0;
+            for (int j = 0; j < k; j++) v += M[i * k + j] * Q[a * k + j];
+            MQ[i * nq + a] = v;
+        }
+    for (int a = 0; a < nq; a++) {
+        c[a] = 0;
+        for (int i = 0; i < m; i++) c[a] += MQ[i * nq + a] * b[i];
+        for (int e = 0; e < nq; e++) {
+            double v = 0;
+            for (int i = 0; i < m; i++) v += MQ[i * nq + a] * MQ[i * nq + e];
+            N[a * nq + e] = v;
+        }
+    }
+    /* Gaussian elimination with partial pivoting on N c = M Q^T b */
+    for (int col = 0; col < nq; col++) {
+        int piv = col;
+        for (int r = col + 1; r < nq; r++)
+            if (fabs(N[r * nq + col]) > fabs(N[piv * nq + col])) piv = r;
+        for (int e = 0; e < nq; e++) {
+            double t = N[col * nq + e];
+            N[col * nq + e] = N[piv * nq + e];
+            N[piv * nq + e] = t;
+        }
+        double t = c[col];
+        c[col] = c[piv];
+        c[piv] = t;
+        for (int r = col + 1; r < nq; r++) {
+            double f = N[r * nq + col] / N[col * nq + col];
+            for (int e = col; e < nq; e++) N[r * nq + e] -= f * N[col * nq + e];
+            c[r] -= f * c[col];
+        }
+    }
+    for (int r = nq - 1; r >= 0; r--) {
+        for (int e = r + 1; e < nq; e++) c[r] -= N[r * nq + e] * c[e];
+        c[r] /= N[r * nq + r];
+    }
+    for (int j = 0; j < k; j++) {
+        x[j] = 0;
+        for (int a = 0; a < nq; a++) x[j] += Q[a * k + j] * c[a];
+    }
+    for (int i = 0; i < m; i++) {
+        double v = -b[i];
+        for (int j = 0; j < k; j++) v += M[i * k + j] * x[j];
+        if (fabs(v) > tol) return false;
+    }
+    return true;
+}
+
+/* The least-norm answer by brute force, given an answer z (w its w): over the
+ * contacts S with w_i = 0, every support F within S whose least-norm x with
+ * A_SF x = A_SS z_S is >= 0 is an answer; the shortest of them is the least-norm
+ * answer (the optimum's own support gives it).  Its norm, and it in best. */
+static double least_norm_by_brute_force(int n, const double *A, const double *z, const double *w,
+                                        double tol, double *best)
+{
+    int S[MAXN], s = 0;
+    for (int i = 0; i < n; i++) {
+        best[i] = 0;
+        if (fabs(w[i]) <= tol) S[s++] = i;
+    }
+    double b[MAXN], M[MAXN * MAXN], x[MAXN], bn = HUGE_VAL;
+    for (int a = 0; a < s; a++) b[a] = Az(n, A, z, S[a]);
+    for (long mask = 0; mask < 1L << s; mask++) {
+        int F[MAXN], k = 0;
+        for (int a = 0; a < s; a++)
+            if (mask >> a & 1) F[k++] = S[a];
+        for (int a = 0; a < s; a++)
+            for (int j = 0; j < k; j++) M[a * k + j] = A[S[a] * n + F[j]];
+        if (!min_norm_solve(s, k, M, b, tol, x)) continue;
+        double norm = 0;
+        bool ok = true;
+        for (int j = 0; j < k; j++) {
+            ok = ok && x[j] >= -tol;
+            norm += x[j] * x[j];
+        }
+        if (!ok || !(norm < bn)) continue;
+        bn = norm;
+        for (int i = 0; i < n; i++) best[i] = 0;
+        for (int j = 0; j < k; j++) best[F[j]] = fmax(x[j], 0);
+    }
+    return sqrt(bn);
+}
+
+/* Singular problems with many contacts pressed: the least-norm answer keeps w,
+ * and is the one brute force finds over every support. */
+static void least_norm_answers_agree_with_brute_force(void **state)
+{
+    (void)state;
+    lcp_work *wk = work_for(MAXN);
+    static double A[MAXN * MAXN];
+    double z0[MAXN], w0[MAXN], q[MAXN], z[MAXN], w[MAXN], zl[MAXN], best[MAXN];
+    double worst = 0;
+    int moved = 0;
+    for (int t = 0; t < 300; t++) {
+        int n = 2 + t % 9, k = 1 + (int)(uniform() * (n - 1)); /* rank < n */
+        random_psd(n, k, t % 2 ? 2 : 0, A);
+        for (int i = 0; i < n; i++) {
+            z0[i] = uniform() < 0.75 ? 0.1 + uniform() : 0;
+            w0[i] = z0[i] > 0 ? 0 : uniform() < 0.5 ? 0.1 + uniform() : 0;
+        }
+        for (int i = 0; i < n; i++) q[i] = w0[i] - Az(n, A, z0, i);
+        assert_int_equal(lcp_solve(n, A, q, z, w, wk), 0);
+        memcpy(zl, z, sizeof(double) * n);
+        lcp_least_norm(n, A, q, zl, wk);
+        double s = w_size(n, A, q, z), zmax = max_abs(n, z);
+        for (int i = 0; i < n; i++) {
+            assert_true(zl[i] >= 0);
+            assert_near(Az(n, A, zl, i) + q[i], w[i], 1e-11 * s); /* the same w */
+        }
+        double nz = 0, nl = 0;
+        for (int i = 0; i < n; i++) {
+            nz += z[i] * z[i];
+            nl += zl[i] * zl[i];
+        }
+        assert_true(sqrt(nl) <= sqrt(nz) * (1 + 1e-12));
+        double bn = least_norm_by_brute_force(n, A, z, w, 1e-10 * s, best);
+        assert_true(bn < HUGE_VAL);
+        assert_near(sqrt(nl), bn, 1e-9 * zmax);
+        for (int i = 0; i < n; i++) worst = fmax(worst, fabs(zl[i] - best[i]) / zmax);
+        moved += sqrt(nl) < sqrt(nz) * (1 - 1e-9);
+    }
+    print_message("300 singular problems: the least-norm answer within %.3g of brute force's "
+                  "(relative to max z); %d shorter than the pivoting's\n", worst, moved);
+    assert_true(worst < 1e-8);
+    assert_true(moved > 100);
+    free(wk);
+}
+
+/* The least-norm answer does not depend on the contacts' order: every problem
+ * reversed and rotated gives the same forces, contact for contact. */
+static void least_norm_answers_ignore_the_order(void **state)
+{
+    (void)state;
+    lcp_work *wk = work_for(MAXN);
+    static double A[MAXN * MAXN], P[MAXN * MAXN];
+    double z0[MAXN], w0[MAXN], q[MAXN], z[MAXN], w[MAXN], qp[MAXN], zp[MAXN], wp[MAXN];
+    double worst = 0;
+    for (int t = 0; t < 200; t++) {
+        int n = 2 + t % 30, k = 1 + (int)(uniform() * (n - 1)), shift = t % n;
+        random_psd(n, k, 0, A);
+        for (int i = 0; i < n; i++) {
+            z0[i] = uniform() < 0.6 ? 0.1 + uniform() : 0;
+            w0[i] = z0[i] > 0 ? 0 : 0.1 + uniform();
+        }
+        for (int i = 0; i < n; i++) q[i] = w0[i] - Az(n, A, z0, i);
+        /* contact i becomes contact perm(i) = (n - 1 - i + shift) mod n */
+        for (int i = 0; i < n; i++) {
+            int pi = (n - 1 - i + shift) % n;
+            qp[pi] = q[i];
+            for (int j = 0; j < n; j++) P[pi * n + (n - 1 - j + shift) % n] = A[i * n + j];
+        }
+        assert_int_equal(lcp_solve(n, A, q, z, w, wk), 0);
+        lcp_least_norm(n, A, q, z, wk);
+        assert_int_equal(lcp_solve(n, P, qp, zp, wp, wk), 0);
+        lcp_least_norm(n, P, qp, zp, wk);
+        double zmax = max_abs(n, z);
+        for (int i = 0; i < n; i++) worst = fmax(worst, fabs(zp[(n - 1 - i + shift) % n] - z[i]) / zmax);
+    }
+    print_message("200 singular problems in two orders: forces within %.3g (relative to max z)\n",
+                  worst);
+    assert_true(worst < 1e-9);
+    free(wk);
+}
+
+/* Solves the n-contact problem A, q and makes z its least-norm answer. */
+static void solve_least(int n, const double *A, const double *q, double *z, lcp_work *wk)
+{
+    double w[MAXN];
+    assert_int_equal(lcp_solve(n, A, q, z, w, wk), 0);
+    lcp_least_norm(n, A, q, z, wk);
+}
+
+/* A box on a floor, and the box landing flat: the four corners share the force
+ * equally in the least-norm answer; a box off centre on its corners shares it as
+ * the lever rule and least norm say. */
+static void least_norm_shares_a_face_evenly(void **state)
+{
+    (void)state;
+    tbody bs[1];
+    tcontact cs[4];
+    double A[16], q[4], z[4];
+    lcp_work *wk = work_for(4);
+    int n = box_on_floor(bs, cs, 0);
+    contact_problem(bs, 1, cs, n, A, q);
+    solve_least(n, A, q, z, wk);
+    for (int i = 0; i < n; i++) assert_near(z[i], G / 4, 1e-14 * G);
+    for (int i = 0; i < n; i++) q[i] = 1.5 * -1;
+    solve_least(n, A, q, z, wk);
+    for (int i = 0; i < n; i++) assert_near(z[i], 1.5 / 4, 1e-14);
+    /* the centre of mass at (0.25, 0.1) over the unit square's corners: the
+     * forces f_i = G (1/4 + x_i cx + y_i cy) (x_i, y_i = +-1/2, the corner), the
+     * least-norm ones that balance the weight and its moments; all positive */
+    bs[0].x = v3(0.25, 0.1, 0.5);
+    contact_problem(bs, 1, cs, n, A, q);
+    solve_least(n, A, q, z, wk);
+    const double sx[] = {-0.5, 0.5, 0.5, -0.5}, sy[] = {-0.5, -0.5, 0.5, 0.5};
+    for (int i = 0; i < n; i++) assert_near(z[i], G * (0.25 + sx[i] * 0.25 + sy[i] * 0.1), 1e-13 * G);
+    free(wk);
+}
+
 /* ---- time ---- */
 
 static double seconds(void)
@@ -785,6 +1013,9 @@ int main(void)
         cmocka_unit_test(nearly_infeasible_problems),
         cmocka_unit_test(same_bits_from_any_workspace),
         cmocka_unit_test(full_rank_forces_are_unique),
+        cmocka_unit_test(least_norm_answers_agree_with_brute_force),
+        cmocka_unit_test(least_norm_answers_ignore_the_order),
+        cmocka_unit_test(least_norm_shares_a_face_evenly),
         cmocka_unit_test(timing),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

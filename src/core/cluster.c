@@ -21,13 +21,19 @@
 /* How fast a point that is in comes out (m/s). */
 #define CLUSTER_RECOVER_SPEED 1e-3
 
-/* A cluster's pressed points: the rows of its impulses, the points they follow
- * and their gaps when gathered (in `rows`, over row, cp and gap). */
+/* A cluster's points: the rows of its impulses, the points they follow and
+ * their gaps when gathered (in `rows`, over row, cp and gap); the closed ones
+ * first (nclosed), which the kicks keep closed, then the open ones, which land
+ * (cluster.h). */
 typedef struct {
     impulse_row row[SIM_CLUSTER_ROWS];
     cpoint cp[SIM_CLUSTER_ROWS]; /* p and q renumbered as body indices */
     double gap[SIM_CLUSTER_ROWS];
     row_list rows;
+    int nclosed;
+    bool rough;                  /* some point has friction: the kicks are 3 a
+                                  * point, along the normal and two tangents
+                                  * (friction.h), with rolling resistance */
     int np;                      /* the lasting contacts they come from */
     pair *pr[SIM_CLUSTER_ROWS];
 } points;
@@ -37,7 +43,8 @@ typedef struct {
 static void gather(world *w, const int *list, int n, points *pts, double reach)
 {
     pts->rows = (row_list){pts->row, pts->cp, pts->gap, 0, SIM_CLUSTER_ROWS, false};
-    pts->np = 0;
+    pts->np = pts->nclosed = 0;
+    pts->rough = false;
     bool *in = w->answer.mark;
     for (int k = 0; k < n; k++) in[list[k]] = true;
     for (int k = 0; k < n; k++) {
@@ -61,6 +68,49 @@ static double touch_at(const world *w, const cpoint *cp)
     return tol_touch(w->bodies[cp->p], w->bodies[cp->q]);
 }
 
+/* The gap at which a point of cp's pair lands: twice the hover gap at which the
+ * kicks keep closed points, so that those never land. */
+static double land_at(const world *w, const cpoint *cp)
+{
+    return 2 * tol_hover(w->bodies[cp->p], w->bodies[cp->q]);
+}
+
+double cluster_stepping_speed(const world *w, const body *b)
+{
+    if (body_is_static(b) || b->state != STATE_DYNAMIC || b->mode != MODE_GENERAL) return 0;
+    double spin = v3_len(b->w);
+    return (v3_len(world_body_accel(w, b)) + 2 * spin * spin * b->shape.r_out) * SIM_CLUSTER_STEP;
+}
+
+/* True when point k of pts (its gap when gathered, the objects in the states of
+ * w->bodies) is closed: within the landing gap, or within the contact's thickness
+ * and closing no faster than the cluster's own steps close it. */
+static bool closed(const world *w, const points *pts, int k)
+{
+    const cpoint *x = &pts->cp[k];
+    const body *P = w->bodies[x->p], *Q = w->bodies[x->q];
+    double g = pts->gap[k], land = land_at(w, x);
+    if (g <= land) return true;
+    if (g > d_max(tol_contact(P, Q), land)) return false;
+    double closing = -impulse_speed(&pts->row[k], w->bodies);
+    return closing <= tol_speed(P, Q) + cluster_stepping_speed(w, P) + cluster_stepping_speed(w, Q);
+}
+
+/* Sorts the points of pts from `from` on into closed and open: the closed ones
+ * to follow pts->nclosed (which grows by them), the open ones after. */
+static void sort_closed(const world *w, points *pts, int from)
+{
+    for (int k = from; k < pts->rows.n; k++) {
+        if (!closed(w, pts, k)) continue;
+        int c = pts->nclosed++;
+        impulse_row row = pts->row[c];
+        cpoint cp = pts->cp[c];
+        double gap = pts->gap[c];
+        pts->row[c] = pts->row[k], pts->cp[c] = pts->cp[k], pts->gap[c] = pts->gap[k];
+        pts->row[k] = row, pts->cp[k] = cp, pts->gap[k] = gap;
+    }
+}
+
 /* The fastest any point of the cluster moves (m/s). */
 static double fastest(const world *w, const int *list, int n)
 {
@@ -82,130 +132,233 @@ static double floor_of(const world *w, const cpoint *cp, double g0, double h)
     return g0 >= hover ? hover : g0 >= 0 ? g0 : d_min(0, g0 + h * CLUSTER_RECOVER_SPEED);
 }
 
-/* The rows of pts (m of them) whose contacts' closest points at the step's end
- * (the objects' states there in bs) lie closer than the contact's points allow:
- * one more row for each, at those points (appended to pts, its floor and gap
- * written); returns how many. */
-static int deepest_rows(world *w, points *pts, body **bs, double *floor_gap, double *gap, int m,
-                        double h)
+/* Kicks lam at the m closed points of pts applied to the mobile bodies of bs:
+ * one a point, or with friction three (normal, tangents: the rows of
+ * friction_rows, in the friction scratch) and the rolling resistance's couples
+ * at those impulses. */
+static void apply_kicks(world *w, const points *pts, int m, body **bs, const double *lam)
 {
-    int added = 0;
-    for (int c = 0; c < pts->np && pts->rows.n < SIM_CLUSTER_ROWS; c++) {
-        pair *p = pts->pr[c];
-        const body *A = bs[p->a], *B = bs[p->b];
-        closest_result r = pair_query_peek(w, p, A, B);
-        if (r.status == CLOSEST_INVALID) continue;
-        /* the least floor of its points, and the tolerance of their gaps */
-        double least = HUGE_VAL, tol = 0;
-        for (int k = 0; k < m; k++) {
-            const cpoint *x = &pts->cp[k];
-            if ((x->p == p->a && x->q == p->b) || (x->p == p->b && x->q == p->a)) {
-                least = d_min(least, floor_gap[k]);
-                tol = 1e-3 * touch_at(w, x);
-            }
-        }
-        if (!(least < HUGE_VAL) || r.distance >= least - tol) continue;
-        /* their points there (material points and features, so rows now): their
-         * gaps now set their floors, and their gaps there what is left */
-        int first = pts->rows.n, nc = rows_add(&pts->rows, p, A, B, &r, tol_contact(A, B), 0, w->bodies);
-        for (int k = first; k < first + nc; k++) {
-            const cpoint *x = &pts->cp[k];
-            vec3 nn, at;
-            floor_gap[k] = floor_of(w, x, pts->gap[k], h);
-            gap[k] = cpoint_eval(x, bs[x->p], bs[x->q], &nn, &at) - floor_gap[k];
-        }
-        added += nc;
+    if (!pts->rough) {
+        impulse_apply(pts->row, m, bs, w->answer.mark, lam);
+        return;
     }
-    return added;
+    friction_rows(pts->row, m, w->answer.fw->rows);
+    impulse_apply(w->answer.fw->rows, 3 * m, bs, w->answer.mark, lam);
+    friction_roll(pts->row, m, bs, w->answer.mark, lam);
 }
 
-/* The cluster's objects (n of list) as copies in bs (their kicked copies),
- * kicked by impulses lam at the nr rows (and, with friction, by the rolling
- * resistance of the m points of pts at those impulses), then flown freely to
- * the step's end t + h. */
-static void fly_kicked(world *w, const int *list, int n, const impulse_row *rows, int nr,
-                       const double *lam, const points *rough, int m, double t, double h, body **bs)
+/* The cluster's n objects of list kicked by lam at the m closed points of pts at
+ * time t: their flights from there, in w->answer.flights. */
+static void kick_flights(world *w, const int *list, int n, const points *pts, int m,
+                         const double *lam, double t)
 {
-    bool *mobile = w->answer.mark;
-    vec3 g = world_accel(w);
+    body **bs = w->answer.now;
     for (int k = 0; k < n; k++) {
         body *c = &w->answer.kicked[list[k]];
         *c = *w->bodies[list[k]];
         bs[list[k]] = c;
     }
-    impulse_apply(rows, nr, bs, mobile, lam);
-    if (rough) friction_roll(rough->row, m, bs, mobile, lam);
+    apply_kicks(w, pts, m, bs, lam);
     for (int k = 0; k < n; k++) {
-        body *c = bs[list[k]];
-        flight f;
-        flight_start(&f, c, FLIGHT_FREE, t, g, v3(0, 0, 0), 0);
-        flight_at(&f, w->bodies[list[k]], t + h, c);
+        flight_start(&w->answer.flights[list[k]], bs[list[k]], FLIGHT_FREE, t, world_accel(w),
+                     v3(0, 0, 0), 0);
+        bs[list[k]] = w->bodies[list[k]];
     }
 }
 
-/* The gap of each of the m points of pts at the step's end (the objects there in
- * bs), less its floor, into gap; true when every point is closed or open as its
- * impulse says (lam_n, every `stride`th of lam). */
-static bool gaps_at_end(world *w, const points *pts, int m, body **bs, const double *floor_gap,
-                        const double *lam, int stride, double *gap, vec3 *at)
+/* Those flights at time t: the objects' copies, in w->answer.kicked, referenced
+ * by w->answer.now. */
+static void fly_kicked(world *w, const int *list, int n, double t)
 {
-    bool done = true;
-    for (int k = 0; k < m; k++) {
-        vec3 nn;
-        gap[k] = cpoint_eval(&pts->cp[k], bs[pts->cp[k].p], bs[pts->cp[k].q], &nn, &at[k]) -
-                 floor_gap[k];
-        double tol = 1e-3 * touch_at(w, &pts->cp[k]);
-        if ((lam[stride * k] > 0 && fabs(gap[k]) > tol) || gap[k] < -tol) done = false;
+    body **bs = w->answer.now;
+    for (int k = 0; k < n; k++) {
+        body *c = &w->answer.kicked[list[k]];
+        flight_at(&w->answer.flights[list[k]], w->bodies[list[k]], t, c);
+        bs[list[k]] = c;
     }
-    return done;
 }
 
-/* The first kicks of a step with friction at some point (cluster_kick's, over
- * the cones): at each point, its normal impulse keeps its gap at the step's end
- * as the frictionless kicks do, and its tangential impulse stops its slip at the
- * step's end, within its cone (friction.h), with rolling resistance beside. */
-static void kick_rough(world *w, const int *list, int n, points *pts, double t, double h)
+/* True when point x is one of pair p's. */
+static bool of_pair(const cpoint *x, const pair *p)
+{
+    return (x->p == p->a && x->q == p->b) || (x->p == p->b && x->q == p->a);
+}
+
+/* True when an open point of pts of pair p is in at the step's end (the objects'
+ * states there in bs). */
+static bool open_in(const points *pts, const pair *p, body *const *bs)
+{
+    for (int k = pts->nclosed; k < pts->rows.n; k++) {
+        const cpoint *x = &pts->cp[k];
+        vec3 nn, at;
+        if (of_pair(x, p) && cpoint_eval(x, bs[x->p], bs[x->q], &nn, &at) <= 0) return true;
+    }
+    return false;
+}
+
+/* The closed points of pts (m of them) whose contacts' closest points at the
+ * step's end (the objects' states there in bs) lie closer than the contact's
+ * closed points allow (or than its landing gap, with none): the points there
+ * (material points and features, so rows now) are added to pts; the closed ones
+ * among them follow the closed points (their floors and gaps written), and their
+ * count is returned. */
+static int deepest_rows(world *w, points *pts, body **bs, double *floor_gap, double *gap, double h)
+{
+    int m = pts->nclosed, added = 0;
+    for (int c = 0; c < pts->np && pts->rows.n < SIM_CLUSTER_ROWS; c++) {
+        pair *p = pts->pr[c];
+        const body *A = bs[p->a], *B = bs[p->b];
+        closest_result r = pair_query_peek(w, p, A, B, false);
+        if (r.status == CLOSEST_INVALID) continue;
+        if (r.status != CLOSEST_SEPARATED) {
+            /* in: by an open point, which lands within the step (landing_time),
+             * or else by a point not followed, found with the depth */
+            if (open_in(pts, p, bs)) continue;
+            r = pair_query_peek(w, p, A, B, true);
+            if (r.status == CLOSEST_INVALID) continue;
+        }
+        /* the least floor of its closed points, and the tolerance of their gaps */
+        double least = 2 * tol_hover(A, B), tol = 1e-3 * tol_touch(A, B);
+        bool any = false;
+        for (int k = 0; k < m; k++) {
+            const cpoint *x = &pts->cp[k];
+            if (of_pair(x, p)) {
+                least = any ? d_min(least, floor_gap[k]) : floor_gap[k];
+                any = true;
+            }
+        }
+        if (r.distance >= least - tol) continue;
+        /* their gaps now set their floors, and their gaps there what is left */
+        int first = pts->rows.n;
+        rows_add(&pts->rows, p, A, B, &r, tol_contact(A, B), 0, w->bodies);
+        int before = pts->nclosed;
+        sort_closed(w, pts, first);
+        for (int k = before; k < pts->nclosed; k++) {
+            const cpoint *x = &pts->cp[k];
+            vec3 nn, at;
+            floor_gap[k] = floor_of(w, x, pts->gap[k], h);
+            gap[k] = cpoint_eval(x, bs[x->p], bs[x->q], &nn, &at) - floor_gap[k];
+        }
+        added += pts->nclosed - before;
+    }
+    return added;
+}
+
+/* The least gap of the open points of pts at the step's end (the objects' states
+ * in bs) less their landing gaps: the first to land, in *which. */
+static double least_open(const world *w, const points *pts, body *const *bs, int *which)
+{
+    double least = HUGE_VAL;
+    for (int k = pts->nclosed; k < pts->rows.n; k++) {
+        const cpoint *x = &pts->cp[k];
+        vec3 nn, at;
+        double g = cpoint_eval(x, bs[x->p], bs[x->q], &nn, &at) - land_at(w, x);
+        if (g < least) {
+            least = g;
+            *which = k;
+        }
+    }
+    return least;
+}
+
+/* When an open point lands within the step of h from t, kicked by lam at the
+ * closed points: the time it first reaches its landing gap (by bisection over the
+ * kicked flights, to between a quarter of that gap and it), and the point in
+ * *which; else t + h, and -1. */
+static double landing_time(world *w, const int *list, int n, const points *pts, const double *lam,
+                           double t, double h, int *which)
+{
+    *which = -1;
+    if (pts->rows.n == pts->nclosed) return t + h;
+    body **bs = w->answer.now;
+    int k;
+    kick_flights(w, list, n, pts, pts->nclosed, lam, t);
+    fly_kicked(w, list, n, t + h);
+    double lo = t, hi = t + h, g = least_open(w, pts, bs, &k);
+    if (g <= 0) {
+        *which = k;
+        while (g < -0.75 * land_at(w, &pts->cp[*which])) {
+            double mid = 0.5 * (lo + hi);
+            if (!(mid > lo && mid < hi)) break;
+            fly_kicked(w, list, n, mid);
+            double gm = least_open(w, pts, bs, &k);
+            if (gm > 0) {
+                lo = mid;
+            } else {
+                hi = mid;
+                g = gm;
+                *which = k;
+            }
+        }
+    }
+    for (int j = 0; j < n; j++) bs[list[j]] = w->bodies[list[j]];
+    return hi;
+}
+
+/* Open point k of pts lands: its pair is noted as the landing of its objects
+ * (answer_scratch.landing). */
+static void note_landing(world *w, const points *pts, int k)
+{
+    const cpoint *x = &pts->cp[k];
+    long slot = pair_index(w, x->p, x->q);
+    if (slot < 0) return;
+    if (!body_is_static(w->bodies[x->p])) w->answer.landing[x->p] = slot;
+    if (!body_is_static(w->bodies[x->q])) w->answer.landing[x->q] = slot;
+}
+
+/* newton's kicks with friction at some point (lam: three a point): at each
+ * closed point, its normal kick keeps its gap at the step's end as the
+ * frictionless kicks do, and its tangential kick stops its slip at the step's
+ * end, within its cone (friction.h), with rolling resistance beside. */
+static void newton_rough(world *w, const int *list, int n, points *pts, double *lam, double t,
+                         double h)
 {
     body **bs = w->answer.now;
     bool *mobile = w->answer.mark;
     friction_work *fw = w->answer.fw;
-    int m = pts->rows.n;
-    double lam[3 * SIM_CLUSTER_ROWS], gap[SIM_CLUSTER_ROWS], floor_gap[SIM_CLUSTER_ROWS];
+    int m = pts->nclosed;
+    double gap[SIM_CLUSTER_ROWS], floor_gap[SIM_CLUSTER_ROWS], slip[2 * SIM_CLUSTER_ROWS];
     vec3 at[SIM_CLUSTER_ROWS];
-    for (int k = 0; k < 3 * m; k++) lam[k] = 0;
     for (int k = 0; k < m; k++) floor_gap[k] = floor_of(w, &pts->cp[k], pts->gap[k], h);
     friction_rows(pts->row, m, fw->rows);
     impulse_matrix(fw->rows, 3 * m, bs, mobile, fw->A);
     bool roll = false;
-    for (int k = 0; k < m; k++) roll = roll || pts->row[k].roll > 0;
+    for (int k = 0; k < pts->rows.n; k++) roll = roll || pts->row[k].roll > 0;
     friction_flags f = {false, false, false};
     for (int it = 0; it < CLUSTER_NEWTON; it++) {
-        fly_kicked(w, list, n, fw->rows, 3 * m, lam, pts, m, t, h, bs);
-        bool done = gaps_at_end(w, pts, m, bs, floor_gap, lam, 3, gap, at) && !(roll && it == 0);
-        /* each point's slip at the step's end, where it is then */
-        double slip[2 * SIM_CLUSTER_ROWS];
-        for (int k = 0; k < m; k++)
+        kick_flights(w, list, n, pts, m, lam, t);
+        fly_kicked(w, list, n, t + h);
+        bool done = !(roll && it == 0); /* (the couples act at solved impulses) */
+        for (int k = 0; k < m; k++) {
+            vec3 nn;
+            gap[k] = cpoint_eval(&pts->cp[k], bs[pts->cp[k].p], bs[pts->cp[k].q], &nn, &at[k]) -
+                     floor_gap[k];
+            double tol = 1e-3 * touch_at(w, &pts->cp[k]);
+            if ((lam[3 * k] > 0 && fabs(gap[k]) > tol) || gap[k] < -tol) done = false;
+            /* its slip at the step's end, where it is then */
             for (int j = 0; j < 2; j++) {
                 impulse_row r = fw->rows[3 * k + 1 + j];
                 r.at = at[k];
                 slip[2 * k + j] = impulse_speed(&r, bs);
             }
-        int added = done || it == CLUSTER_NEWTON - 1 ? deepest_rows(w, pts, bs, floor_gap, gap, m, h) : 0;
-        for (int k = 0; k < n; k++) bs[list[k]] = w->bodies[list[k]];
+        }
+        int added = done || it == CLUSTER_NEWTON - 1 ? deepest_rows(w, pts, bs, floor_gap, gap, h) : 0;
         if (added > 0) {
             for (int k = 3 * m; k < 3 * (m + added); k++) lam[k] = 0;
             for (int k = m; k < m + added; k++) {
                 vec3 nn;
-                cpoint_eval(&pts->cp[k], w->answer.kicked + pts->cp[k].p, w->answer.kicked + pts->cp[k].q,
-                            &nn, &at[k]);
+                cpoint_eval(&pts->cp[k], bs[pts->cp[k].p], bs[pts->cp[k].q], &nn, &at[k]);
                 slip[2 * k] = slip[2 * k + 1] = 0;
             }
+        }
+        for (int k = 0; k < n; k++) bs[list[k]] = w->bodies[list[k]];
+        if (added > 0) {
             m += added;
             friction_rows(pts->row, m, fw->rows);
             impulse_matrix(fw->rows, 3 * m, bs, mobile, fw->A);
             done = false;
         }
-        if (done) break;
+        if (done || m == 0) break;
         /* Newton: gap / h + A (next - lam) >= 0 along the normals, the slips
          * + A (next - lam) along the tangents, over the cones */
         for (int k = 0; k < 3 * m; k++) {
@@ -223,56 +376,54 @@ static void kick_rough(world *w, const int *list, int n, points *pts, double t, 
         if (st > 0) f.unconverged = true;
         for (int k = 0; k < 3 * m; k++) lam[k] = fw->z[k];
     }
-    impulse_apply(fw->rows, 3 * m, bs, mobile, lam);
-    friction_roll(pts->row, m, bs, mobile, lam);
     answer_count(w, f, list[0]);
 }
 
-double cluster_kick(world *w, const int *list, int n, double t, double t_end)
+/* The kicks lam at the closed points of pts (more of them as deepest_rows finds
+ * them, their kicks from 0) that keep them at their floors at the end of a step
+ * of h from t, by Newton's method over the exact flights (cluster.h), from lam as
+ * given (with friction: newton_rough). */
+static void newton(world *w, const int *list, int n, points *pts, double *lam, double t, double h)
 {
-    double h = d_min(SIM_CLUSTER_STEP, t_end - t);
-    double s = fastest(w, list, n) + v3_len(world_accel(w)) * h;
-    if (s * h > SIM_CLUSTER_MOVE) h = SIM_CLUSTER_MOVE / s;
-    points pts;
-    /* the points that could close within the step: its motion, twice over */
-    gather(w, list, n, &pts, 2 * s * h);
-    int m = pts.rows.n;
-    if (m == 0 || !(h > 0)) return h;
+    if (pts->rough) {
+        newton_rough(w, list, n, pts, lam, t, h);
+        return;
+    }
     body **bs = w->answer.now;
     bool *mobile = w->answer.mark;
-    for (int k = 0; k < n; k++) mobile[list[k]] = true;
-    if (friction_any(pts.row, m)) {
-        kick_rough(w, list, n, &pts, t, h);
-        for (int k = 0; k < n; k++) mobile[list[k]] = false;
-        return h;
-    }
-    double A[SIM_CLUSTER_ROWS * SIM_CLUSTER_ROWS], q[SIM_CLUSTER_ROWS], lam[SIM_CLUSTER_ROWS],
-        next[SIM_CLUSTER_ROWS], wv[SIM_CLUSTER_ROWS], gap[SIM_CLUSTER_ROWS];
-    impulse_matrix(pts.row, m, bs, mobile, A);
+    int m = pts->nclosed;
+    double A[SIM_CLUSTER_ROWS * SIM_CLUSTER_ROWS], q[SIM_CLUSTER_ROWS], next[SIM_CLUSTER_ROWS],
+        wv[SIM_CLUSTER_ROWS], gap[SIM_CLUSTER_ROWS], floor_gap[SIM_CLUSTER_ROWS];
+    impulse_matrix(pts->row, m, bs, mobile, A);
     for (int k = 0; k < m * m; k++) A[k] *= h;
-    for (int k = 0; k < m; k++) lam[k] = 0;
-    double floor_gap[SIM_CLUSTER_ROWS];
-    for (int k = 0; k < m; k++) floor_gap[k] = floor_of(w, &pts.cp[k], pts.gap[k], h);
+    for (int k = 0; k < m; k++) floor_gap[k] = floor_of(w, &pts->cp[k], pts->gap[k], h);
     for (int it = 0; it < CLUSTER_NEWTON; it++) {
         /* the gaps at the step's end after kicks lam: each object's copy kicked,
          * flown freely */
-        fly_kicked(w, list, n, pts.row, m, lam, NULL, 0, t, h, bs);
-        vec3 at[SIM_CLUSTER_ROWS];
-        bool done = gaps_at_end(w, &pts, m, bs, floor_gap, lam, 1, gap, at);
+        kick_flights(w, list, n, pts, m, lam, t);
+        fly_kicked(w, list, n, t + h);
+        bool done = true;
+        for (int k = 0; k < m; k++) {
+            vec3 nn, at;
+            gap[k] = cpoint_eval(&pts->cp[k], bs[pts->cp[k].p], bs[pts->cp[k].q], &nn, &at) -
+                     floor_gap[k];
+            double tol = 1e-3 * touch_at(w, &pts->cp[k]);
+            if ((lam[k] > 0 && fabs(gap[k]) > tol) || gap[k] < -tol) done = false;
+        }
         /* the points followed may miss where the objects meet at the step's end (a
          * curved side rolling over an edge brings its next facet): each contact's
          * own closest points there, when they are closer than its points allow,
-         * are followed too */
-        int added = done || it == CLUSTER_NEWTON - 1 ? deepest_rows(w, &pts, bs, floor_gap, gap, m, h) : 0;
+         * are followed too (or land, when they are open now) */
+        int added = done || it == CLUSTER_NEWTON - 1 ? deepest_rows(w, pts, bs, floor_gap, gap, h) : 0;
         for (int k = 0; k < n; k++) bs[list[k]] = w->bodies[list[k]];
         if (added > 0) {
             for (int k = m; k < m + added; k++) lam[k] = 0;
             m += added;
-            impulse_matrix(pts.row, m, bs, mobile, A);
+            impulse_matrix(pts->row, m, bs, mobile, A);
             for (int k = 0; k < m * m; k++) A[k] *= h;
             done = false;
         }
-        if (done) break;
+        if (done || m == 0) break;
         /* Newton: gaps + h A (next - lam) >= 0, complementary to next >= 0 */
         for (int k = 0; k < m; k++) {
             q[k] = gap[k];
@@ -284,8 +435,57 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end)
         }
         for (int k = 0; k < m; k++) lam[k] = next[k];
     }
-    impulse_apply(pts.row, m, bs, mobile, lam);
-    for (int k = 0; k < n; k++) mobile[list[k]] = false;
+}
+
+double cluster_kick(world *w, const int *list, int n, double t, double t_end)
+{
+    for (int k = 0; k < n; k++) {
+        w->answer.landing[list[k]] = -1;
+        w->answer.kicks[list[k]].h = 0;
+    }
+    double h = d_min(SIM_CLUSTER_STEP, t_end - t);
+    double s = fastest(w, list, n) + v3_len(world_accel(w)) * h;
+    if (s * h > SIM_CLUSTER_MOVE) h = SIM_CLUSTER_MOVE / s;
+    points pts;
+    /* the points that could close within the step: its motion, twice over */
+    gather(w, list, n, &pts, 2 * s * h);
+    sort_closed(w, &pts, 0);
+    if (pts.rows.n == 0 || !(h > 0)) return h;
+    pts.rough = friction_any(pts.row, pts.rows.n);
+    bool *mobile = w->answer.mark;
+    for (int k = 0; k < n; k++) mobile[list[k]] = true;
+    double lam[3 * SIM_CLUSTER_ROWS];
+    for (int k = 0; k < 3 * pts.nclosed; k++) lam[k] = 0;
+    newton(w, list, n, &pts, lam, t, h);
+    /* an open point that lands within the step ends it there (answer.h), with the
+     * kicks found again for the shorter step, so that no closed point is below
+     * its floor there; with them it lands by the step's end, or a hair after
+     * (then early in the next step) */
+    int which;
+    for (int again = 0; again < 3; again++) {
+        double land = landing_time(w, list, n, &pts, lam, t, h, &which);
+        if (which < 0) break;
+        bool found_again = land < t + h;
+        h = land - t;
+        if (again > 0 && !found_again) break;
+        newton(w, list, n, &pts, lam, t, h);
+    }
+    if (which >= 0) note_landing(w, &pts, which);
+    /* the kicks, and what they gave each object (answer.h: an instant within
+     * the step takes back the share not yet spent) */
+    kick_record *rec = w->answer.kicks;
+    for (int k = 0; k < n; k++) {
+        const body *b = w->bodies[list[k]];
+        rec[list[k]] = (kick_record){t, h, b->v, b->L};
+    }
+    apply_kicks(w, &pts, pts.nclosed, w->answer.now, lam);
+    for (int k = 0; k < n; k++) {
+        const body *b = w->bodies[list[k]];
+        kick_record *r = &rec[list[k]];
+        r->dv = v3_sub(b->v, r->dv);
+        r->dL = v3_sub(b->L, r->dL);
+        mobile[list[k]] = false;
+    }
     return h;
 }
 

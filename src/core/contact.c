@@ -421,20 +421,69 @@ int contact_facing(const body *o, vec3 d)
     return best;
 }
 
+/* Where the line xb + s mb (P's frame) crosses the plane of P's face f inwards:
+ * s, or -inf for a face it does not cross inwards (nearly parallel, or facing
+ * away). */
+static double entry(const poly *h, int f, vec3 xb, vec3 mb)
+{
+    double dn = v3_dot(h->f[f].n, mb);
+    return dn < -1e-3 ? (h->f[f].d - v3_dot(h->f[f].n, xb)) / dn : -HUGE_VAL;
+}
+
+/* True when every point of P's supporting set s lies on the plane of its face f
+ * (to the rounding of P's size r). */
+static bool on_face(const poly *h, const support *s, int f, double r)
+{
+    const poly_face *F = &h->f[f];
+    double tol = 1e-12 * (1 + r);
+    for (int i = 0; i < s->n; i++)
+        if (fabs(v3_dot(F->n, h->v[s->idx[i]]) - F->d) > tol) return false;
+    return true;
+}
+
 /* Moves world point *x along m onto P's surface facing the other object (along
  * -m): the plane of its face f there when its supporting set s (np points in
- * the region's hull) is a face, the line of its edge when an edge, its vertex when a
- * vertex. */
+ * the region's hull) is that face; where s spans several faces (a thick region
+ * over a curved side), where the line along m enters P, so that no point is put
+ * on a face's plane beyond the face, under P's surface, where P does not reach;
+ * the line of its edge when an edge, its vertex when a vertex. */
 static void lift(const body *P, const support *s, int np, int f, vec3 m, vec3 *x)
 {
     const poly *h = P->shape.hull;
     if (!h || P->sp.kind == SHAPE_SPHERE || s->n < 1) return;
-    if (np >= 3 && f >= 0) {
+    if (np >= 3 && f >= 0 && on_face(h, s, f, P->shape.r_out)) {
         vec3 nf = q_rotate(P->q, h->f[f].n);
         double dn = v3_dot(nf, m);
         if (fabs(dn) < 1e-3) return;
         vec3 on = v3_add(P->x, q_rotate(P->q, h->v[h->face_vert[h->f[f].first]]));
         *x = v3_mad(*x, m, v3_dot(nf, v3_sub(on, *x)) / dn);
+        return;
+    }
+    if (np >= 3 && f >= 0) {
+        /* P is the faces' half-spaces n . y <= d: the line y = x + s m enters
+         * it at the largest s over the faces it crosses inwards (n . m < 0).
+         * Across each edge of the face found so far, the neighbour's plane is
+         * the higher where the line meets P on its side of that edge, so the
+         * walk from f up to the largest ends at the face the line enters by
+         * (its values only grow, and P's facing side is convex) */
+        vec3 xb = q_unrotate(P->q, v3_sub(*x, P->x)), mb = q_unrotate(P->q, m);
+        int cur = f;
+        double in = entry(h, f, xb, mb);
+        for (bool moved = in > -HUGE_VAL; moved;) {
+            moved = false;
+            const poly_face *F = &h->f[cur];
+            for (int k = 0; k < F->count && !moved; k++) {
+                const poly_edge *e = &h->e[h->face_edge[F->first + k]];
+                int g = e->f[0] == cur ? e->f[1] : e->f[0];
+                double sg = entry(h, g, xb, mb);
+                if (sg > in) {
+                    in = sg;
+                    cur = g;
+                    moved = true;
+                }
+            }
+        }
+        if (in > -HUGE_VAL) *x = v3_mad(*x, m, in);
         return;
     }
     /* an edge or a vertex: its points furthest apart across m */
@@ -700,7 +749,9 @@ double cpoint_eval(const cpoint *cp, const body *P, const body *Q, vec3 *n, vec3
     }
     }
     *n = q_rotate(Q->q, m);
-    *at = v3_mad(pw, *n, -cp->r);
+    /* (on P's surface: two spheres' radii together less Q's) */
+    double rp = cp->kind == CPT_POINT && Q->sp.kind == SHAPE_SPHERE ? cp->r - Q->sp.radius : cp->r;
+    *at = v3_mad(pw, *n, -rp);
     return gap;
 }
 

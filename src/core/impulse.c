@@ -91,6 +91,7 @@ int impulse_solve(const impulse_row *rows, int n, body *const *bs, const bool *m
     impulse_matrix(rows, n, bs, mobile, A);
     for (int k = 0; k < n; k++) q[k] = (1 + rows[k].e) * u_before[k];
     if (lcp_solve(n, A, q, lambda, w, work) != 0) return -1;
+    lcp_least_norm(n, A, q, lambda, work);
     impulse_apply(rows, n, bs, mobile, lambda);
     return 0;
 }

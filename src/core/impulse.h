@@ -46,7 +46,9 @@ void impulse_apply(const impulse_row *rows, int n, body *const *bs, const bool *
 
 /* Solves the rows' impulses (Newton's law with each row's e; u_before the rows'
  * relative normal velocities before, from impulse_speed) and applies them.
- * lambda gets the impulses.  Returns 0, or -1 when the problem has too many rows or
+ * lambda gets the impulses: of the many that give the same velocities where rows
+ * are dependent, those of least norm (lcp_least_norm), so that they do not
+ * depend on the rows' order and are symmetric where the contacts are.  Returns 0, or -1 when the problem has too many rows or
  * cannot be solved (nothing is applied then).  work: lcp_work_size(IMPULSE_MAX_ROWS)
  * bytes. */
 int impulse_solve(const impulse_row *rows, int n, body *const *bs, const bool *mobile,

@@ -79,11 +79,18 @@ typedef struct {
     int *skip;           /* by index: a free w whose fall is rounding, this pivot */
 } lcp_state;
 
+/* Doubles of the workspace: the pivoting's m^2 + 6 m, and lcp_least_norm's
+ * 3 m^2 + 6 m (its ints fit in the pivoting's 4 m). */
+static size_t work_doubles(size_t m)
+{
+    return 3 * m * m + 6 * m;
+}
+
 size_t lcp_work_size(int n)
 {
     assert(n >= 0);
     size_t m = (size_t)n;
-    return sizeof(double) * (m * m + 6 * m) + sizeof(int) * 4 * m;
+    return sizeof(double) * work_doubles(m) + sizeof(int) * 4 * m;
 }
 
 static void state_init(lcp_state *s, int n, const double *A, const double *q, double *z,
@@ -91,7 +98,7 @@ static void state_init(lcp_state *s, int n, const double *A, const double *q, do
 {
     size_t m = (size_t)n;
     double *d = (double *)(void *)work;
-    int *i = (int *)(void *)(d + m * m + 6 * m);
+    int *i = (int *)(void *)(d + work_doubles(m));
     *s = (lcp_state){.n = n, .A = A, .q = q, .z = z, .w = w};
     s->L = d;
     s->dz = d + m * m;
@@ -519,4 +526,238 @@ bool lcp_unique(int n, const double *A, const double *q, const double *z, lcp_wo
         clamp(&s, i, s.y, si);
     }
     return true;
+}
+
+/* ------------------------------------------------------ the least-norm answer
+ *
+ * The answers of one problem share w (lcp.h): they are the z >= 0 with A z = A z*
+ * (z* the one found) and z_i = 0 wherever w_i > 0.  Over the set S of the other
+ * contacts, A_SS z_S = A_SS z*_S says only that z_S lies in z*_S plus the null
+ * space of A_SS: with A_SS = D U L U^T D (D its diagonal's square roots, U the
+ * eigenvectors of the scaled matrix, L their r eigenvalues above zero), it is
+ * V^T z_S = V^T z*_S for V = D U, r independent equations.  The least-norm answer
+ * is the convex quadratic program
+ *     minimise |x|^2 / 2  subject to  V^T x = V^T z*_S,  x >= 0,
+ * solved by the primal active-set method (Nocedal and Wright, "Numerical
+ * Optimization", 16.5) from x = z*_S, which is feasible: the free set F keeps r
+ * independent rows of V; each step projects x_F onto the range of V_F (the
+ * least-norm x with the bounds outside F held at 0), and goes as far towards it
+ * as x >= 0 allows, a bound that stops it joining those held; at the projection,
+ * a held bound whose multiplier -V_i mu is negative is let go.  The answer is
+ * unique (the objective is strictly convex), so it does not depend on the order of
+ * the contacts, and it is symmetric when the problem is.  The eigenvectors come
+ * from Jacobi's cyclic method (Golub and Van Loan, "Matrix Computations", 8.5),
+ * robust at the rank-deficient matrices met here. */
+
+/* An eigenvalue of A_SS scaled to a unit diagonal at most this times the largest
+ * is zero (Jacobi's are exact to about 1e-16 of it): those contacts' rows depend
+ * on the others'. */
+#define RANK_TOL 1e-12
+/* Sweeps of Jacobi's method, at most (it converges quadratically: about 6). */
+#define JACOBI_SWEEPS 60
+
+/* The eigen-decomposition of the symmetric s x s matrix M (row-major; its diagonal
+ * becomes the eigenvalues, the rest is destroyed), the eigenvectors in the columns
+ * of U. */
+static void jacobi(int s, double *M, double *U)
+{
+    for (int i = 0; i < s; i++)
+        for (int j = 0; j < s; j++) U[i * s + j] = i == j;
+    for (int sweep = 0; sweep < JACOBI_SWEEPS; sweep++) {
+        double off = 0, diag = 0;
+        for (int i = 0; i < s; i++) {
+            diag += M[i * s + i] * M[i * s + i];
+            for (int j = i + 1; j < s; j++) off += M[i * s + j] * M[i * s + j];
+        }
+        if (off <= 1e-32 * diag) return;
+        for (int p = 0; p < s; p++) {
+            for (int q = p + 1; q < s; q++) {
+                double apq = M[p * s + q];
+                if (apq == 0) continue;
+                /* the rotation of rows and columns p, q that zeroes M_pq */
+                double theta = (M[q * s + q] - M[p * s + p]) / (2 * apq);
+                double t = (theta >= 0 ? 1 : -1) / (fabs(theta) + sqrt(theta * theta + 1));
+                double c = 1 / sqrt(t * t + 1), sn = t * c;
+                for (int k = 0; k < s; k++) {
+                    double a = M[k * s + p], b = M[k * s + q];
+                    M[k * s + p] = c * a - sn * b;
+                    M[k * s + q] = sn * a + c * b;
+                }
+                for (int k = 0; k < s; k++) {
+                    double a = M[p * s + k], b = M[q * s + k];
+                    M[p * s + k] = c * a - sn * b;
+                    M[q * s + k] = sn * a + c * b;
+                }
+                for (int k = 0; k < s; k++) {
+                    double a = U[k * s + p], b = U[k * s + q];
+                    U[k * s + p] = c * a - sn * b;
+                    U[k * s + q] = sn * a + c * b;
+                }
+            }
+        }
+    }
+}
+
+/* The QR factors of V_F, the rows F of V (s x r, rank r): the |F| x r matrix Q
+ * with orthonormal columns, by modified Gram-Schmidt twice over (Q row a of V_F
+ * at Q's row a; rows outside F left 0), and the upper triangular r x r R with
+ * V_F = Q R.  False when a column falls to rounding (rank below r). */
+static bool qr_free(int s, int r, const double *V, const int *F, double *Q, double *R)
+{
+    for (int j = 0; j < r; j++) {
+        double len = 0;
+        for (int a = 0; a < s; a++) {
+            Q[a * r + j] = F[a] ? V[a * r + j] : 0;
+            len += Q[a * r + j] * Q[a * r + j];
+        }
+        for (int i = 0; i < r; i++) R[i * r + j] = 0;
+        for (int pass = 0; pass < 2; pass++) {
+            for (int i = 0; i < j; i++) {
+                double d = 0;
+                for (int a = 0; a < s; a++) d += Q[a * r + i] * Q[a * r + j];
+                for (int a = 0; a < s; a++) Q[a * r + j] -= d * Q[a * r + i];
+                R[i * r + j] += d;
+            }
+        }
+        double res = 0;
+        for (int a = 0; a < s; a++) res += Q[a * r + j] * Q[a * r + j];
+        if (!(res > 1e-24 * len)) return false;
+        res = sqrt(res);
+        R[j * r + j] = res;
+        for (int a = 0; a < s; a++) Q[a * r + j] /= res;
+    }
+    return true;
+}
+
+/* The rows of V (s x r) in F, with rows added from outside F in index order
+ * until they span R^r (Gram-Schmidt, B the r x r basis found): false when even
+ * all s rows do not. */
+static bool span_free(int s, int r, const double *V, int *F, double *B, double *t)
+{
+    int k = 0;
+    for (int pass = 0; pass < 2 && k < r; pass++) {
+        for (int a = 0; a < s && k < r; a++) {
+            if ((F[a] != 0) != (pass == 0)) continue;
+            double len = 0;
+            for (int j = 0; j < r; j++) {
+                t[j] = V[a * r + j];
+                len += t[j] * t[j];
+            }
+            for (int b = 0; b < k; b++) {
+                double d = 0;
+                for (int j = 0; j < r; j++) d += t[j] * B[b * r + j];
+                for (int j = 0; j < r; j++) t[j] -= d * B[b * r + j];
+            }
+            double res = 0;
+            for (int j = 0; j < r; j++) res += t[j] * t[j];
+            if (!(res > 1e-18 * len)) continue;
+            res = sqrt(res);
+            for (int j = 0; j < r; j++) B[k * r + j] = t[j] / res;
+            k++;
+            F[a] = 1;
+        }
+    }
+    return k == r;
+}
+
+void lcp_least_norm(int n, const double *A, const double *q, double *z, lcp_work *work)
+{
+    assert(n >= 0);
+    if (n < 2 || lcp_unique(n, A, q, z, work)) return;
+    size_t m = (size_t)n;
+    double *M = (double *)(void *)work, *U = M + m * m, *V = U + m * m;
+    double *d = V + m * m, *x = d + m, *p = x + m, *mu = p + m, *g = mu + m, *lam = g + m;
+    int *S = (int *)(void *)(M + work_doubles(m)), *F = S + m; /* F: x_a free */
+    /* S: the contacts that may carry force (w_i = 0); the others carry none in
+     * any answer, nor do those whose row is zero */
+    double qmax = 0, zs = 0;
+    for (int i = 0; i < n; i++) {
+        qmax = fmax(qmax, fabs(q[i]));
+        zs += sqrt(fmax(A[i * n + i], 0)) * z[i];
+    }
+    int s = 0;
+    for (int i = 0; i < n; i++) {
+        double root = sqrt(fmax(A[i * n + i], 0));
+        double wi = w_of(A + (size_t)i * n, q[i], z, n);
+        if (root > 0 && wi <= LCP_TOL * (qmax + root * zs)) S[s++] = i;
+        else z[i] = 0;
+    }
+    if (s < 2) return;
+    for (int a = 0; a < s; a++) {
+        d[a] = sqrt(A[S[a] * n + S[a]]);
+        x[a] = z[S[a]];
+    }
+    for (int a = 0; a < s; a++)
+        for (int b = 0; b < s; b++) M[a * s + b] = A[S[a] * n + S[b]] / (d[a] * d[b]);
+    jacobi(s, M, U);
+    double top = 0;
+    for (int a = 0; a < s; a++) {
+        lam[a] = M[a * s + a];
+        top = fmax(top, lam[a]);
+    }
+    /* V = D U over the eigenvalues above zero */
+    int r = 0;
+    for (int k = 0; k < s; k++) {
+        if (!(lam[k] > RANK_TOL * top)) continue;
+        for (int a = 0; a < s; a++) V[a * s + r] = d[a] * U[a * s + k];
+        r++;
+    }
+    if (r == s || r == 0) return;
+    for (int a = 0; a < s; a++)
+        for (int j = 0; j < r; j++) V[a * r + j] = V[a * s + j]; /* (packed s x r) */
+    for (int a = 0; a < s; a++) F[a] = x[a] > 0;
+    if (!span_free(s, r, V, F, M, g)) return;
+    for (int it = 0; it < 4 * s + 20; it++) {
+        /* the projection of x_F onto the range of V_F = Q R: Q Q^T x_F, which is
+         * V_F mu for mu = R^-1 Q^T x_F */
+        if (!qr_free(s, r, V, F, M, U)) break; /* (rounding: x stands, an answer) */
+        for (int j = 0; j < r; j++) {
+            g[j] = 0;
+            for (int a = 0; a < s; a++) g[j] += M[a * r + j] * x[a];
+        }
+        for (int i = r - 1; i >= 0; i--) {
+            double v = g[i];
+            for (int j = i + 1; j < r; j++) v -= U[i * r + j] * mu[j];
+            mu[i] = v / U[i * r + i];
+        }
+        double pmax = 0, xmax = 0;
+        for (int a = 0; a < s; a++) {
+            double v = 0;
+            if (F[a])
+                for (int j = 0; j < r; j++) v += M[a * r + j] * g[j];
+            else
+                for (int j = 0; j < r; j++) v += V[a * r + j] * mu[j];
+            p[a] = F[a] ? v - x[a] : -v; /* held: its multiplier */
+            if (F[a]) pmax = fmax(pmax, fabs(p[a]));
+            xmax = fmax(xmax, fabs(x[a]));
+        }
+        if (pmax <= 1e-11 * xmax) {
+            /* at the projection: let go of the held bound whose multiplier is the
+             * most negative, or stop */
+            int worst = -1;
+            for (int a = 0; a < s; a++)
+                if (!F[a] && p[a] < -1e-12 * xmax && (worst < 0 || p[a] < p[worst])) worst = a;
+            if (worst < 0) break;
+            F[worst] = 1;
+            continue;
+        }
+        /* towards it, as far as x >= 0 allows */
+        double step = 1;
+        int stop = -1;
+        for (int a = 0; a < s; a++) {
+            if (!F[a] || !(p[a] < 0) || !(x[a] + p[a] < 0)) continue;
+            double t = x[a] / -p[a];
+            if (t < step) {
+                step = t;
+                stop = a;
+            }
+        }
+        for (int a = 0; a < s; a++)
+            if (F[a]) x[a] += step * p[a];
+        if (stop >= 0) {
+            x[stop] = 0;
+            F[stop] = 0;
+        }
+    }
+    for (int a = 0; a < s; a++) z[S[a]] = fmax(x[a], 0);
 }

@@ -16,7 +16,10 @@
  * bottom corners on a floor, a contact given twice): lcp_solve then returns one of
  * many answers, with at most rank(A) forces above zero, deterministic but depending
  * on the contacts' order.  So apply J^T z to the bodies and read w; read a single
- * z_i only when lcp_unique says the forces are determined.
+ * z_i only when lcp_unique says the forces are determined, or after
+ * lcp_least_norm has made z the answer of least norm, which is unique: the same
+ * whatever the contacts' order, and symmetric when the problem is (a plank on two
+ * equal supports gets equal impulses at both).
  */
 #ifndef VROC_LCP_H
 #define VROC_LCP_H
@@ -30,12 +33,13 @@
  * |w_i| <= LCP_TOL s_i wherever z_i > 0. */
 #define LCP_TOL 1e-12
 
-/* The caller's workspace for lcp_solve and lcp_unique: lcp_work_size(n) bytes from
- * malloc (or any memory aligned for double).  Nothing in it matters between calls,
- * so one workspace of the largest n serves every call. */
+/* The caller's workspace for lcp_solve, lcp_unique and lcp_least_norm:
+ * lcp_work_size(n) bytes from malloc (or any memory aligned for double).  Nothing
+ * in it matters between calls, so one workspace of the largest n serves every
+ * call. */
 typedef struct lcp_work lcp_work;
 
-/* Bytes of workspace for n contacts: 8 n^2 + 64 n. */
+/* Bytes of workspace for n contacts: 24 n^2 + 64 n. */
 size_t lcp_work_size(int n);
 
 /* Solves the problem above for n >= 0 contacts: A is n x n, row-major, symmetric
@@ -55,5 +59,13 @@ int lcp_solve(int n, const double *A, const double *q, double *z, double *w, lcp
  * except in degenerate cases where contacts without force pin the others (false is
  * on the safe side). */
 bool lcp_unique(int n, const double *A, const double *q, const double *z, lcp_work *work);
+
+/* Makes z, a solution from lcp_solve, the problem's solution of least Euclidean
+ * norm: the same w (to rounding), z >= 0 exactly, and among all such z the
+ * shortest, which is unique.  Where the contacts that carry force have dependent
+ * rows (a box's four bottom corners, a plank's eight on two supports), it spreads
+ * the force over them as evenly as their rows allow.  Leaves z as it is when
+ * lcp_unique holds. */
+void lcp_least_norm(int n, const double *A, const double *q, double *z, lcp_work *work);
 
 #endif

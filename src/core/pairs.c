@@ -352,12 +352,13 @@ closest_result pair_query_apart(world *w, pair *p, const body *a, const body *b)
     return r;
 }
 
-closest_result pair_query_peek(world *w, pair *p, const body *a, const body *b)
+closest_result pair_query_peek(world *w, pair *p, const body *a, const body *b, bool depth)
 {
     piece_pairs *pp = pair_pieces(w, p);
     closest_cache cache = p->cache;
-    closest_result r = pp->n > 0 ? pieces_distance(a, b, pp, PIECES_PEEK, true)
-                                 : body_distance(a, b, &cache);
+    closest_result r = pp->n > 0 ? pieces_distance(a, b, pp, PIECES_PEEK, depth)
+                       : depth   ? body_distance(a, b, &cache)
+                                 : body_distance_apart(a, b, &cache);
     w->st.pair_checks++;
     if (r.restarted) w->st.restarts++;
     return r;

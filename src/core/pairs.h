@@ -123,8 +123,9 @@ closest_result pair_query(world *w, pair *p, const body *a, const body *b);
  * (body_distance_apart). */
 closest_result pair_query_apart(world *w, pair *p, const body *a, const body *b);
 
-/* The same from the pair's cache, which it leaves as it was. */
-closest_result pair_query_peek(world *w, pair *p, const body *a, const body *b);
+/* The same from the pair's cache, which it leaves as it was: pair_query's answer
+ * when depth, else pair_query_apart's. */
+closest_result pair_query_peek(world *w, pair *p, const body *a, const body *b, bool depth);
 
 /* Pair p's piece pairs (empty unless one of its objects has several pieces). */
 piece_pairs *pair_pieces(world *w, const pair *p);

@@ -10,10 +10,12 @@
  *  - the end of a cluster's step (cluster.h).
  * Each event changes the flights of the objects it touches from its instant on
  * (retime.h); every other object flies on as it did, and what was found of its
- * pairs holds.  Events at the same instant are answered in a fixed order (pairs
- * before objects, each by index), and which pairs are searched (the heap's due
- * ones, or all of them) changes no answer: a search depends on its pair's flights
- * alone.  The frame ends with the thesis's rule of rest (rest_frame_end).  As
+ * pairs holds.  Events at the same instant are taken in a fixed order (pairs
+ * before objects, each by index), but the first contact answered is an instant
+ * that takes in every other contact beginning with it (instant.h: within the
+ * contact distance and closing), so that the answer does not depend on that
+ * order; and which pairs are searched (the heap's due ones, or all of them)
+ * changes no answer: a search depends on its pair's flights alone.  The frame ends with the thesis's rule of rest (rest_frame_end).  As
  * Box2D's b2World_Step sits beside its contact_solver.c, this file keeps the
  * frame, the step and the loop over the events; answering them is answer.c's.
  */
@@ -25,6 +27,7 @@
 
 #include "answer.h"
 #include "broad.h"
+#include "instant.h"
 #include "pairs.h"
 #include "rest.h"
 #include "retime.h"
@@ -211,7 +214,8 @@ static void find_contacts(world *w)
         closest_result r = pair_query(w, p, a, b);
         if (r.status == CLOSEST_INVALID) continue;
         double touch = tol_touch(a, b);
-        if (r.distance <= touch && r.distance >= -touch) {
+        /* (placed closing: a collision, which its search finds at once) */
+        if (r.distance <= touch && r.distance >= -touch && !instant_closing(w, p, &r)) {
             p->touching = true;
             pair_hit_from_query(w, p);
             a->woken = b->woken = true;

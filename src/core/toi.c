@@ -272,8 +272,7 @@ toi_output toi_find(world *w, const toi_input *in)
                        : body_distance(a, b, &cache);
                 out.queries++;
             }
-            double thick = touch + (r.status == CLOSEST_SEPARATED ? 0 : -r.distance);
-            if (meeting(a, &ma, b, &mb, &r, thick)) {
+            if (meeting(a, &ma, b, &mb, &r, tol_region(a, b, r.distance))) {
                 out.state = TOI_HIT;
                 out.t = t;
                 out.r = r;

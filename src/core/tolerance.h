@@ -118,6 +118,15 @@ static inline double tol_contact(const body *a, const body *b)
     return d_max(SIM_CONTACT_TOL * tol_size(a, b), 64 * tol_round(a, b));
 }
 
+/* The thickness of the contact region of a and b when their distance is d (<= 0
+ * in): tol_contact, deeper by as much as they are in, so that every point that
+ * is in is one of its points.  A contact is met (toi.c) and answered (instant.c)
+ * at the same points. */
+static inline double tol_region(const body *a, const body *b, double d)
+{
+    return tol_contact(a, b) + (d < 0 ? -d : 0);
+}
+
 /* The gap at which a lasting contact of a and b is kept (SIM_HOVER), at least
  * four contact distances far from the origin. */
 static inline double tol_hover(const body *a, const body *b)

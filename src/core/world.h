@@ -75,6 +75,9 @@ typedef struct {
     int first_painleve;   /* an object of the first of them (when painleve > 0) */
     long fallen;          /* objects that fell more than SIM_FALL_DEPTH below the
                            * lowest static object (each once: body.fell) */
+    long waves_cut;       /* instants whose waves were ended by a last solve with
+                           * no restitution, after 4 n waves of n contacts (a ball
+                           * pinched between two walls, a lossy stack: instant.h) */
     long heap_pops;       /* pairs taken from the schedule to be checked */
     long events_lost;     /* collisions not reported in events (out of memory) */
     long late_pairs;      /* (heap off) contacts found of pairs the broad phase did

@@ -111,6 +111,9 @@ cmd_status cmd_save(shell *sh, const stmt *st)
     fprintf(f, "# the contact state: modes, rest and lasting contacts, as the simulation left "
                "them\n");
     for (int i = 0; i < sh->w.n; i++) {
+        /* (one a command placed has its contacts found by the next frame, as the
+         * read-back world's does: objects made touching, a cradle's balls) */
+        if (sh->w.bodies[i]->moved) continue;
         fprintf(f, "%s %s\n", body_type_name(sh->w.bodies[i]->sp.kind), sh->w.bodies[i]->name);
         contact_write(f, &sh->w, i, 1);
     }
@@ -203,6 +206,7 @@ cmd_status cmd_stats(shell *sh, const stmt *st)
     long resting = 0;
     for (int i = 0; i < w->n; i++) resting += w->bodies[i]->state == STATE_RESTING;
     fprintf(sh->out, "resting = %ld\n", resting);
+    fprintf(sh->out, "waves_cut = %ld\n", w->st.waves_cut);
     return CMD_OK;
 }
 
