@@ -297,10 +297,12 @@ check "basketball-throw scores: the ball's centre crosses the ring's plane downw
 "$VROC" -b -q "$S/bounce-throw.vroc" -c "trace = $TMP/bt.csv; events = $TMP/bt-events.csv; run 25" > /dev/null 2>&1
 check "bounce-throw: the thrown ball strikes the balls on the chair" "$TMP/bt-events.csv" '
     ($2 ~ /^ball[1-4]$/ && $3 == "throw") || ($3 ~ /^ball[1-4]$/ && $2 == "throw") { n++ } END { exit !(n >= 1) }'
-check "bounce-throw: they scatter (three of the four move over 0.3 m)" "$TMP/bt.csv" '
+# (with friction on the seat, the balls the throw does not reach first roll
+# less far: two of the four go over 0.3 m, a third over 0.2 m)
+check "bounce-throw: they scatter (two of the four move over 0.3 m, three over 0.2 m)" "$TMP/bt.csv" '
     $3 ~ /^ball[1-4]$/ { if ($1 == 5) { x[$3] = $4; y[$3] = $5; z[$3] = $6 }
-        if ($1 == 25 && ($4 - x[$3])^2 + ($5 - y[$3])^2 + ($6 - z[$3])^2 > 0.09) n++ }
-    END { exit n < 3 }'
+        if ($1 == 25) { d = ($4 - x[$3])^2 + ($5 - y[$3])^2 + ($6 - z[$3])^2; n += d > 0.09; m += d > 0.04 } }
+    END { exit n < 2 || m < 3 }'
 out=$("$VROC" -b -q "$S/panel-demo.vroc" -c "trace = $TMP/pd.csv; run 30; show" 2>&1)
 case "$out" in *"time_step = 0.2"*"select on"*) ok "panel-demo: the slider set time_step to 0.2 and Select turned select mode on" ;;
     *) notok "panel-demo: slider and Select" "$out" ;; esac
