@@ -275,19 +275,20 @@ static void swap(double *a, double *b)
 /* The square system M x = r (k x k, row-major, overwritten) by Gaussian
  * elimination with full pivoting; an unknown whose pivot is below 1e-13 of the
  * largest is 0 (the system is then singular: points given twice).  Returns the
- * rank found. */
+ * rank found.  Each elimination step also finds the next pivot (the first
+ * largest entry, row by row, of what is left), so that the matrix is read once
+ * a step. */
 static int solve_full(int k, double *M, double *r, double *x)
 {
     int perm[3 * FRICTION_MAX_POINTS], rank = k;
     for (int i = 0; i < k; i++) perm[i] = i;
-    double big = 0;
-    for (int i = 0; i < k * k; i++) big = d_max(big, fabs(M[i]));
+    int pr = 0, pc = 0;
+    double best = -1;
+    for (int i = 0; i < k; i++)
+        for (int j = 0; j < k; j++)
+            if (fabs(M[i * k + j]) > best) best = fabs(M[i * k + j]), pr = i, pc = j;
+    double big = d_max(best, 0);
     for (int c = 0; c < k; c++) {
-        int pr = c, pc = c;
-        double best = -1;
-        for (int i = c; i < k; i++)
-            for (int j = c; j < k; j++)
-                if (fabs(M[i * k + j]) > best) best = fabs(M[i * k + j]), pr = i, pc = j;
         if (!(best > 1e-13 * big)) {
             rank = c;
             break;
@@ -301,11 +302,21 @@ static int solve_full(int k, double *M, double *r, double *x)
             int t = perm[c];
             perm[c] = perm[pc], perm[pc] = t;
         }
+        best = -1, pr = pc = c + 1;
         for (int i = c + 1; i < k; i++) {
-            double f = M[i * k + c] / M[c * k + c];
-            if (f == 0) continue;
-            for (int j = c; j < k; j++) M[i * k + j] -= f * M[c * k + j];
-            r[i] -= f * r[c];
+            double *Mi = &M[i * k];
+            double f = Mi[c] / M[c * k + c];
+            if (f != 0) {
+                Mi[c] -= f * M[c * k + c];
+                for (int j = c + 1; j < k; j++) {
+                    Mi[j] -= f * M[c * k + j];
+                    if (fabs(Mi[j]) > best) best = fabs(Mi[j]), pr = i, pc = j;
+                }
+                r[i] -= f * r[c];
+            } else {
+                for (int j = c + 1; j < k; j++)
+                    if (fabs(Mi[j]) > best) best = fabs(Mi[j]), pr = i, pc = j;
+            }
         }
     }
     double y[3 * FRICTION_MAX_POINTS];
