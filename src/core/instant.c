@@ -49,6 +49,7 @@ typedef struct {
     bool lasting;       /* in lasting contact when the instant began */
     bool held;          /* a held object is one of its two */
     bool taken;         /* a wave took it */
+    bool rough;         /* its pair has friction */
     double j, closing;  /* its impulse over the waves, the fastest it closed */
     vec3 at;            /* its rows' impulses times where they act, summed */
 } contact;
@@ -204,7 +205,8 @@ static void add_contact(world *w, instant_work *I, long slot, const closest_resu
     if (n == 0) return;
     contact *c = &I->c[I->nc++];
     *c = (contact){.p = p, .slot = slot, .hit = hit, .normal = r->normal, .first = I->nr, .n = n, .e = e,
-                   .lasting = p->touching, .held = A->held || B->held, .closing = 0};
+                   .lasting = p->touching, .held = A->held || B->held, .closing = 0,
+                   .rough = friction_mu(A, B) > 0};
     if (c->lasting) c->kept = cluster_stepping_speed(w, A) + cluster_stepping_speed(w, B);
     I->nr += n;
 }
@@ -258,7 +260,10 @@ static bool approaches(const world *w, const instant_work *I, const contact *c)
 /* A row's restitution in a wave, closing at that speed (instant.h). */
 static double restitution(const contact *c, double closing)
 {
-    if (c->e < 1 && c->e * closing < SIM_BOUNCE_SPEED) return 0; /* a rebound too slow to see */
+    /* a rebound too slow to see, where the contact loses energy (e < 1, or
+     * friction: a cube of e = 1 with friction rocked on its face for good,
+     * its corners landing in turn ever faster, hundreds a frame) */
+    if ((c->e < 1 || c->rough) && c->e * closing < SIM_BOUNCE_SPEED) return 0;
     if (c->lasting && closing <= c->kept) return 0; /* kept closed by its cluster */
     return c->e;
 }
@@ -467,12 +472,13 @@ static void stay_or_part(world *w, const instant_work *I)
         pair *p = c->p;
         p->hit = c->hit;
         bool stays = false;
-        /* (a lossy contact, one kept closed, or one whose result the speed
-         * limits cut (it lost energy, and its points were stopped where they
-         * would approach again), that opens too slowly to see a rebound: none;
+        /* (a lossy contact (e < 1, or friction), one kept closed, or one
+         * whose result the speed limits cut (it lost energy, and its points
+         * were stopped where they would approach again), that opens too
+         * slowly to see a rebound: none;
          * else a cut spinning pair parts and meets again, ever more slowly) */
         const body *A = w->bodies[p->a], *B = w->bodies[p->b];
-        double open = c->e < 1 || c->lasting || I->cut ? SIM_BOUNCE_SPEED : 1e3 * tol_speed(A, B);
+        double open = c->e < 1 || c->rough || c->lasting || I->cut ? SIM_BOUNCE_SPEED : 1e3 * tol_speed(A, B);
         for (int r = c->first; r < c->first + c->n && !c->held; r++)
             stays = stays || impulse_speed(&I->row[r], w->bodies) <= open;
         p->touching = stays;

@@ -23,7 +23,8 @@
  *    pinched between two walls, a lossy stack whose waves would halve for ever),
  *    counted in sim_stats.waves_cut.
  * A point's restitution is its pair's (the lesser elasticity of the two), none
- * for a rebound slower than SIM_BOUNCE_SPEED when that is below 1, and none for a
+ * for a rebound slower than SIM_BOUNCE_SPEED when that is below 1 or the pair has
+ * friction (it loses energy as it slips), and none for a
  * lasting contact closing no faster than its cluster's own steps can make it
  * (cluster.h: the kicks keep it closed, and only a contact that approaches
  * faster than that joins a wave).  Then the speed limits (max_linear,

@@ -320,6 +320,14 @@ bool rest_slide_on(world *w, int i)
 
 /* ---- balance and rest ---- */
 
+/* With friction, a slow object is held by the points of its hull within this
+ * of its supports (relative to the sizes, as SIM_CONTACT_TOL), not only by
+ * those in contact: a curved bottom's facets (a pillow's) rock among vertices
+ * a fraction of a millimetre apart in height, and on its lowest vertex alone
+ * no balance holds it, so that it rocked for good.  Without friction the
+ * points in contact only, as before. */
+#define REST_SUPPORT_DEPTH 1e-3
+
 bool rest_balanced(world *w, const int *list, int n)
 {
     /* each object's copy moves as the force alone would make it in a second, and
@@ -344,7 +352,9 @@ bool rest_balanced(world *w, const int *list, int n)
             if (mobile[o] && o < i) continue; /* each pair once */
             const body *A = w->bodies[p->a], *B = w->bodies[p->b];
             closest_result r = pair_query(w, p, A, B);
-            rows_add(&rl, p, A, B, &r, tol_contact(A, B), 0, w->bodies);
+            double depth = friction_mu(A, B) > 0 ? d_max(tol_contact(A, B), REST_SUPPORT_DEPTH * tol_size(A, B))
+                                                 : tol_contact(A, B);
+            rows_add(&rl, p, A, B, &r, depth, 0, w->bodies);
             ok = !rl.full;
         }
     }
