@@ -30,10 +30,7 @@ frames="3 4"
 sweep crowds "$W" "$frames" 3
 
 split_runs "crowds" "$W"
-h4=$("$VROC" -b -q "$W" -c "run 4; hash" 2>&1)
-h31=$("$VROC" -b -q "$W" -c "run 3; run 1; hash" 2>&1)
-if [ "$h4" = "$h31" ]; then ok "crowds: run 3 then run 1 equals run 4 (the crowd's frame)"
-else notok "crowds: run 3 then run 1 equals run 4 (the crowd's frame)" "run 4: $h4" "run 3; run 1: $h31"; fi
+same_hash crowds "$W" "run 4" "run 3; run 1" "run 3 then run 1 equals run 4 (the crowd's frame)"
 
 n=12
 same_traces crowds "$W" "$n" stats

@@ -32,10 +32,7 @@ frames="10 11"
 sweep piles "$W" "$frames" 3
 
 split_runs "piles" "$W"
-a=$("$VROC" -b -q "$W" -c "run 15; hash" 2>&1)
-b=$("$VROC" -b -q "$W" -c "run 15; hash" 2>&1)
-if [ "$a" = "$b" ]; then ok "piles: the same run twice gives the same hash"
-else notok "piles: the same run twice gives the same hash" "$a" "$b"; fi
+same_hash piles "$W" "run 15" "run 15" "the same run twice gives the same hash"
 
 same_traces piles "$W" 20 stats
 if grep -q '^unsolved = 0$' out-on && grep -q '^guards = 0$' out-on; then
