@@ -6,12 +6,14 @@
 # apart at frames' ends.  Saved after frames 10 and 11 (11 under the
 # sanitizers) and read back to the bit (tests/sweep.sh); a run split anywhere
 # equals the whole; the heap on and off, and the validation build, give the
-# same trace; and the same run twice gives the same hash.
+# same trace; and the same run twice gives the same hash.  It is issue 35's
+# frictionless pile: friction and rolling friction 0.
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/sweep.sh"
 cd "$TMP" || exit 1
 W="$TMP/pile2.vroc"
 cat > make.vroc <<'V'
+default_friction = 0; default_rolling_friction = 0
 gravity
 cube floor; mass = -1; size = (2, 2, 0.1); translate = (0, 0, -1.35)
 cube wall-n; mass = -1; size = (2.2, 0.1, 1.4); translate = (0, 2.1, 0)
