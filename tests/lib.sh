@@ -111,6 +111,14 @@ split_runs() {
     fi
 }
 
+# same_hash NAME FILE A B WHAT: the statements A, and B, each run on FILE by a
+# vroc of its own and then hashed, give the same hash ("NAME: WHAT").
+same_hash() {
+    ha=$("$VROC" -b -q "$2" -c "$3; hash" 2>&1)
+    hb=$("$VROC" -b -q "$2" -c "$4; hash" 2>&1)
+    if [ "$ha" = "$hb" ]; then ok "$1: $5"; else notok "$1: $5" "$3: $ha" "$4: $hb"; fi
+}
+
 # same_traces NAME FILE N [STATEMENTS]: N frames of FILE give the same trace with
 # the heap on and off, and (the normal build) in the validation build, whose
 # invariants are checked after every internal step.  The heap-on run's output,

@@ -1,18 +1,44 @@
 /* apart.c: no overlap left at a frame's end; the validation build's watch (apart.h). */
 #include "apart.h"
 
+#include <math.h>
 #include <stdlib.h>
 
 #include "closest.h"
+#include "energy.h"
 #include "pairs.h"
 #include "retime.h"
 #include "step.h"
 #include "world.h"
 
-/* How freely object b moves when pushed apart: 1/m, or 0 when it does not. */
-static double give(const body *b)
+/* True when object b moves of itself: dynamic, neither held nor resting. */
+static bool moving(const body *b)
 {
-    return body_is_static(b) || b->held ? 0 : 1 / b->mass;
+    return !body_is_static(b) && !b->held && b->state != STATE_RESTING;
+}
+
+/* How freely object b moves when pushed apart from o: 1/m, or 0 when it does not
+ * (static, held, or resting against an object that moves: that one sank into
+ * it, and a resting object stays put until something moves it). */
+static double give(const body *b, const body *o)
+{
+    if (body_is_static(b) || b->held || (b->state == STATE_RESTING && moving(o))) return 0;
+    return 1 / b->mass;
+}
+
+/* Object b moved by dx: where that raised it against the force, as much of its
+ * kinetic energy as that gives back (all of it at most), by scaling its speeds, so
+ * that moving apart makes no energy where the object has the motion to pay. */
+static void pay(const world *w, body *b, vec3 dx)
+{
+    b->x = v3_add(b->x, dx);
+    double raised = -b->mass * v3_dot(world_accel(w), dx);
+    double kinetic = energy_kinetic(energy_of_body(w, b));
+    if (!(raised > 0) || !(kinetic > 0)) return;
+    double s = raised < kinetic ? sqrt(1 - raised / kinetic) : 0;
+    b->v = v3_scale(b->v, s);
+    b->L = v3_scale(b->L, s);
+    body_update_w(b);
 }
 
 /* True when a and b cannot reach each other: their balls are apart. */
@@ -32,16 +58,16 @@ int apart_frame_end(world *w)
             pair *p = &w->pairs.p[k];
             if (p->a < 0 || !p->near) continue;
             body *a = w->bodies[p->a], *b = w->bodies[p->b];
-            double ga = give(a), gb = give(b);
+            double ga = give(a, b), gb = give(b, a);
             if (ga + gb == 0 || balls_apart(a, b)) continue;
             closest_result r = body_distance(a, b, NULL);
             if (r.status != CLOSEST_PENETRATING || !(r.distance < -APART_SLOP)) continue;
             /* the normal goes from b to a: a along it, b against it, until they touch */
             double depth = -r.distance;
-            a->x = v3_mad(a->x, r.normal, depth * ga / (ga + gb));
-            b->x = v3_mad(b->x, r.normal, -depth * gb / (ga + gb));
-            moved[p->a] = ga > 0;
-            moved[p->b] = gb > 0;
+            pay(w, a, v3_scale(r.normal, depth * ga / (ga + gb)));
+            pay(w, b, v3_scale(r.normal, -depth * gb / (ga + gb)));
+            moved[p->a] = moved[p->a] || ga > 0;
+            moved[p->b] = moved[p->b] || gb > 0;
             now++;
         }
         count += now;

@@ -8,9 +8,11 @@
  * searched.  So at the end of every frame each pair that overlaps by more than
  * APART_SLOP is moved apart, along its contact normal, until it touches: the
  * objects' positions are moved in inverse proportion to their masses (a static or
- * held object does not move), and no velocity changes, so no kinetic energy is
- * made.  (Raising an object against gravity raises its potential energy by m g
- * times the depth, at most a micrometre's worth for what the searches leave.)
+ * held object does not move, nor does a resting one that a moving one sank
+ * into), and no speed is added, so no kinetic energy is made.  An object raised
+ * against the force pays for the potential energy it gains (m g times the height)
+ * from its kinetic energy, as far as it has any: energy is made only where an
+ * object at rest, or too slow to pay, is raised.
  */
 #ifndef VROC_APART_H
 #define VROC_APART_H

@@ -96,6 +96,17 @@ static bool closed(const world *w, const points *pts, int k)
     return closing <= tol_speed(P, Q) + cluster_stepping_speed(w, P) + cluster_stepping_speed(w, Q);
 }
 
+/* True when point k of pts is closed and closes no faster than the cluster's own
+ * steps close it: one the steps keep closed, not one landing. */
+static bool kept(const world *w, const points *pts, int k)
+{
+    const cpoint *x = &pts->cp[k];
+    const body *P = w->bodies[x->p], *Q = w->bodies[x->q];
+    double closing = -impulse_speed(&pts->row[k], w->bodies);
+    return closed(w, pts, k) &&
+           closing <= tol_speed(P, Q) + cluster_stepping_speed(w, P) + cluster_stepping_speed(w, Q);
+}
+
 /* Sorts the points of pts from `from` on into closed and open: the closed ones
  * to follow pts->nclosed (which grows by them), the open ones after. */
 static void sort_closed(const world *w, points *pts, int from)
@@ -495,12 +506,13 @@ void cluster_settle(world *w, const int *list, int n)
     gather(w, list, n, &pts, 0);
     body **bs = w->answer.now;
     bool *mobile = w->answer.mark;
-    /* the touching points: those that stay in contact stop approaching */
+    /* the touching points, and those the steps keep closed: they stop
+     * approaching (not a landing one, whose approach is a collision) */
     impulse_row rows[SIM_CLUSTER_ROWS];
     double u[SIM_CLUSTER_ROWS], lam[SIM_CLUSTER_ROWS];
     int m = 0;
     for (int k = 0; k < pts.rows.n; k++)
-        if (pts.gap[k] <= touch_at(w, &pts.cp[k])) rows[m++] = pts.row[k];
+        if (pts.gap[k] <= touch_at(w, &pts.cp[k]) || kept(w, &pts, k)) rows[m++] = pts.row[k];
     for (int k = 0; k < n; k++) mobile[list[k]] = true;
     for (int k = 0; k < m; k++) u[k] = impulse_speed(&rows[k], bs);
     if (m > 0 && friction_any(rows, m)) {

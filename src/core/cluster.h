@@ -35,8 +35,13 @@ typedef struct world world;
  * its objects (answer_scratch.landing). */
 double cluster_kick(world *w, const int *list, int n, double t, double t_end);
 
-/* The last kicks of the step (the objects' states at its end): touching points
- * no longer approach; lasting contacts whose gaps opened end. */
+/* The last kicks of the step (the objects' states at its end): the points the
+ * steps keep closed, and touching ones, no longer approach (RATTLE's second
+ * kick, on every closed point: one left approaching, as a point kept at the hover
+ * gap above the contact distance was, carries into the next step the speed the
+ * force gave it over this one, and the kicks made energy of it, a pile's
+ * contacts sinking and coming out again); lasting contacts whose gaps opened
+ * end. */
 void cluster_settle(world *w, const int *list, int n);
 
 /* How fast a point of b may close on what it is kept against between its
