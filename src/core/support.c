@@ -16,11 +16,24 @@
  * hierarchy (a hull where few low-degree vertices are independent). */
 #define REMOVE_LEAST 0.0625
 
-/* How the furthest vertex of a level is found from the one above. */
+/* How the furthest vertex of a level is found from the one above: where the level
+ * above kept as a vertex every vertex it did not remove (exact), from vertex j
+ * above, its own vertex node[j].u or one of the candidates cand[node[j].first ..
+ * + n - 1], the removed neighbours of u, with their coordinates: a step reads two
+ * or three cache lines (the large levels do not fit in a cache); else node is NULL
+ * and the step climbs from up[j].  */
 typedef struct {
-    int *first, *list; /* exact (the level above kept every vertex it did not remove
-                        * as a vertex): the removed neighbours of vertex v are
-                        * list[first[v] .. first[v + 1] - 1]; else NULL: a climb */
+    int u, first, n;
+} down_node;
+
+typedef struct {
+    vec3 p;
+    int v;
+} down_cand;
+
+typedef struct {
+    down_node *node;
+    down_cand *cand;
 } step_down;
 
 struct support_tree {
@@ -36,8 +49,8 @@ void support_tree_free(support_tree *t)
     for (int k = 1; k < t->nlev; k++) {
         poly_free(t->lev[k]);
         free(t->up[k]);
-        free(t->dn[k - 1].first);
-        free(t->dn[k - 1].list);
+        free(t->dn[k - 1].node);
+        free(t->dn[k - 1].cand);
     }
     free(t->lev);
     free(t->up);
@@ -107,24 +120,28 @@ static int cmp_keyed(const void *x, const void *y)
     return cmp_vec(&((const keyed *)x)->p, &((const keyed *)y)->p);
 }
 
-/* The removed neighbours of each of p's vertices (removed[] marks them), for a
- * step down by the lemma alone.  Returns 0, -1 when out of memory. */
-static int removed_lists(const poly *p, const unsigned char *removed, step_down *dn)
+/* The step down to p from the level above (its vertex j is p's up[j], nq of
+ * them), where removed[] marks what p lost.  Returns 0, -1 when out of memory. */
+static int step_lists(const poly *p, const unsigned char *removed, const int *up, int nq,
+                      step_down *dn)
 {
-    dn->first = malloc((size_t)(p->nv + 1) * sizeof *dn->first);
     int n = 0;
-    for (int v = 0; v < p->nv; v++)
-        for (int k = p->vert_first[v]; k < p->vert_first[v + 1] && !removed[v]; k++)
-            n += removed[neighbour(p, v, k)];
-    dn->list = malloc((size_t)(n > 0 ? n : 1) * sizeof *dn->list);
-    if (!dn->first || !dn->list) return -1;
+    for (int j = 0; j < nq; j++)
+        for (int k = p->vert_first[up[j]]; k < p->vert_first[up[j] + 1]; k++)
+            n += removed[neighbour(p, up[j], k)];
+    dn->node = malloc((size_t)nq * sizeof *dn->node);
+    dn->cand = malloc((size_t)(n > 0 ? n : 1) * sizeof *dn->cand);
+    if (!dn->node || !dn->cand) return -1;
     n = 0;
-    for (int v = 0; v < p->nv; v++) {
-        dn->first[v] = n;
-        for (int k = p->vert_first[v]; k < p->vert_first[v + 1] && !removed[v]; k++)
-            if (removed[neighbour(p, v, k)]) dn->list[n++] = neighbour(p, v, k);
+    for (int j = 0; j < nq; j++) {
+        int u = up[j];
+        dn->node[j] = (down_node){u, n, 0};
+        for (int k = p->vert_first[u]; k < p->vert_first[u + 1]; k++) {
+            int o = neighbour(p, u, k);
+            if (removed[o]) dn->cand[n++] = (down_cand){p->v[o], o};
+        }
+        dn->node[j].n = n - dn->node[j].first;
     }
-    dn->first[p->nv] = n;
     return 0;
 }
 
@@ -171,13 +188,13 @@ static poly *level_above(const poly *p, int **up_out, step_down *dn)
     }
     /* qhull leaves out a kept vertex only when it is not a corner of their hull
      * (coplanar): the lemma then does not hold, and the step down climbs */
-    if (q->nv == nk && removed_lists(p, removed, dn) != 0) goto fail;
+    if (q->nv == nk && step_lists(p, removed, up, q->nv, dn) != 0) goto fail;
     goto done;
 fail:
     poly_free(q);
     free(up);
-    free(dn->first);
-    free(dn->list);
+    free(dn->node);
+    free(dn->cand);
     *dn = (step_down){NULL, NULL};
     q = NULL;
     up = NULL;
@@ -243,22 +260,23 @@ int support_vertex(const support_tree *t, const poly *p, vec3 d)
     }
     /* a top of more than TOP_VERTICES (the hierarchy stopped early) is climbed */
     j = poly_climb(top, d, j);
+    best = v3_dot(top->v[j], d);
     for (int k = t->nlev - 1; k >= 1; k--) {
-        const poly *lo = t->lev[k - 1];
         const step_down *dn = &t->dn[k - 1];
-        j = t->up[k][j];
-        if (!dn->first) {
-            j = poly_climb(lo, d, j);
+        if (!dn->node) {
+            const poly *lo = t->lev[k - 1];
+            j = poly_climb(lo, d, t->up[k][j]);
+            best = v3_dot(lo->v[j], d);
             continue;
         }
         /* the furthest of the level below is j or a removed neighbour of it */
-        int bj = j;
-        double bx = v3_dot(lo->v[j], d);
-        for (int i = dn->first[j]; i < dn->first[j + 1]; i++) {
-            double x = v3_dot(lo->v[dn->list[i]], d);
-            if (x > bx) {
-                bx = x;
-                bj = dn->list[i];
+        const down_node *nd = &dn->node[j];
+        int bj = nd->u;
+        for (int i = nd->first; i < nd->first + nd->n; i++) {
+            double x = v3_dot(dn->cand[i].p, d);
+            if (x > best) {
+                best = x;
+                bj = dn->cand[i].v;
             }
         }
         j = bj;
