@@ -208,6 +208,11 @@ void closest_hull_free(closest_hull *h)
     free(h);
 }
 
+int closest_hull_support(const closest_hull *h, vec3 d)
+{
+    return support_vertex(h->top, h->p, d);
+}
+
 const char *closest_kind_name(closest_kind k)
 {
     switch (k) {
