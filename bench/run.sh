@@ -553,7 +553,7 @@ fi
 # on x (the figure), and the row says yes, no, or '-' when there is no figure.
 goal() {
     met=$(awk -v x="$2" "BEGIN { if (x == \"\" || x == \"-\") print \"-\"; else if ($4) print \"yes\"; else print \"no\" }")
-    printf '%-58s %14s %16s %5s\n' "$1" "${2:--}" "$3" "$met"
+    printf '%-58s %14s %16s %5s\n' "$1" "$(num "$2")" "$3" "$met"
 }
 # cpu_ratio A B: B's processor time per frame over A's (A's cpu frames/s over B's)
 cpu_ratio() {
