@@ -44,10 +44,10 @@ static int support_scan(const poly *h, vec3 dl, double tol, int *idx, int max)
     return n;
 }
 
-/* The same for any hull, by a walk: the furthest vertex is found (down the hull's
- * support hierarchy when it is large, feat; else by a climb); and each vertex within tol of it has an edge to
- * one further on, so they are all reached from it through such vertices.  0 when
- * out of memory. */
+/* The same for any hull, by a walk: the furthest vertex is found (down feat's
+ * support hierarchy on a large hull, else by a climb); and each vertex within tol
+ * of it has an edge to one further on, so they are all reached from it through
+ * such vertices.  0 when out of memory. */
 static int support_walk(const poly *h, const closest_hull *feat, vec3 dl, double tol, int *idx,
                         int max)
 {

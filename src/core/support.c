@@ -8,8 +8,9 @@
 /* A level of at most this many vertices is the top: the query looks at them all. */
 #define TOP_VERTICES 24
 
-/* Removed vertices have at most this many edges (Dobkin and Kirkpatrick take a
- * bound near 8; a climb's step costs a removed vertex's neighbours' degrees). */
+/* Removed vertices have at most this many edges (Dobkin and Kirkpatrick bound it
+ * near 8 for their proof; a higher bound lets a level remove more, and a query
+ * never reads a removed vertex's edges). */
 #define REMOVE_DEGREE 10
 
 /* A level that would remove fewer than this fraction of its vertices ends the
