@@ -36,7 +36,8 @@
  *   --name NAME     label printed as scene= (default: file name, or randomN)
  *
  * The random environment (thesis 5.6): N dynamic objects from `random N` (mixed
- * types, elasticity 1, up to 2 m/s and 2 rad/s) with no force, time_step 0.1,
+ * types, elasticity 1, up to 2 m/s and 2 rad/s; frictionless: default_friction and
+ * default_rolling_friction 0) with no force, time_step 0.1,
  * max_linear 2, max_angular 2 and collision_dist 0.2 (2 subframes per frame, as in
  * Table 5.6).  `random` scales object sizes with the smallest half-extent of
  * random_box, so that half-extent is held at A (--thick, default 2: objects 0.08 to
@@ -152,7 +153,10 @@ static double random_thick(const options *o) { return o->gas ? random_half(o) : 
 static int random_scene(const options *o, char *buf, size_t len)
 {
     double a = random_thick(o), x = random_half(o), t = 0.2;
+    /* (frictionless, as the thesis's random environment and Bullet's gas) */
     int k = snprintf(buf, len,
+                     "default_friction = 0\n"
+                     "default_rolling_friction = 0\n"
                      "time_step = 0.1\n"
                      "max_linear = 2\n"
                      "max_angular = 2\n"

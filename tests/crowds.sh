@@ -8,11 +8,13 @@
 # (tests/sweep.sh); a run split anywhere equals the whole, split just before the
 # frame too; the heap on and off, and the validation build, give the same trace;
 # stats counts the crowd, and no guard, overflow, restart or unsolved contact.
+# It is issue 35's frictionless box: friction and rolling friction 0.
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/sweep.sh"
 cd "$TMP" || exit 1
 W="$TMP/box78.vroc"
 cat > "$W" <<'V'
+default_friction = 0; default_rolling_friction = 0
 seed = 78; random_box = (1, 1, 1); random 50
 cube floor; mass = -1; size = (1.2, 1.2, 0.1); translate = (0, 0, -1.1)
 cube ceiling; mass = -1; size = (1.2, 1.2, 0.1); translate = (0, 0, 1.1)

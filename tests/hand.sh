@@ -102,6 +102,45 @@ check "and it follows the hand again when the hand rises above contact" "$TMP/pr
 n=$(awk 'END { print NR - 1 }' "$TMP/press-events.csv")
 [ "$n" = 0 ] && ok "a held body stopped by a static one gives it no impulse" || notok "no impulse against the table" "$n events"
 
+# ---- a tray in the hand carries what lies on it by friction ----
+# A tray (half-extents 0.5, 0.5, 0.02, its top at z = 1.02) held still for 0.3 s,
+# then carried along x at acceleration A for T = 0.6 s (a tracker row every 10 ms:
+# x = A t^2 / 2).  On it, with mu = 0.5 (the pair's sqrt(0.5 * 0.5)):
+#   - a box (half-side 0.05): at A = 1 m/s^2 <= mu g it sticks, and moves as the
+#     tray does (A T^2 / 2 = 0.18 m, A T = 0.6 m/s); at A = 1.5 mu g it slides,
+#     pushed at mu g: mu g T^2 / 2 and mu g T;
+#   - a solid ball (r = 0.05): friction F = m a_b and F r = (2/5) m r^2 alpha with
+#     no slip, a_b + alpha r = A, give a_b = (2/7) A (needing F <= mu m g: A <=
+#     3.5 mu g): at 1 m/s^2 it rolls along at (2/7) A; at 1.5 mu g it rolls back
+#     across the tray at (5/7) A, (5/7) A T^2 / 2 = 0.95 m > 0.5 m, and falls off.
+# (Nothing rests on a held object: its contacts are collisions, parting at 2 cm/s,
+# so the figures hold to 1%.)
+G=9.80665
+for A in 1 $(awk -v g=$G 'BEGIN { printf "%.17g", 1.5 * 0.5 * g }'); do
+    awk -v a="$A" 'BEGIN { print "time,x,y,z,qw,qx,qy,qz,trigger,button"
+        print "0,0,0,1,1,0,0,0,1,0"; print "0.3,0,0,1,1,0,0,0,1,0"
+        for (k = 1; k <= 60; k++) { t = k / 100; printf "%.17g,%.17g,0,1,1,0,0,0,1,0\n", 0.3 + t, a * t * t / 2 } }' \
+        > "$TMP/tray.csv"
+    for thing in "cube thing; size = (0.05, 0.05, 0.05)" "sphere thing; radius = 0.05"; do
+        out=$("$VROC" -b -q -c "gravity; max_angular = 100; cube tray; size = (0.5, 0.5, 0.02); translate = (0, 0, 1); select on" \
+            -c "$thing; translate = (0, 0, 1.0700001); elasticity = 0; tracker = $TMP/tray.csv; run 9" \
+            -c "precision = exact; print tray.translate; print thing.translate; print thing.linear_vel" 2>&1)
+        kind=${thing%% *}
+        printf '%s\n' "$out" | awk -v a="$A" -v g=$G -v kind="$kind" '
+            { gsub(/[(),]/, " ") }
+            /^tray.translate/ { tx = $3 } /^thing.translate/ { x = $3; z = $5 } /^thing.linear_vel/ { v = $3 }
+            END { T = 0.6; mu = 0.5
+                if (kind == "cube") { ea = a <= mu * g ? a : mu * g; what = a <= mu * g ? "rides along" : "slides" }
+                else { ea = 2 * a / 7; what = a <= mu * g ? "rolls along" : "rolls off" }
+                ex = ea * T * T / 2; ev = ea * T
+                if (kind == "sphere" && a > mu * g) { ok = z < 1 && tx - x > 0.5 }
+                else ok = (x - ex)^2 <= (0.01 * ex)^2 && (v - ev)^2 <= (0.01 * ev)^2
+                printf "%s on a tray carried at %.4g m/s^2 %s: x %.6g (want %.6g), v %.6g (want %.6g), z %.6g, tray at %.6g\n",
+                    kind, a, what, x, ex, v, ev, z, tx
+                exit !ok }' > "$TMP/tray.out" && ok "$(cat "$TMP/tray.out")" || notok "$(cat "$TMP/tray.out")" "$out"
+    done
+done
+
 # ---- fly ----
 # Outside select mode, the trigger flies head and look_at at fly_speed along the
 # hand's +x: turned 0.7 rad about z, for 0.5 s at 2.2 m/s: 1.1 (cos 0.7, sin 0.7, 0).
@@ -269,10 +308,12 @@ check "basketball-throw scores: the ball's centre crosses the ring's plane downw
 "$VROC" -b -q "$S/bounce-throw.vroc" -c "trace = $TMP/bt.csv; events = $TMP/bt-events.csv; run 25" > /dev/null 2>&1
 check "bounce-throw: the thrown ball strikes the balls on the chair" "$TMP/bt-events.csv" '
     ($2 ~ /^ball[1-4]$/ && $3 == "throw") || ($3 ~ /^ball[1-4]$/ && $2 == "throw") { n++ } END { exit !(n >= 1) }'
-check "bounce-throw: they scatter (three of the four move over 0.3 m)" "$TMP/bt.csv" '
+# (with friction on the seat, the balls the throw does not reach first roll
+# less far: two of the four go over 0.3 m, a third over 0.2 m)
+check "bounce-throw: they scatter (two of the four move over 0.3 m, three over 0.2 m)" "$TMP/bt.csv" '
     $3 ~ /^ball[1-4]$/ { if ($1 == 5) { x[$3] = $4; y[$3] = $5; z[$3] = $6 }
-        if ($1 == 25 && ($4 - x[$3])^2 + ($5 - y[$3])^2 + ($6 - z[$3])^2 > 0.09) n++ }
-    END { exit n < 3 }'
+        if ($1 == 25) { d = ($4 - x[$3])^2 + ($5 - y[$3])^2 + ($6 - z[$3])^2; n += d > 0.09; m += d > 0.04 } }
+    END { exit n < 2 || m < 3 }'
 out=$("$VROC" -b -q "$S/panel-demo.vroc" -c "trace = $TMP/pd.csv; run 30; show" 2>&1)
 case "$out" in *"time_step = 0.2"*"select on"*) ok "panel-demo: the slider set time_step to 0.2 and Select turned select mode on" ;;
     *) notok "panel-demo: slider and Select" "$out" ;; esac

@@ -65,7 +65,7 @@ expect "an overlap the user made is refused" 1 "interpenetrate" \
 # a box resting on it, given v = 0.7 m/s, slides 0.07 m in a frame of 0.1 s (no
 # friction); given L = 0.05 about z (I = m (a^2 + b^2) / 12 = 0.32 / 12), turns
 # by w t = 0.1875 rad, q.z = sin(0.09375)
-stack='gravity; cube floor; mass = -1; size = (3, 3, 0.1); translate = (0, 0, -0.1); cube a; size = (0.2, 0.2, 0.2); translate = (0, 0, 0.2); elasticity = 0.2; cube b; size = (0.1, 0.1, 0.1); translate = (0, 0, 0.5); elasticity = 0.2; run 30'
+stack='default_friction = 0; default_rolling_friction = 0; gravity; cube floor; mass = -1; size = (3, 3, 0.1); translate = (0, 0, -0.1); cube a; size = (0.2, 0.2, 0.2); translate = (0, 0, 0.2); elasticity = 0.2; cube b; size = (0.1, 0.1, 0.1); translate = (0, 0, 0.5); elasticity = 0.2; run 30'
 "$VROC" -b -q -c "$stack; list" > st0.txt 2>&1
 grep -q '^a  *cube  *resting$' st0.txt && grep -q '^b  *cube  *resting$' st0.txt &&
     ok "a stack of two boxes comes to rest" || notok "a stack of two boxes comes to rest" "$(cat st0.txt)"

@@ -676,7 +676,7 @@ static void the_room_of_200(void)
     char text[2048];
     const double x = 2 * sqrt(10.0), a = 2, t = 0.2;
     snprintf(text, sizeof text,
-             "seed = 1; random_box = (%.17g, %.17g, %g); random 200\n"
+             "default_friction = 0; default_rolling_friction = 0; seed = 1; random_box = (%.17g, %.17g, %g); random 200\n"
              "cube wxm; size = (%g, %.17g, %g); translate = (%.17g, 0, 0); mass = -1\n"
              "cube wxp; size = (%g, %.17g, %g); translate = (%.17g, 0, 0); mass = -1\n"
              "cube wym; size = (%.17g, %g, %g); translate = (0, %.17g, 0); mass = -1\n"

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "cluster.h"
+#include "friction.h"
 #include "grow.h"
 #include "impulse.h"
 #include "instant.h"
@@ -43,6 +44,7 @@ void answer_free(answer_scratch *s)
     free(s->kicks);
     free(s->seeds);
     free(s->lcp);
+    free(s->fw);
     instant_free(s->instant);
     answer_init(s);
 }
@@ -52,6 +54,7 @@ int answer_prepare(world *w, bool changed)
     answer_scratch *s = &w->answer;
     int rows = IMPULSE_MAX_ROWS > SIM_CLUSTER_ROWS ? IMPULSE_MAX_ROWS : SIM_CLUSTER_ROWS;
     if (!s->lcp && !(s->lcp = malloc(lcp_work_size(rows)))) return -1;
+    if (!s->fw && !(s->fw = malloc(sizeof *s->fw))) return -1;
     if (instant_prepare(&s->instant, w->n) != 0) return -1;
     if (w->n > s->cap) {
         bool ok = true;
@@ -97,6 +100,13 @@ void answer_clusters(world *w, const int *list, int n, double t, double t_end)
             retime_event(w, k_list[j], t + h);
         }
     }
+}
+
+void answer_count(world *w, friction_flags f, int object)
+{
+    if (f.energy_cut) w->st.energy_cuts++;
+    if (f.unconverged) w->st.cone_unconverged++;
+    if (f.painleve && w->st.painleve++ == 0) w->st.first_painleve = object;
 }
 
 void answer_contact(world *w, long k, double t, double t_end)

@@ -16,6 +16,7 @@
 #include <stdbool.h>
 
 #include "body.h"
+#include "friction.h"
 #include "flight.h"
 #include "instant.h"
 #include "lcp.h"
@@ -54,6 +55,7 @@ typedef struct {
                        * step ends at (cluster_kick), or -1 */
     instant_seed *seeds; /* per object: the landings one cluster's step ends at */
     lcp_work *lcp;    /* room for the largest contact problem (lcp.h) */
+    friction_work *fw; /* room for the largest one with friction (friction.h) */
     instant_work *instant; /* an instant's contacts and rows (instant.h) */
     int cap;          /* objects the arrays have room for */
 } answer_scratch;
@@ -66,6 +68,10 @@ void answer_free(answer_scratch *s);
  * nothing and touch no fresh memory (sim_prepare calls it).  Returns 0, or -1
  * when out of memory. */
 int answer_prepare(world *w, bool changed);
+
+/* Counts in the world's stats what a contact problem with friction met (object:
+ * one of its objects, named by the first Painleve warning). */
+void answer_count(world *w, friction_flags f, int object);
 
 /* Answers pair k's contact (found by its search, pairs.hits[k]) at time t, in the
  * internal step that ends at t_end, as an instant (instant.h) that begins with

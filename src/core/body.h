@@ -38,9 +38,14 @@ typedef struct body {
     shape_params sp;   /* the parameters as set; the body owns sp.src */
     shape shape;       /* geometry built from sp */
     bool built;        /* shape is built and matches sp */
+    int fell;          /* 1 once it has fallen more than SIM_FALL_DEPTH below the
+                        * lowest static object (sim.c), 2 once that was told
+                        * (the shell's warning), else 0 */
 
     double mass;       /* > 0 dynamic; < 0 static (infinite mass) */
     double elasticity; /* [0, 1] */
+    double friction;   /* Coulomb's coefficient, >= 0 (friction.h) */
+    double rolling_friction; /* rolling resistance, >= 0 (friction.h) */
     double volume;     /* loudness of collision sounds, >= 0 */
     int color[3];      /* 0..255 */
 
@@ -89,7 +94,7 @@ static inline void body_copy_state(body *dst, const body *src)
 }
 
 /* A fresh body of the given kind named name, with the thesis's defaults:
- * mass 1, elasticity 1, volume 1, colour (255,0,0), at the origin, identity
+ * mass 1, elasticity 1, no friction (the thesis's), volume 1, colour (255,0,0), at the origin, identity
  * orientation, at rest; the shape is not built yet (body_build does it). */
 void body_init(body *b, const char *name, shape_kind kind);
 

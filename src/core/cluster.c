@@ -4,7 +4,9 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "answer.h"
 #include "contact.h"
+#include "friction.h"
 #include "impulse.h"
 #include "lcp.h"
 #include "pairs.h"
@@ -29,6 +31,9 @@ typedef struct {
     double gap[SIM_CLUSTER_ROWS];
     row_list rows;
     int nclosed;
+    bool rough;                  /* some point has friction: the kicks are 3 a
+                                  * point, along the normal and two tangents
+                                  * (friction.h), with rolling resistance */
     int np;                      /* the lasting contacts they come from */
     pair *pr[SIM_CLUSTER_ROWS];
 } points;
@@ -39,6 +44,7 @@ static void gather(world *w, const int *list, int n, points *pts, double reach)
 {
     pts->rows = (row_list){pts->row, pts->cp, pts->gap, 0, SIM_CLUSTER_ROWS, false};
     pts->np = pts->nclosed = 0;
+    pts->rough = false;
     bool *in = w->answer.mark;
     for (int k = 0; k < n; k++) in[list[k]] = true;
     for (int k = 0; k < n; k++) {
@@ -126,6 +132,21 @@ static double floor_of(const world *w, const cpoint *cp, double g0, double h)
     return g0 >= hover ? hover : g0 >= 0 ? g0 : d_min(0, g0 + h * CLUSTER_RECOVER_SPEED);
 }
 
+/* Kicks lam at the m closed points of pts applied to the mobile bodies of bs:
+ * one a point, or with friction three (normal, tangents: the rows of
+ * friction_rows, in the friction scratch) and the rolling resistance's couples
+ * at those impulses. */
+static void apply_kicks(world *w, const points *pts, int m, body **bs, const double *lam)
+{
+    if (!pts->rough) {
+        impulse_apply(pts->row, m, bs, w->answer.mark, lam);
+        return;
+    }
+    friction_rows(pts->row, m, w->answer.fw->rows);
+    impulse_apply(w->answer.fw->rows, 3 * m, bs, w->answer.mark, lam);
+    friction_roll(pts->row, m, bs, w->answer.mark, lam);
+}
+
 /* The cluster's n objects of list kicked by lam at the m closed points of pts at
  * time t: their flights from there, in w->answer.flights. */
 static void kick_flights(world *w, const int *list, int n, const points *pts, int m,
@@ -137,7 +158,7 @@ static void kick_flights(world *w, const int *list, int n, const points *pts, in
         *c = *w->bodies[list[k]];
         bs[list[k]] = c;
     }
-    impulse_apply(pts->row, m, bs, w->answer.mark, lam);
+    apply_kicks(w, pts, m, bs, lam);
     for (int k = 0; k < n; k++) {
         flight_start(&w->answer.flights[list[k]], bs[list[k]], FLIGHT_FREE, t, world_accel(w),
                      v3(0, 0, 0), 0);
@@ -285,12 +306,89 @@ static void note_landing(world *w, const points *pts, int k)
     if (!body_is_static(w->bodies[x->q])) w->answer.landing[x->q] = slot;
 }
 
+/* newton's kicks with friction at some point (lam: three a point): at each
+ * closed point, its normal kick keeps its gap at the step's end as the
+ * frictionless kicks do, and its tangential kick stops its slip at the step's
+ * end, within its cone (friction.h), with rolling resistance beside. */
+static void newton_rough(world *w, const int *list, int n, points *pts, double *lam, double t,
+                         double h)
+{
+    body **bs = w->answer.now;
+    bool *mobile = w->answer.mark;
+    friction_work *fw = w->answer.fw;
+    int m = pts->nclosed;
+    double gap[SIM_CLUSTER_ROWS], floor_gap[SIM_CLUSTER_ROWS], slip[2 * SIM_CLUSTER_ROWS];
+    vec3 at[SIM_CLUSTER_ROWS];
+    for (int k = 0; k < m; k++) floor_gap[k] = floor_of(w, &pts->cp[k], pts->gap[k], h);
+    friction_rows(pts->row, m, fw->rows);
+    impulse_matrix(fw->rows, 3 * m, bs, mobile, fw->A);
+    bool roll = false;
+    for (int k = 0; k < pts->rows.n; k++) roll = roll || pts->row[k].roll > 0;
+    friction_flags f = {false, false, false};
+    for (int it = 0; it < CLUSTER_NEWTON; it++) {
+        kick_flights(w, list, n, pts, m, lam, t);
+        fly_kicked(w, list, n, t + h);
+        bool done = !(roll && it == 0); /* (the couples act at solved impulses) */
+        for (int k = 0; k < m; k++) {
+            vec3 nn;
+            gap[k] = cpoint_eval(&pts->cp[k], bs[pts->cp[k].p], bs[pts->cp[k].q], &nn, &at[k]) -
+                     floor_gap[k];
+            double tol = 1e-3 * touch_at(w, &pts->cp[k]);
+            if ((lam[3 * k] > 0 && fabs(gap[k]) > tol) || gap[k] < -tol) done = false;
+            /* its slip at the step's end, where it is then */
+            for (int j = 0; j < 2; j++) {
+                impulse_row r = fw->rows[3 * k + 1 + j];
+                r.at = at[k];
+                slip[2 * k + j] = impulse_speed(&r, bs);
+            }
+        }
+        int added = done || it == CLUSTER_NEWTON - 1 ? deepest_rows(w, pts, bs, floor_gap, gap, h) : 0;
+        if (added > 0) {
+            for (int k = 3 * m; k < 3 * (m + added); k++) lam[k] = 0;
+            for (int k = m; k < m + added; k++) {
+                vec3 nn;
+                cpoint_eval(&pts->cp[k], bs[pts->cp[k].p], bs[pts->cp[k].q], &nn, &at[k]);
+                slip[2 * k] = slip[2 * k + 1] = 0;
+            }
+        }
+        for (int k = 0; k < n; k++) bs[list[k]] = w->bodies[list[k]];
+        if (added > 0) {
+            m += added;
+            friction_rows(pts->row, m, fw->rows);
+            impulse_matrix(fw->rows, 3 * m, bs, mobile, fw->A);
+            done = false;
+        }
+        if (done || m == 0) break;
+        /* Newton: gap / h + A (next - lam) >= 0 along the normals, the slips
+         * + A (next - lam) along the tangents, over the cones */
+        for (int k = 0; k < 3 * m; k++) {
+            double s = k % 3 == 0 ? gap[k / 3] / h : slip[2 * (k / 3) + k % 3 - 1];
+            for (int j = 0; j < 3 * m; j++) s -= fw->A[k * 3 * m + j] * lam[j];
+            fw->q[k] = s;
+        }
+        for (int k = 0; k < m; k++) fw->mu[k] = pts->row[k].mu;
+        for (int k = 0; k < 3 * m; k++) fw->z[k] = lam[k]; /* (from the last kicks) */
+        int st = friction_cone_solve(m, fw->A, fw->q, fw->mu, fw->z, fw->w, &f.painleve);
+        if (st < 0) {
+            w->st.unsolved++; /* (the last kicks found stand) */
+            break;
+        }
+        if (st > 0) f.unconverged = true;
+        for (int k = 0; k < 3 * m; k++) lam[k] = fw->z[k];
+    }
+    answer_count(w, f, list[0]);
+}
+
 /* The kicks lam at the closed points of pts (more of them as deepest_rows finds
  * them, their kicks from 0) that keep them at their floors at the end of a step
  * of h from t, by Newton's method over the exact flights (cluster.h), from lam as
- * given. */
+ * given (with friction: newton_rough). */
 static void newton(world *w, const int *list, int n, points *pts, double *lam, double t, double h)
 {
+    if (pts->rough) {
+        newton_rough(w, list, n, pts, lam, t, h);
+        return;
+    }
     body **bs = w->answer.now;
     bool *mobile = w->answer.mark;
     int m = pts->nclosed;
@@ -353,10 +451,11 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end)
     gather(w, list, n, &pts, 2 * s * h);
     sort_closed(w, &pts, 0);
     if (pts.rows.n == 0 || !(h > 0)) return h;
+    pts.rough = friction_any(pts.row, pts.rows.n);
     bool *mobile = w->answer.mark;
     for (int k = 0; k < n; k++) mobile[list[k]] = true;
-    double lam[SIM_CLUSTER_ROWS];
-    for (int k = 0; k < pts.nclosed; k++) lam[k] = 0;
+    double lam[3 * SIM_CLUSTER_ROWS];
+    for (int k = 0; k < 3 * pts.nclosed; k++) lam[k] = 0;
     newton(w, list, n, &pts, lam, t, h);
     /* an open point that lands within the step ends it there (answer.h), with the
      * kicks found again for the shorter step, so that no closed point is below
@@ -379,7 +478,7 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end)
         const body *b = w->bodies[list[k]];
         rec[list[k]] = (kick_record){t, h, b->v, b->L};
     }
-    impulse_apply(pts.row, pts.nclosed, w->answer.now, mobile, lam);
+    apply_kicks(w, &pts, pts.nclosed, w->answer.now, lam);
     for (int k = 0; k < n; k++) {
         const body *b = w->bodies[list[k]];
         kick_record *r = &rec[list[k]];
@@ -404,7 +503,13 @@ void cluster_settle(world *w, const int *list, int n)
         if (pts.gap[k] <= touch_at(w, &pts.cp[k])) rows[m++] = pts.row[k];
     for (int k = 0; k < n; k++) mobile[list[k]] = true;
     for (int k = 0; k < m; k++) u[k] = impulse_speed(&rows[k], bs);
-    if (m > 0 && impulse_solve(rows, m, bs, mobile, u, lam, w->answer.lcp) != 0) w->st.unsolved++;
+    if (m > 0 && friction_any(rows, m)) {
+        friction_flags f = {false, false, false};
+        if (friction_compress(rows, m, bs, mobile, u, lam, w->answer.fw, &f) != 0) w->st.unsolved++;
+        answer_count(w, f, list[0]);
+    } else if (m > 0 && impulse_solve(rows, m, bs, mobile, u, lam, w->answer.lcp) != 0) {
+        w->st.unsolved++;
+    }
     for (int k = 0; k < n; k++) mobile[list[k]] = false;
     /* the lasting contacts that opened end */
     for (int k = 0; k < n; k++) {

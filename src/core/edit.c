@@ -89,6 +89,14 @@ int edit_property(world *w, int i, size_t off, const double *num, char *err, siz
         b->elasticity = num[0];
         disturb(w, i, false);
         return 0;
+    case offsetof(body, friction):
+        b->friction = num[0];
+        disturb(w, i, false);
+        return 0;
+    case offsetof(body, rolling_friction):
+        b->rolling_friction = num[0];
+        disturb(w, i, false);
+        return 0;
     case offsetof(body, v):
         b->v = limit_length(v, w->set.max_linear);
         disturb(w, i, false);

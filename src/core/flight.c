@@ -4,11 +4,14 @@
  * principal frame turns by the exact torque-free motion (spin.h) with L constant;
  * a body whose principal axes are its own (every box) is turned directly.  A slide
  * turns about the support's normal at a constant rate: a frictionless face exerts
- * no torque about its normal, and holds the body flat against itself.
+ * no torque about its normal, and holds the body flat against itself.  A ball
+ * rolling on a level face goes straight with a constant deceleration, and turns
+ * about a fixed axis by the distance it has gone over its radius.
  */
 #include "flight.h"
 
 #include <assert.h>
+#include <math.h>
 
 /* True when b's principal axes are its own (as for every box). */
 static bool aligned(const body *b)
@@ -38,6 +41,26 @@ static void held_at(const flight *f, const body *shape_of, double h, body *out)
     out->hold_v = f->v0;
 }
 
+/* The state of a rolling ball's flight h after its start (flight.h, FLIGHT_ROLL). */
+static void roll_at(const flight *f, const body *shape_of, double h, body *out)
+{
+    bool stopped = h >= f->t_stop;
+    if (stopped) h = f->t_stop;
+    double speed = v3_len(f->v0), d = v3_len(f->a);
+    double gone = speed * h - 0.5 * d * h * h; /* (the distance, without rounding's turn) */
+    out->x = v3_add(f->c0, v3_add(v3_scale(f->v0, h), v3_scale(f->a, 0.5 * h * h)));
+    out->v = stopped ? v3(0, 0, 0) : v3_mad(f->v0, f->a, h);
+    out->q = f->q0;
+    if (speed > 0 && gone > 0) {
+        vec3 axis = v3_scale(v3_cross(f->n, f->v0), 1 / speed);
+        out->q = q_normalize(q_mul(q_axis_angle(axis, gone / f->radius), f->q0));
+    }
+    out->w = v3_scale(v3_cross(f->n, out->v), 1 / f->radius);
+    out->L = m3_mulv(body_inertia_world(out), out->w);
+    out->rot_given = false;
+    (void)shape_of; /* (a ball's centre of mass is its centre) */
+}
+
 void flight_start(flight *f, const body *b, flight_kind kind, double t0, vec3 a, vec3 n, long id)
 {
     f->kind = kind;
@@ -51,6 +74,8 @@ void flight_start(flight *f, const body *b, flight_kind kind, double t0, vec3 a,
     f->n = n;
     f->wn = 0;
     f->rate = 0;
+    f->t_stop = HUGE_VAL;
+    f->radius = 0;
     f->id = id;
     if (kind == FLIGHT_HELD) {
         f->p0 = b->hold_pivot;
@@ -66,6 +91,14 @@ void flight_start(flight *f, const body *b, flight_kind kind, double t0, vec3 a,
     } else if (kind == FLIGHT_SLIDE) {
         f->wn = v3_dot(b->w, n);
         f->rate = fabs(f->wn);
+    } else if (kind == FLIGHT_ROLL) {
+        /* along the face, and against the motion */
+        f->v0 = v3_mad(b->v, n, -v3_dot(b->v, n));
+        double speed = v3_len(f->v0), d = v3_len(a);
+        f->radius = b->shape.r_out;
+        f->a = speed > 0 ? v3_scale(f->v0, -d / speed) : v3(0, 0, 0);
+        f->t_stop = speed > 0 && d > 0 ? speed / d : speed > 0 ? HUGE_VAL : 0;
+        f->rate = speed / f->radius;
     }
 }
 
@@ -75,6 +108,10 @@ void flight_at(const flight *f, const body *shape_of, double t, body *out)
     assert(h >= 0 || f->kind == FLIGHT_STILL);
     if (f->kind == FLIGHT_HELD) {
         held_at(f, shape_of, h, out);
+        return;
+    }
+    if (f->kind == FLIGHT_ROLL) {
+        roll_at(f, shape_of, h, out);
         return;
     }
     vec3 c = f->c0;

@@ -8,6 +8,11 @@
  *  - FLIGHT_SLIDE: on a face of a still support with normal n, the centre flies
  *    its parabola under the force less its part along -n, and the body turns about
  *    n only, at a constant rate (what a frictionless face leaves free).
+ *  - FLIGHT_ROLL: a ball rolling on a level face of a still support with normal
+ *    n, slowed by its rolling resistance (friction_roll_decel): its centre goes
+ *    straight along its velocity v0 (along the face), decelerating at |a| (a
+ *    against v0) until it stops at t_stop, and stays there; it turns about n x
+ *    v0 by the distance gone over its radius, at w = n x v / r (no slip).
  *  - FLIGHT_STILL: the body stays where it is (resting, static).
  *  - FLIGHT_HELD: held by the hand (hold.h), the body is fixed to a point, the
  *    pivot, that moves at a constant velocity, and turns about it at a constant
@@ -25,7 +30,7 @@
 #include "spin.h"
 #include "vmath.h"
 
-typedef enum { FLIGHT_STILL, FLIGHT_FREE, FLIGHT_SLIDE, FLIGHT_HELD } flight_kind;
+typedef enum { FLIGHT_STILL, FLIGHT_FREE, FLIGHT_SLIDE, FLIGHT_HELD, FLIGHT_ROLL } flight_kind;
 
 typedef struct {
     flight_kind kind;
@@ -39,13 +44,17 @@ typedef struct {
     double wn;        /*   and the rate it turns about it */
     vec3 p0, r0, w;   /* HELD: the pivot then (v0 its velocity), the centre of
                        *   mass from it, and the constant spin */
+    double t_stop;    /* ROLL: how long after t0 it stops (HUGE_VAL: never), */
+    double radius;    /*   and its radius */
     double rate;      /* no point of the body turns faster than rate (rad/s) */
     long id;          /* a number no other flight of this world has */
 } flight;
 
 /* Starts flight f of kind at time t0 from body b's state (x, q, v, L; b's w is
  * taken as consistent with L): a the acceleration of the centre of mass (FREE,
- * SLIDE), n the support's normal (SLIDE: b turns about n only, at w . n).  HELD
+ * SLIDE; ROLL: its deceleration's size, |a|), n the support's normal (SLIDE: b
+ * turns about n only, at w . n; ROLL: b's velocity along the face sets its
+ * motion, and its turning follows).  HELD
  * takes the pivot, its velocity and w from b (hold_pivot, hold_v, w). */
 void flight_start(flight *f, const body *b, flight_kind kind, double t0, vec3 a, vec3 n, long id);
 

@@ -26,6 +26,8 @@ typedef struct {
     int p, q;    /* body indices */
     vec3 n, at;  /* unit normal from q to p; where the impulse acts (world) */
     double e;    /* restitution of this row */
+    double mu;   /* Coulomb's coefficient at it (friction.h), */
+    double roll; /*   and its rolling resistance */
 } impulse_row;
 
 /* The relative normal velocity of row r (> 0 separating) with the bodies in bs
@@ -37,7 +39,8 @@ double impulse_speed(const impulse_row *r, body *const *bs);
 void impulse_matrix(const impulse_row *rows, int n, body *const *bs, const bool *mobile,
                     double *A);
 
-/* Applies impulses lambda at the rows to the mobile bodies of bs (their v, L, w). */
+/* Applies impulses lambda at the rows to the mobile bodies of bs (their v, L, w).
+ * (A row along a tangent, friction.h, may have lambda < 0.) */
 void impulse_apply(const impulse_row *rows, int n, body *const *bs, const bool *mobile,
                    const double *lambda);
 
@@ -50,5 +53,11 @@ void impulse_apply(const impulse_row *rows, int n, body *const *bs, const bool *
  * bytes. */
 int impulse_solve(const impulse_row *rows, int n, body *const *bs, const bool *mobile,
                   const double *u_before, double *lambda, lcp_work *work);
+
+/* Whether impulse_solve's frictionless problem has an answer (0) or not (-1),
+ * nothing applied: a held object that pushes what cannot give way leaves none
+ * (squeeze.h), and a cone solve, which always returns its best, cannot tell. */
+int impulse_solvable(const impulse_row *rows, int n, body *const *bs, const bool *mobile,
+                     const double *u_before, lcp_work *work);
 
 #endif

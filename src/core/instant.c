@@ -16,6 +16,7 @@
 
 #include "answer.h"
 #include "cluster.h"
+#include "friction.h"
 #include "grow.h"
 #include "impulse.h"
 #include "pairs.h"
@@ -262,6 +263,32 @@ static double restitution(const contact *c, double closing)
     return c->e;
 }
 
+/* The m rows of I->take solved with friction (friction.h) into I->lambda, and
+ * applied to the mobile objects mob: one point struck alone by Mirtich's
+ * integration, points together by the cones' compression and then restitution
+ * (e times each point's compression impulse, scaled down where it would raise
+ * the energy; with a held object, its hand's energy is not bounded).  Returns
+ * 0, or -1 when there are too many (nothing applied). */
+static int solve_rough(world *w, instant_work *I, int m, const bool *mob, bool held)
+{
+    body **bs = w->bodies;
+    friction_flags f = {false, false, false};
+    const impulse_row *r0 = &I->take[0];
+    int who = mob[r0->p] ? r0->p : r0->q;
+    /* a held object that pushes what cannot give way: no answer, as without
+     * friction, so that it stops (unsolved) */
+    if (held && impulse_solvable(I->take, m, bs, mob, I->u, w->answer.lcp) != 0) return -1;
+    if (m == 1 && !held) {
+        f = friction_impact(&I->take[0], bs, mob, &I->lambda[0]);
+    } else {
+        double ke = friction_energy(I->take, m, bs, mob);
+        if (friction_compress(I->take, m, bs, mob, I->u, I->lambda, w->answer.fw, &f) != 0) return -1;
+        friction_restitute(I->take, m, bs, mob, I->lambda, held ? HUGE_VAL : ke, w->answer.fw, &f);
+    }
+    answer_count(w, f, who);
+    return 0;
+}
+
 /* The contacts marked in I->wave solved together as `kind` says, their impulses
  * applied to the mobile objects and added to the contacts: 0, or -1 when there
  * are too many rows or no answer (nothing applied).  The contacts are taken
@@ -269,10 +296,12 @@ static double restitution(const contact *c, double closing)
 static int solve(world *w, instant_work *I, solve_kind kind)
 {
     int m = I->m = 0;
+    bool held = false;
     for (int k = 0; k < I->nc; k++) {
         contact *c = &I->c[k];
         if (!I->wave[k]) continue;
         c->taken = true;
+        held = held || c->held;
         for (int r = c->first; r < c->first + c->n; r++) {
             if (m == IMPULSE_MAX_ROWS) return -1;
             impulse_row *row = &I->take[m];
@@ -292,7 +321,12 @@ static int solve(world *w, instant_work *I, solve_kind kind)
     if (m == 0) return 0;
     bool *mob = w->answer.mark;
     for (int k = 0; k < I->nobj; k++) mob[I->objects[k]] = mobile(w, I->objects[k]);
-    int ok = impulse_solve(I->take, m, w->bodies, mob, I->u, I->lambda, w->answer.lcp);
+    /* (with friction, the same-instant waves' compression and restitution; the
+     * speed limits' last solve stays frictionless, as it only stops what would
+     * approach again) */
+    int ok = kind != SOLVE_LIMITS && friction_any(I->take, m)
+                 ? solve_rough(w, I, m, mob, held)
+                 : impulse_solve(I->take, m, w->bodies, mob, I->u, I->lambda, w->answer.lcp);
     for (int k = 0; k < I->nobj; k++) mob[I->objects[k]] = false;
     if (ok != 0) return -1;
     for (int r = 0; r < m; r++) {

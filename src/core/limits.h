@@ -53,6 +53,8 @@
  * above 2, whose collision shape is their tessellation's hull */
 #define LIM_EXP_MIN 1e-3
 #define LIM_EXP_MAX 100
+/* friction and rolling_friction: far past any real surface's */
+#define LIM_FRICTION_MAX 1e3
 /* loudness: volume, collision_vol (1 is the default, 1e3 is 60 dB louder) */
 #define LIM_LOUD_MAX 1e3
 /* random_box half-extents (m) */

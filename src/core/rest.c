@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include "contact.h"
+#include "friction.h"
 #include "impulse.h"
 #include "pairs.h"
 #include "rows.h"
@@ -73,6 +74,34 @@ void rest_wake(world *w, int i)
  * SIM_CONTACT_TOL), and from on the face. */
 #define REST_LEVEL_DEPTH 1e-4
 
+/* Makes ball m roll on face `face` (normal n) of static s, at gap `gap` from it,
+ * if it rolls there in closed form (friction_roll_decel) and nearly does
+ * already: it does not leave the face, its slip and its spin about the normal
+ * are below tol.  The slip ends as a sticking impulse at the contact would end
+ * it (the angular momentum about the contact point kept), and the spin about
+ * the normal with it: neither adds energy.  True when it did. */
+static bool try_roll(world *w, body *m, const body *s, int si, int face, vec3 n, double gap,
+                     double tol)
+{
+    if (friction_roll_decel(m, s, world_accel(w), n) < 0) return false;
+    double r = m->shape.r_out, k = m->I_princ.x / (m->mass * r * r);
+    vec3 v = v3_mad(m->v, n, -v3_dot(m->v, n));
+    vec3 slip = v3_sub(v, v3_scale(v3_cross(m->w, n), r)); /* v + w x (-r n) */
+    if (fabs(v3_dot(m->v, n)) > tol || v3_len(slip) > tol || fabs(v3_dot(m->w, n)) * r > tol)
+        return false;
+    /* the sticking impulse P = -m k slip / (1 + k) moves the centre by P / m */
+    v = v3_mad(v, slip, -k / (1 + k));
+    m->x = v3_mad(m->x, n, tol_hover(m, s) - gap);
+    m->mode = MODE_SLIDE;
+    m->slide_on = si;
+    m->slide_n = n;
+    m->slide_face = face;
+    m->v = v;
+    body_set_angular_vel(m, v3_scale(v3_cross(n, v), 1 / r));
+    m->rot_given = false;
+    return true;
+}
+
 /* A slide goes on across a seam, onto a face of another static object, when the
  * two faces are coplanar within this angle (rad) and this offset (m); a centre of
  * mass on the seam that is short of the new face by no more than REST_SEAM_GAP
@@ -115,6 +144,10 @@ static bool try_slide(world *w, int mi, int si, pair *p)
     body *m = w->bodies[mi];
     const body *s = w->bodies[si];
     double size = 1 + tol_size(m, s);
+    /* (with friction only a ball slides, rolling, on a level face: elsewhere the
+     * cluster's cones decide) */
+    bool rough = friction_mu(m, s) > 0;
+    if (rough && m->sp.kind != SHAPE_SPHERE) return false;
     closest_result r = mi == p->a ? pair_query(w, p, m, s) : pair_query(w, p, s, m);
     if (r.status == CLOSEST_INVALID) return false;
     if (mi != p->a) closest_mirror(&r);
@@ -138,7 +171,8 @@ static bool try_slide(world *w, int mi, int si, pair *p)
         if (past_edge(gap_to_edge(s, hf, F, k, n, body_com(m), m->v, world_accel(w)))) return false;
     /* a lossy contact ends a rocking too slow to see as a rebound would (impulse's
      * SIM_BOUNCE_SPEED): it lands flat */
-    double tol = e < 1 ? SIM_BOUNCE_SPEED : 1e3 * tol_speed(m, s);
+    double tol = e < 1 || rough ? SIM_BOUNCE_SPEED : 1e3 * tol_speed(m, s);
+    if (rough) return try_roll(w, m, s, si, face, n, r.distance, tol);
     vec3 w_off = v3_mad(m->w, n, -v3_dot(m->w, n));
     if (fabs(v3_dot(m->v, n)) > tol || v3_len(w_off) * m->shape.r_out > tol) {
         return false;
@@ -217,16 +251,20 @@ double rest_slide_exit(const world *w, int i, double t)
     if (!h) return HUGE_VAL;
     const flight *f = &w->step.fl[i];
     double h0 = t - f->t0;
+    /* (a ball that rolls goes no further once it stops) */
+    double left = f->kind == FLIGHT_ROLL ? f->t_stop - h0 : HUGE_VAL;
+    if (left < 0) h0 = f->t_stop;
     vec3 c = v3_add(f->c0, v3_add(v3_scale(f->v0, h0), v3_scale(f->a, 0.5 * h0 * h0)));
-    vec3 v = v3_mad(f->v0, f->a, h0), n = m->slide_n;
+    vec3 v = left > 0 ? v3_mad(f->v0, f->a, h0) : v3(0, 0, 0), n = m->slide_n;
+    vec3 a = left > 0 ? f->a : v3(0, 0, 0);
     const poly_face *F = &h->f[face];
     double best = HUGE_VAL;
     for (int k = 0; k < F->count; k++) {
-        edge_gap g = gap_to_edge(s, h, F, k, n, c, v, f->a);
+        edge_gap g = gap_to_edge(s, h, F, k, n, c, v, a);
         if (past_edge(g)) return t; /* over the edge already */
         best = d_min(best, first_below(d_max(g.g0, 0), g.g1, g.g2));
     }
-    return best == HUGE_VAL ? best : t + best;
+    return best == HUGE_VAL || best > left ? HUGE_VAL : t + best;
 }
 
 bool rest_slide_on(world *w, int i)
@@ -313,11 +351,28 @@ bool rest_balanced(world *w, const int *list, int n)
     int nr = rl.n;
     double lambda[SIM_CLUSTER_ROWS] = {0}, u[SIM_CLUSTER_ROWS] = {0};
     for (int k = 0; k < nr; k++) u[k] = impulse_speed(&rows[k], bs);
-    if (ok && nr > 0) ok = impulse_solve(rows, nr, bs, mobile, u, lambda, w->answer.lcp) == 0;
+    /* what rolling resistance holds: where every point sticks, and the objects
+     * would only roll or tip about them, a couple of c r N holds an object
+     * whose centre of mass is off its support by up to about c r, which leaves
+     * it accelerating at up to about c g (c the least at its points) */
+    double held = 0;
+    if (ok && nr > 0 && friction_any(rows, nr)) {
+        friction_flags f = {false, false, false};
+        ok = friction_compress(rows, nr, bs, mobile, u, lambda, w->answer.fw, &f) == 0;
+        held = HUGE_VAL;
+        for (int k = 0; k < nr && ok; k++) {
+            const double *z = &w->answer.fw->z[3 * k];
+            bool sticks = z[0] > 0 && hypot(z[1], z[2]) < rows[k].mu * z[0] * (1 - 1e-9);
+            held = sticks || !(z[0] > 0) ? d_min(held, rows[k].roll * v3_len(world_accel(w))) : 0;
+        }
+        if (!(held < HUGE_VAL)) held = 0;
+    } else if (ok && nr > 0) {
+        ok = impulse_solve(rows, nr, bs, mobile, u, lambda, w->answer.lcp) == 0;
+    }
     for (int k = 0; k < n && ok; k++) {
         const body *c = bs[list[k]];
         double scale = 1 + c->shape.r_out;
-        if (v3_len(c->v) + v3_len(c->w) * c->shape.r_out > 1e3 * SIM_ACCEL_ROUND * scale) ok = false;
+        if (v3_len(c->v) + v3_len(c->w) * c->shape.r_out > 1e3 * SIM_ACCEL_ROUND * scale + held) ok = false;
     }
     for (int k = 0; k < n; k++) {
         bs[list[k]] = w->bodies[list[k]];
@@ -332,11 +387,12 @@ static double speed_of(const body *b)
     return v3_len(b->v) + v3_len(b->w) * b->shape.r_out;
 }
 
-/* True when some lasting contact of object i loses energy (e < 1). */
+/* True when some lasting contact of object i loses energy (e < 1, or friction). */
 static bool lossy(world *w, int i)
 {
     FOR_TOUCHING(w, i, p, o) {
-        if (d_min(w->bodies[i]->elasticity, w->bodies[o]->elasticity) < 1) return true;
+        const body *a = w->bodies[i], *b = w->bodies[o];
+        if (d_min(a->elasticity, b->elasticity) < 1 || friction_mu(a, b) > 0) return true;
     }
     return false;
 }

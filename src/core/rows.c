@@ -1,6 +1,8 @@
 /* rows.c: the rows of a pair's points of contact (rows.h). */
 #include "rows.h"
 
+#include "friction.h"
+
 int rows_add(row_list *l, const pair *p, const body *a, const body *b, const closest_result *r,
              double tol, double e, body *const *bs)
 {
@@ -19,6 +21,8 @@ int rows_add(row_list *l, const pair *p, const body *a, const body *b, const clo
         row->p = x.p;
         row->q = x.q;
         row->e = e;
+        row->mu = friction_mu(bs[x.p], bs[x.q]);
+        row->roll = friction_rolling(bs[x.p], bs[x.q]);
         double g = cpoint_eval(&x, bs[x.p], bs[x.q], &row->n, &row->at);
         if (l->cp) l->cp[l->n] = x;
         if (l->gap) l->gap[l->n] = g;

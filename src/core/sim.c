@@ -324,6 +324,51 @@ double sim_frame_end(const world *w)
     return w->time_base + (double)(w->base_frames + 1) * w->base_step;
 }
 
+/* The lowest point of static object b (along z): its hull's lowest vertex, or
+ * its centre less its radius. */
+static double lowest_of(const body *b)
+{
+    const poly *h = b->shape.hull;
+    if (!h || h->nv == 0) return body_com(b).z - b->shape.r_out;
+    double z = HUGE_VAL;
+    for (int k = 0; k < h->nv; k++) z = d_min(z, b->x.z + q_rotate(b->q, h->v[k]).z);
+    return z;
+}
+
+/* Marks the objects that fell more than SIM_FALL_DEPTH below the lowest point
+ * of every static object (along z, as gravity pulls), each once (sim.h). */
+static void mark_fallen(world *w)
+{
+    /* (the lowest point of a static object is no higher than its centre: only
+     * an object that deep asks for the static objects' lowest points) */
+    double centres = HUGE_VAL, deepest = HUGE_VAL;
+    for (int i = 0; i < w->n; i++) {
+        const body *b = w->bodies[i];
+        if (body_is_static(b)) centres = d_min(centres, body_com(b).z);
+        else if (!b->fell) deepest = d_min(deepest, body_com(b).z);
+    }
+    if (!(centres < HUGE_VAL) || !(deepest < centres - SIM_FALL_DEPTH)) return;
+    double lowest = HUGE_VAL;
+    for (int i = 0; i < w->n; i++)
+        if (body_is_static(w->bodies[i])) lowest = d_min(lowest, lowest_of(w->bodies[i]));
+    for (int i = 0; i < w->n; i++) {
+        body *b = w->bodies[i];
+        if (b->fell || body_is_static(b) || !(body_com(b).z < lowest - SIM_FALL_DEPTH)) continue;
+        b->fell = 1;
+        w->st.fallen++;
+    }
+}
+
+/* True when nothing moves: every object static or resting, and no pair new
+ * (a world at rest, which costs a frame nothing but its bookkeeping). */
+static bool idle(const world *w)
+{
+    if (w->pairs.nfresh > 0) return false;
+    for (int i = 0; i < w->n; i++)
+        if (step_moves(w, i)) return false;
+    return true;
+}
+
 int sim_frame(world *w, char *err, size_t errlen)
 {
     return sim_frame_hooked(w, NULL, err, errlen);
@@ -351,6 +396,14 @@ int sim_frame_hooked(world *w, const sim_hook *hook, char *err, size_t errlen)
      * if there were none. */
     int calls = 0;
     double tn = hook ? hook->next(hook->ctx, w) : HUGE_VAL;
+    if (!hook && idle(w)) {
+        /* nothing moves: the steps would find nothing, and leave only what
+         * their searches remember reset, as here */
+        if (n > 1)
+            for (long k = 0; k < w->pairs.n; k++) w->pairs.p[k].toi_fa = w->pairs.p[k].toi_fb = -1;
+        w->st.subframes += n;
+        n = 0;
+    }
     for (long k = 0; k < n; k++) {
         double t_end = w->time + h;
         bool cut = tn < t_end;
@@ -358,7 +411,11 @@ int sim_frame_hooked(world *w, const sim_hook *hook, char *err, size_t errlen)
         internal_step(w, t_end, k == 0 || cut);
         w->st.subframes++;
     }
-    apart_frame_end(w);
+    /* a frame where nothing moved leaves nothing new to part or to fall */
+    if (n > 0) {
+        apart_frame_end(w);
+        mark_fallen(w);
+    }
     if (rest_frame_end(w) > 0) {
         for (int i = 0; i < w->n; i++) {
             if (w->bodies[i]->state != STATE_RESTING) continue;

@@ -18,12 +18,19 @@
 #include "tolerance.h"
 #include "world.h"
 
+/* How far below the lowest static object an object has left the room (m). */
+#define SIM_FALL_DEPTH 100
+
 /* Advances the world by one frame.  Returns 0, or -1 with a message in err when the
  * settings ask for more than SIM_MAX_SUBFRAMES internal steps (nothing moves then).
  * With time_step 0 nothing moves and the frame still counts.  A collision whose
  * result max_linear or max_angular cut is counted in st.speed_cuts, the world's
  * first described in st.first_cut (its object's index valid until the objects
- * change): the caller may say so, since each loses energy. */
+ * change): the caller may say so, since each loses energy.  So may it where a
+ * contact with friction had no consistent answer (st.painleve, st.first_painleve),
+ * and where an object has left the room: one that falls more than SIM_FALL_DEPTH
+ * below the lowest point of every static object has its fell set to 1, once, and
+ * is counted in st.fallen; it falls on. */
 int sim_frame(world *w, char *err, size_t errlen);
 
 /* A caller's say within a frame: the hand, whose trigger and tracker rows act at

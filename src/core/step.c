@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "friction.h"
 #include "grow.h"
 #include "world.h"
 
@@ -148,7 +149,10 @@ void step_start(world *w, int i, double t)
         return;
     }
     if (b->mode == MODE_SLIDE) {
-        flight_start(f, b, FLIGHT_SLIDE, t, world_body_accel(w, b), b->slide_n, id);
+        /* (a ball on a level face with friction rolls) */
+        double d = b->slide_on >= 0 ? friction_roll_decel(b, w->bodies[b->slide_on], world_accel(w), b->slide_n) : -1;
+        if (d >= 0) flight_start(f, b, FLIGHT_ROLL, t, v3(d, 0, 0), b->slide_n, id);
+        else flight_start(f, b, FLIGHT_SLIDE, t, world_body_accel(w, b), b->slide_n, id);
         return;
     }
     flight_start(f, b, FLIGHT_FREE, t, world_accel(w), v3(0, 0, 0), id);

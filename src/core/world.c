@@ -23,6 +23,8 @@ sim_settings sim_settings_defaults(void)
     s.max_angular = 4.0;
     s.force = (dir_amount){v3(0, 0, 0), 0};
     s.collision_heap = true;
+    s.default_friction = 0.5;
+    s.default_rolling_friction = 0.01;
     return s;
 }
 

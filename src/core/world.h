@@ -36,6 +36,8 @@ typedef struct {
     double max_angular;     /* rad/s */
     dir_amount force;       /* direction as typed, magnitude m/s^2 */
     bool collision_heap;    /* the schedule (on), or every pair every step (off) */
+    double default_friction;         /* what new objects take: friction, */
+    double default_rolling_friction; /*   rolling_friction (the shell sets them) */
 } sim_settings;
 
 /* A collision's result, or a throw (hold.h), that a speed limit cut (sim.h): the
@@ -82,6 +84,14 @@ typedef struct {
                            * max_angular cut: each loses energy (elasticity 1 keeps
                            * it only within the limits) */
     sim_cut first_cut;    /* the first of them (when speed_cuts > 0) */
+    long energy_cuts;     /* contact problems with friction whose restitution was
+                           * scaled down: it would have raised the kinetic energy */
+    long cone_unconverged; /* cone solves that stopped short of FRICTION_TOL */
+    long painleve;        /* contact problems with friction with no consistent
+                           * answer (Painleve): answered without friction there */
+    int first_painleve;   /* an object of the first of them (when painleve > 0) */
+    long fallen;          /* objects that fell more than SIM_FALL_DEPTH below the
+                           * lowest static object (each once: body.fell) */
     long waves_cut;       /* instants whose waves were ended by a last solve with
                            * no restitution, after 4 n waves of n contacts (a ball
                            * pinched between two walls, a lossy stack: instant.h) */

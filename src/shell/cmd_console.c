@@ -167,6 +167,9 @@ cmd_status cmd_distance(shell *sh, const stmt *st)
     /* (bodies of several pieces: whose hull the feature is of) */
     if (sh->w.bodies[ia]->shape.pieces > 1) fprintf(sh->out, "piece_A = %d\n", r.ka + 1);
     if (sh->w.bodies[ib]->shape.pieces > 1) fprintf(sh->out, "piece_B = %d\n", r.kb + 1);
+    const body *A = sh->w.bodies[ia], *B = sh->w.bodies[ib];
+    fprintf(sh->out, "friction = %s\n", fmt_shown(a, friction_mu(A, B), s));
+    fprintf(sh->out, "rolling_friction = %s\n", fmt_shown(a, friction_rolling(A, B), s));
     return CMD_OK;
 }
 
@@ -198,6 +201,13 @@ cmd_status cmd_stats(shell *sh, const stmt *st)
     fprintf(sh->out, "crowds = %ld\n", w->st.crowds);
     fprintf(sh->out, "guards = %ld\n", w->st.guards);
     fprintf(sh->out, "speed_cuts = %ld\n", w->st.speed_cuts);
+    fprintf(sh->out, "energy_cuts = %ld\n", w->st.energy_cuts);
+    fprintf(sh->out, "cone_unconverged = %ld\n", w->st.cone_unconverged);
+    fprintf(sh->out, "painleve = %ld\n", w->st.painleve);
+    fprintf(sh->out, "fallen = %ld\n", w->st.fallen);
+    long resting = 0;
+    for (int i = 0; i < w->n; i++) resting += w->bodies[i]->state == STATE_RESTING;
+    fprintf(sh->out, "resting = %ld\n", resting);
     fprintf(sh->out, "waves_cut = %ld\n", w->st.waves_cut);
     fprintf(sh->out, "separations = %ld\n", w->st.separations);
 #ifdef VROC_VALIDATE

@@ -59,6 +59,8 @@ cmd_status cmd_create(shell *sh, const stmt *st)
         return CMD_ERROR;
     }
     body_init(b, st->word, kind);
+    b->friction = sh->w.set.default_friction;
+    b->rolling_friction = sh->w.set.default_rolling_friction;
     view_palette(sh->made, b->color); /* distinguishable colours in turn */
     char err[256];
     if (body_build(b, err, sizeof err) != 0) {

@@ -230,6 +230,8 @@ static body *random_body(shell *sh, long *id, char *err, size_t errlen)
     (*id)++;
     shape_kind kind = (shape_kind)(rng_next(&sh->rng) % 3);
     body_init(b, name, kind);
+    b->friction = w->set.default_friction;
+    b->rolling_friction = w->set.default_rolling_friction;
     double s = rng_uniform(&sh->rng, sh->set.random_size[0], sh->set.random_size[1]);
     b->sp.radius = s;
     b->sp.size = v3(s * rng_uniform(&sh->rng, 0.6, 1), s * rng_uniform(&sh->rng, 0.6, 1),

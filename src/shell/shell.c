@@ -453,12 +453,34 @@ static void warn_guard(shell *sh, const stmt *st)
 
 void shell_check_cuts(shell *sh, const stmt *st)
 {
-    if (sh->w.st.guards < sh->guards_seen) sh->guards_seen = 0; /* a new world (restart) */
-    if (sh->guards_seen == 0 && sh->w.st.guards > 0) warn_guard(sh, st);
-    sh->guards_seen = sh->w.st.guards;
-    if (sh->w.st.speed_cuts < sh->cuts_seen) sh->cuts_seen = 0; /* a new world (restart) */
-    if (sh->cuts_seen == 0 && sh->w.st.speed_cuts > 0) warn_speed_cut(sh, st);
-    sh->cuts_seen = sh->w.st.speed_cuts;
+    const sim_stats *s = &sh->w.st;
+    if (s->guards < sh->guards_seen) sh->guards_seen = 0; /* a new world (restart) */
+    if (sh->guards_seen == 0 && s->guards > 0) warn_guard(sh, st);
+    sh->guards_seen = s->guards;
+    if (s->speed_cuts < sh->cuts_seen) sh->cuts_seen = 0;
+    if (sh->cuts_seen == 0 && s->speed_cuts > 0) warn_speed_cut(sh, st);
+    sh->cuts_seen = s->speed_cuts;
+    /* the world's first contact with friction that had no consistent answer */
+    if (s->painleve < sh->painleve_seen) sh->painleve_seen = 0;
+    if (sh->painleve_seen == 0 && s->painleve > 0) {
+        int i = s->first_painleve;
+        sh_warn(sh, st,
+                "a contact of '%s' with friction had no consistent answer (Painleve): it was "
+                "answered without friction there, and stats counts such contacts (painleve)",
+                i >= 0 && i < sh->w.n ? sh->w.bodies[i]->name : "?");
+    }
+    sh->painleve_seen = s->painleve;
+    /* each object that left the room, once */
+    if (s->fallen < sh->fallen_seen) sh->fallen_seen = 0;
+    if (s->fallen > sh->fallen_seen)
+        for (int i = 0; i < sh->w.n; i++) {
+            body *b = sh->w.bodies[i];
+            if (b->fell != 1) continue;
+            b->fell = 2;
+            sh_warn(sh, st, "'%s' has fallen more than %d m below the lowest static object: it "
+                            "falls on", b->name, SIM_FALL_DEPTH);
+        }
+    sh->fallen_seen = s->fallen;
 }
 
 /* shell_advance, with a status line when show (progress.h). */

@@ -83,8 +83,10 @@ typedef struct shell {
     bool found_apart;      /* shell_check_start found no overlap since the last
                             * statement began: time may run on unchecked */
     long cuts_seen;        /* the world's speed_cuts when last looked at
-                            * (shell_check_cuts) */
-    long guards_seen;      /* and its guards (the event guard's last resort) */
+                            * (shell_check_cuts), */
+    long painleve_seen;    /*   its painleve, */
+    long fallen_seen;      /*   its fallen */
+    long guards_seen;      /*   and its guards (the event guard's last resort) */
     bool fly_told;         /* flying was stopped at the limits, and said so */
 } shell;
 

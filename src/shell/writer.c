@@ -373,6 +373,8 @@ void body_write(FILE *out, const body *b, write_style st)
     fprintf(out, "%s %s\n", body_type_name(p->kind), b->name);
     fprintf(out, "mass = %s\n", fmt_shown(a, b->mass, s));
     fprintf(out, "elasticity = %s\n", fmt_shown(a, b->elasticity, s));
+    fprintf(out, "friction = %s\n", fmt_shown(a, b->friction, s));
+    fprintf(out, "rolling_friction = %s\n", fmt_shown(a, b->rolling_friction, s));
     fprintf(out, "volume = %s\n", fmt_shown(a, b->volume, s));
     fprintf(out, "color = (%d, %d, %d)\n", b->color[0], b->color[1], b->color[2]);
     switch (p->kind) {

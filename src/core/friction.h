@@ -1,0 +1,130 @@
+/* friction.h: Coulomb friction and rolling resistance where objects press
+ * (beyond the thesis, which is frictionless; language.md, "Friction"; design.md,
+ * "Dynamics").
+ *
+ * A pair's coefficients are sqrt(mu_a mu_b) and sqrt(c_a c_b).  Two laws live
+ * here, and every contact problem with friction uses one of them:
+ *  - friction_impact: one point struck (a collision with a single row and no
+ *    lasting contact), by Mirtich's collision integration ("Impulse-based dynamic
+ *    simulation of rigid body systems", 1996, 4.2): the contact velocity changes
+ *    along the normal impulse p_n; a slipping point is opposed by mu dp_n against
+ *    its current slip, which may turn and stop; at zero slip it sticks if the
+ *    impulse that keeps it stuck lies inside the cone, and slides on otherwise.
+ *    Restitution ends it by Stronge's energetic coefficient: the work of the
+ *    normal impulse while it restitutes is e^2 times what it did while it
+ *    compressed, so no impact creates energy, even where the slip reverses.
+ *  - friction_compress: points answered together (a collision with lasting
+ *    contacts, a cluster's kicks, the balance of objects at rest): Coulomb's
+ *    isotropic cones, not pyramids, with the maximal dissipation of a sliding
+ *    point (friction_cone_solve); then friction_restitute adds e times each
+ *    point's normal compression impulse, scaled down where it would raise the
+ *    kinetic energy.
+ * Each row of a point becomes three rows (impulse.h): its normal and two tangents
+ * t1, t2 (friction_basis), so that the matrix of impulse_matrix is the problem's
+ * (3m x 3m, the point k's rows at 3k, 3k + 1, 3k + 2).
+ */
+#ifndef VROC_FRICTION_H
+#define VROC_FRICTION_H
+
+#include <stdbool.h>
+
+#include "body.h"
+#include "impulse.h"
+
+/* Points one problem with friction may hold (3 rows each). */
+#define FRICTION_MAX_POINTS 64
+
+/* The cone solve stops when no impulse changes by more than this, relative to the
+ * largest, in a sweep. */
+#define FRICTION_TOL 1e-12
+
+/* Sweeps of the cone solve, at most. */
+#define FRICTION_SWEEPS 300
+
+/* What a problem with friction met, for the world's counters (sim_stats). */
+typedef struct {
+    bool energy_cut;   /* restitution scaled down: it would have raised the energy */
+    bool unconverged;  /* the cone solve stopped short of FRICTION_TOL */
+    bool painleve;     /* no consistent answer (Painleve): friction that jams the
+                        * contact; the answer falls back to a sliding point's */
+} friction_flags;
+
+/* The scratch of the problems with friction (in answer_scratch: too large for a
+ * stack). */
+typedef struct {
+    impulse_row rows[3 * FRICTION_MAX_POINTS];
+    double A[9 * FRICTION_MAX_POINTS * FRICTION_MAX_POINTS];
+    double q[3 * FRICTION_MAX_POINTS], z[3 * FRICTION_MAX_POINTS], w[3 * FRICTION_MAX_POINTS];
+    double mu[FRICTION_MAX_POINTS];
+} friction_work;
+
+/* A pair's coefficients. */
+double friction_mu(const body *a, const body *b);
+double friction_rolling(const body *a, const body *b);
+
+/* True when some row of rows (n) has friction. */
+bool friction_any(const impulse_row *rows, int n);
+
+/* Two unit tangents with (n, t1, t2) right-handed, a function of n alone. */
+void friction_basis(vec3 n, vec3 *t1, vec3 *t2);
+
+/* The 3m rows of the m rows (normal, t1, t2 each), into out. */
+void friction_rows(const impulse_row *rows, int m, impulse_row *out);
+
+/* The cone problem of m points: A (3m x 3m, symmetric, from impulse_matrix over
+ * friction_rows), q (3m), mu (m).  Finds z with w = A z + q such that at each
+ * point k (z_k = (zn, zt), w_k = (wn, wt)), starting from z as given (0, or a
+ * guess in the cones): zn >= 0, wn >= 0, zn wn = 0; |zt| <=
+ * mu_k zn; and where wt != 0, zt = -mu_k zn wt / |wt| (Coulomb, maximal
+ * dissipation).  By block Gauss-Seidel with each point's 3 x 3 problem solved
+ * exactly.  Returns 0 when it converged to FRICTION_TOL, 1 when it stopped after
+ * FRICTION_SWEEPS (z the last sweep's, usable), -1 when A or q is not finite (z =
+ * 0).  *painleve is set when some point's problem had no consistent answer. */
+int friction_cone_solve(int m, const double *A, const double *q, const double *mu, double *z,
+                        double *w, bool *painleve);
+
+/* One point struck: row r (its restitution e = r->e, its mu = r->mu) between the
+ * bodies bs (mobile as marked), by Mirtich's integration (above).  Applies the
+ * impulse; writes its normal part to *pn.  Returns what it met. */
+friction_flags friction_impact(const impulse_row *r, body *const *bs, const bool *mobile,
+                               double *pn);
+
+/* The compression of m points answered together (e = 0, cones): u their normal
+ * speeds before (NULL: impulse_speed's), the tangential ones found here.  Applies the
+ * impulses; writes each point's normal impulse to lambda.  Returns 0, or -1 when
+ * the problem is too large or not finite (nothing applied); *f gets what it met. */
+int friction_compress(const impulse_row *rows, int m, body *const *bs, const bool *mobile,
+                      const double *u, double *lambda, friction_work *fw, friction_flags *f);
+
+/* The restitution after friction_compress: e_k lambda_k along each point's
+ * normal, scaled down (all alike) so far as the kinetic energy of the mobile
+ * bodies would rise above ke_before.  Adds what it applied to lambda.  The
+ * matrix of the normals is fw's from friction_compress. */
+void friction_restitute(const impulse_row *rows, int m, body *const *bs, const bool *mobile,
+                        double *lambda, double ke_before, friction_work *fw, friction_flags *f);
+
+/* A ball that rolls on a level face of a static support s (normal n, towards
+ * the ball), pressed onto it by the force's acceleration a: the deceleration of
+ * its centre, c g_n / (1 + k) with c the pair's rolling resistance, g_n = -a.n
+ * and I = k m r^2 (a solid ball: (5/7) c g), or -1 when b does not roll there
+ * in closed form: it is not a ball (a sphere with its centre of mass at its
+ * centre), the pair has no friction, the face is not level (a's part along it
+ * above rounding), or friction cannot hold the couple (c / (1 + k) > mu: it
+ * slides). */
+double friction_roll_decel(const body *b, const body *s, vec3 a, vec3 n);
+
+/* Rolling resistance at the m points with the impulses z (3m, as
+ * friction_cone_solve's): at each point that does not slip (zt strictly inside
+ * its cone) and has roll c > 0, two couples of angular impulse up to c r zn
+ * each: one against the relative rolling of its objects (their turning across
+ * the normal), one against their spinning about the normal,
+ * r the distance from the centre of mass of the row's p (its q's when p does
+ * not move) to the point; no more than stops that turning.  Applied to the
+ * mobile bodies of bs; true when some point has rolling resistance. */
+bool friction_roll(const impulse_row *rows, int m, body *const *bs, const bool *mobile,
+                   const double *z);
+
+/* The kinetic energy of the mobile bodies of bs among the rows' (each once). */
+double friction_energy(const impulse_row *rows, int m, body *const *bs, const bool *mobile);
+
+#endif
