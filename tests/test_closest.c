@@ -29,6 +29,7 @@
 #include "core/body.h"
 #include "core/closest.h"
 #include "core/shape.h"
+#include "core/support.h"
 
 /* ---- random numbers ---- */
 
@@ -1161,6 +1162,66 @@ static void invalid_input(void **state)
     drop_body(b, ownb);
 }
 
+/* ---- the support hierarchy (support.h) ---- */
+
+/* support_vertex gives a vertex no other is further along d than, on hulls with a
+ * hierarchy (tessellations, a Fibonacci sphere of points, a box-like superquadric
+ * with flat merged faces) and without, along random directions and along the axes
+ * and diagonals (where many vertices tie). */
+static void check_support(const poly *h, const char *name)
+{
+    support_tree *t = support_tree_new(h);
+    if (h->nv > SUPPORT_MIN_VERTICES) assert_non_null(t);
+    else assert_null(t);
+    for (int i = 0; i < 2000 + 27; i++) {
+        vec3 d;
+        if (i < 27) d = v3(i % 3 - 1, i / 3 % 3 - 1, i / 9 - 1); /* (0, 0, 0) too */
+        else d = v3(rnd() - 0.5, rnd() - 0.5, rnd() - 0.5);
+        int j = support_vertex(t, h, d);
+        assert_true(j >= 0 && j < h->nv);
+        double best = -INFINITY;
+        for (int v = 0; v < h->nv; v++) best = fmax(best, v3_dot(h->v[v], d));
+        if (v3_dot(h->v[j], d) != best)
+            fail_msg("%s: support along (%g, %g, %g) is vertex %d at %.17g, not %.17g", name, d.x,
+                     d.y, d.z, j, v3_dot(h->v[j], d), best);
+    }
+    support_tree_free(t);
+}
+
+static void support_hierarchy(void **state)
+{
+    (void)state;
+    struct {
+        double e1, e2;
+        int res;
+    } sq[] = {{1, 1, 10}, {1, 1, 40}, {1, 1, 96}, {0.1, 0.1, 40}, {0.5, 1.5, 48}, {2, 0.3, 60}};
+    for (size_t i = 0; i < sizeof sq / sizeof sq[0]; i++) {
+        shape_params p = shape_defaults(SHAPE_SUPERQUADRIC);
+        p.exp1 = sq[i].e1;
+        p.exp2 = sq[i].e2;
+        p.ures = p.vres = sq[i].res;
+        tshape t;
+        tshape_build(&t, &p);
+        check_support(t.s.hull, t.name);
+        tshape_free(&t);
+    }
+    int np = 5000;
+    vec3 *pts = malloc((size_t)np * sizeof *pts);
+    assert_non_null(pts);
+    const double golden = 3.14159265358979323846 * (3 - sqrt(5));
+    for (int i = 0; i < np; i++) {
+        double z = 1 - (2 * i + 1.0) / np, r = sqrt(1 - z * z);
+        pts[i] = v3(r * cos(golden * i), r * sin(golden * i), z);
+    }
+    char err[256];
+    poly *h = poly_hull_merge(pts, np, 0, err, sizeof err);
+    if (!h) fail_msg("poly_hull_merge: %s", err);
+    assert_int_equal(h->nv, np);
+    check_support(h, "5,000 points on a sphere");
+    poly_free(h);
+    free(pts);
+}
+
 int main(void)
 {
     const char *filter = getenv("VROC_TEST_FILTER");
@@ -1173,6 +1234,7 @@ int main(void)
         cmocka_unit_test(snapped_configurations),
         cmocka_unit_test(symmetric_bodies),
         cmocka_unit_test(invalid_input),
+        cmocka_unit_test(support_hierarchy),
     };
     return cmocka_run_group_tests(tests, pool_setup, pool_teardown);
 }

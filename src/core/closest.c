@@ -36,7 +36,8 @@
  * 1e-12 relative.  A walk longer than its step bound is a fault (rounding beating the
  * theory): the query is redone from scratch, then by brute force, and flagged in the
  * result.  Without a cache the walk starts from the vertices furthest towards each
- * other along the line between the centres, found by hill climbing.
+ * other along the line between the centres, found by hill climbing (on a large
+ * hull, down a Dobkin-Kirkpatrick hierarchy: support.h).
  *
  * Touching and penetration.  When the walk ends at distance 0, or finds an edge
  * through a face or a vertex inside, the objects are touching if some direction
@@ -56,6 +57,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "support.h"
+
 #define EPS_REL 1e-12 /* length tolerance, relative to the scene's size */
 #define EPS_DIR 1e-12 /* tolerance on cosines between unit vectors */
 
@@ -71,6 +74,8 @@ struct closest_hull {
     double (*ewd)[2]; /* ew[e][s] . tail */
     int *face_order;  /* the faces in depth-first order over shared edges, so that
                          consecutive faces are mostly neighbours (support climbs) */
+    support_tree *top; /* large hulls: the furthest vertex along a direction in log
+                          time (a scratch walk's start), else NULL */
     double size;      /* largest |vertex| */
     double r_in;      /* a ball of this radius about the origin lies inside (-HUGE_VAL
                          when the origin is not inside) */
@@ -186,6 +191,7 @@ closest_hull *closest_hull_new(const poly *p)
     }
     for (int v = 0; v < p->nv; v++) h->size = fmax(h->size, v3_len(p->v[v]));
     hull_find_box(h);
+    h->top = support_tree_new(p); /* (NULL: climbs, as short for small hulls) */
     return h;
 }
 
@@ -198,7 +204,13 @@ void closest_hull_free(closest_hull *h)
     free(h->ew);
     free(h->ewd);
     free(h->face_order);
+    support_tree_free(h->top);
     free(h);
+}
+
+int closest_hull_support(const closest_hull *h, vec3 d)
+{
+    return support_vertex(h->top, h->p, d);
 }
 
 const char *closest_kind_name(closest_kind k)
@@ -886,7 +898,7 @@ static void walk_scratch(walk *w, const closest_proxy *a, const closest_proxy *b
     if (!(v3_len2(d) > 0)) d = v3(1, 0, 0);
     for (int k = 0; k < 2; k++) {
         vec3 dk = m3_tmulv(&w->R[k], k == 0 ? d : v3_neg(d));
-        w->f[k] = feat(CLOSEST_VERTEX, w->p[k] ? poly_climb(w->p[k], dk, 0) : 0);
+        w->f[k] = feat(CLOSEST_VERTEX, w->p[k] ? support_vertex(w->h[k]->top, w->p[k], dk) : 0);
     }
 }
 

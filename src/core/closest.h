@@ -101,6 +101,10 @@ typedef struct {
 closest_hull *closest_hull_new(const poly *p);
 void closest_hull_free(closest_hull *h);
 
+/* The vertex of h's hull furthest along d (body frame): in time that grows with the
+ * log of its vertices on a large hull (support.h), by a climb on a small one. */
+int closest_hull_support(const closest_hull *h, vec3 d);
+
 /* Distance between a and b, computed in the order given (so swapping a and b
  * mirrors the result up to the choice among equally close features).  cache (may be
  * NULL) gives the features to start from and receives the new ones.  A proxy with a

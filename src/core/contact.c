@@ -44,13 +44,14 @@ static int support_scan(const poly *h, vec3 dl, double tol, int *idx, int max)
     return n;
 }
 
-/* The same for any hull, by a walk: the furthest vertex is reached along edges
- * that go further (poly_climb); and each vertex within tol of it has an edge to
- * one further on, so they are all reached from it through such vertices.  0 when
- * out of memory. */
-static int support_walk(const poly *h, vec3 dl, double tol, int *idx, int max)
+/* The same for any hull, by a walk: the furthest vertex is found (down feat's
+ * support hierarchy on a large hull, else by a climb); and each vertex within tol
+ * of it has an edge to one further on, so they are all reached from it through
+ * such vertices.  0 when out of memory. */
+static int support_walk(const poly *h, const closest_hull *feat, vec3 dl, double tol, int *idx,
+                        int max)
 {
-    int top = poly_climb(h, dl, 0);
+    int top = feat ? closest_hull_support(feat, dl) : poly_climb(h, dl, 0);
     double best = v3_dot(h->v[top], dl);
     unsigned char local[WALK_SEEN_LOCAL];
     size_t bytes = (size_t)h->nv / 8 + 1;
@@ -91,7 +92,7 @@ static void support_find(const body *b, vec3 d, double tol, support *s)
     vec3 dl = q_unrotate(b->q, d);
     int max = h->nv < CONTACT_MAX_SUPPORT ? h->nv : CONTACT_MAX_SUPPORT;
     s->n = h->nv <= SUPPORT_SCAN ? support_scan(h, dl, tol, s->idx, max)
-                                 : support_walk(h, dl, tol, s->idx, max);
+                                 : support_walk(h, b->shape.feat, dl, tol, s->idx, max);
 }
 
 /* Those points (found in direction d) in plane coordinates (u, v), in out. */

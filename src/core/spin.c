@@ -170,9 +170,9 @@ static void tumble_init(free_spin *s, vec3 I, quat qp, vec3 m, double l)
         /* the mean growths of Pi and G over a half period 2K: 2 Pi(n|m) and
          * pi / sqrt(1 - n) */
         double K = s->ep.K, kc = sqrt(mc);
-        s->pi_slope = s->n >= -1 ? ell_rj(0, mc, 1, 1 - s->n) / K
-                                 : ell_Pi_sncndn(s->n, s->m, 1, 0, kc, K) / K;
-        double pi_c = s->n >= -1 ? K + s->n / 3 * ell_rj(0, mc, 1, 1 - s->n) : s->pi_slope * K;
+        double rj = s->n >= -1 ? ell_rj(0, mc, 1, 1 - s->n) : 0; /* (once: it is the cost) */
+        s->pi_slope = s->n >= -1 ? rj / K : ell_Pi_sncndn(s->n, s->m, 1, 0, kc, K) / K;
+        double pi_c = s->n >= -1 ? K + s->n / 3 * rj : s->pi_slope * K;
         s->g_slope = M_PI_2 / (K * s->sq1n);
         s->psi_mean += s->lambda * (s->c_pi * pi_c / K - s->c_g * s->g_slope);
     }
