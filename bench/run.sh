@@ -21,6 +21,7 @@
 #   - a room of one file (issue 39): 100 random objects in a room of 2,000 static
 #     pieces (tiles, bench/room.awk), against the same objects in the same room of
 #     its six faces alone (an empty box);
+#   - crowds (issue 35): 100 balls in V-grooves and in a slot (bench/crowd.awk);
 #   - the mesh readers (issue 38): a binary STL of 1,000,000 triangles and an OBJ of
 #     600,000, made in the scratch folder (build/bench/bench_mesh), read, and read
 #     with the body built, against `assimp info` where assimp-utils is installed;
@@ -446,6 +447,23 @@ printf 'time with 2,000 pieces / with 6: %s of wall time, %s of processor time (
     "$(ratio "$(get room6 cpu_frames_per_s)" "$(get room2000 cpu_frames_per_s)")"
 echo "A room 8 m by 8 m, 6 m high, of one OBJ whose faces face in: 2,000 tiles 0.4 m across, or its"
 echo "six faces; each face a static slab; 100 objects of random 100 (seed 1) in it, 100 frames."
+
+# crowds (issue 35): 100 balls with e = 0.5 in V-grooves and in a slot barely wider
+# than a ball, 10 s of simulated time each (a slow one is cut at the budget, *)
+echo
+echo "Crowds: 100 balls, e = 0.5, closed at both ends, 100 frames (simulation only, heap on)"
+rule
+awk -v kind=groove -v a=30 -v b=60 -f bench/crowd.awk >"$TMP/groove30.vroc"
+awk -v kind=groove -v a=45 -v b=45 -f bench/crowd.awk >"$TMP/groove45.vroc"
+awk -v kind=slot -f bench/crowd.awk >"$TMP/slot.vroc"
+printf '%-34s %14s %14s %12s %14s\n' crowd "frames/s" "cpu frames/s" collisions/f "pair checks/f"
+for c in groove30 groove45 slot; do
+    measure "$c" "$TMP/$c.vroc" --frames 100 --runs 1 --heap on
+    printf '%-34s %14s %14s %12s %14s\n' "$(case $c in groove30) echo "V-groove, faces at 30 and 60 deg";;
+        groove45) echo "V-groove, faces at 45 and 45 deg";; *) echo "slot 1e-7 m wider than a ball";; esac)" \
+        "$(num "$(get "$c" frames_per_s)")$(trunc "$c")" "$(num "$(get "$c" cpu_frames_per_s)")" \
+        "$(get "$c" collisions_per_frame)" "$(get "$c" pair_checks_per_frame)"
+done
 
 # polyhedra from files (issue 38): the readers against assimp's, on files made here
 echo

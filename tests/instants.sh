@@ -11,7 +11,6 @@
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/sweep.sh"
 W="$(cd "$(dirname "$0")" && pwd)/instants.vroc"
-VAL="$(cd "$(dirname "$0")/.." && pwd)/build-val/vroc"
 cd "$TMP" || exit 1
 
 frames=$(seq 0 40)
@@ -22,17 +21,7 @@ split_runs "instants" "$W"
 
 n=100
 [ "${BUILD:-build}" = build-san ] && n=20
-"$VROC" -b -q "$W" -c "collision_heap = on; trace = on.csv; run $n" > out-on 2>&1
-"$VROC" -b -q "$W" -c "collision_heap = off; trace = off.csv; run $n" > out-off 2>&1
-same "instants: the heap changes no trajectory ($n frames)" on.csv off.csv
-if [ "${BUILD:-build}" = build ]; then
-    if [ -x "$VAL" ]; then
-        "$VAL" -b -q "$W" -c "trace = val.csv; run $n" > out-val 2>&1
-        same "instants: the validation build keeps every invariant, with the same trace" on.csv val.csv
-    else
-        notok "instants: the validation build runs it" "$VAL is missing"
-    fi
-fi
+same_traces instants "$W" "$n"
 
 # the stats, and every dynamic object's distance to every other object after the
 # run (none in: each at least minus the contact distance, 1e-9 m)

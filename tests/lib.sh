@@ -2,6 +2,7 @@
 # Each check prints "ok - TEXT" or "not ok - TEXT"; tests/run.sh counts them.
 VROC=${VROC:-./vroc}
 case "$VROC" in /*) ;; *) VROC="$(pwd)/$VROC" ;; esac
+VAL_VROC="$(cd "$(dirname "$0")/.." && pwd)/build-val/vroc" # (same_traces)
 TMP=$(mktemp -d /tmp/vroc-test-XXXXXX)
 trap 'rm -rf "$TMP"' EXIT
 export HOME="$TMP"   # no history file of the user's is touched
@@ -107,5 +108,22 @@ split_runs() {
     else
         notok "$1: run 10 then step equals run 11, run 7 then run 13 equals run 20" \
             "run 11: $h11" "run 10; step: $h10" "run 20: $h20" "run 7; run 13: $h713"
+    fi
+}
+
+# same_traces NAME FILE N [STATEMENTS]: N frames of FILE give the same trace with
+# the heap on and off, and (the normal build) in the validation build, whose
+# invariants are checked after every internal step.  The heap-on run's output,
+# with STATEMENTS run after it, is left in out-on.
+same_traces() {
+    "$VROC" -b -q "$2" -c "collision_heap = on; trace = on.csv; run $3${4:+; $4}" > out-on 2>&1
+    "$VROC" -b -q "$2" -c "collision_heap = off; trace = off.csv; run $3" > out-off 2>&1
+    same "$1: the heap changes no trajectory ($3 frames)" on.csv off.csv
+    [ "${BUILD:-build}" = build ] || return 0
+    if [ -x "$VAL_VROC" ]; then
+        "$VAL_VROC" -b -q "$2" -c "trace = val.csv; run $3" > out-val 2>&1
+        same "$1: the validation build keeps every invariant, with the same trace" on.csv val.csv
+    else
+        notok "$1: the validation build runs it" "$VAL_VROC is missing"
     fi
 }

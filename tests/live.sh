@@ -37,15 +37,6 @@ end_session() {
     i=0
     while tmux ls >/dev/null 2>&1 && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
 }
-# (a loaded machine's tmux may answer a capture with nothing: ask again)
-screen() {
-    for _ in 1 2 3 4 5; do
-        _scr=$(tmux capture-pane -p -t "$SES" -S -60 2>/dev/null)
-        [ -n "$(printf '%s' "$_scr" | tr -d '[:space:]')" ] && break
-        sleep 0.2
-    done
-    printf '%s\n' "$_scr"
-}
 type_() { tmux send-keys -t "$SES" "$@"; }
 wait_for() { # PATTERN [TENTHS]: the screen shows PATTERN within TENTHS/10 s (default 20 s)
     i=0

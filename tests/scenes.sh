@@ -42,11 +42,11 @@ for f in "$S"/*.vroc; do
     if [ $status -eq 0 ] && [ -z "$said" ]; then ok "$name runs in vroc -b, quietly"
     else notok "$name runs in vroc -b, quietly" "status $status" "$(printf '%s' "$said" | head -3)"; fi
     # and no fault shows in stats: no walk redone, no contact unsolved, no step
-    # cut short
-    faults=$(printf '%s\n' "$out" | awk -F' = ' '$1 == "restarts" || $1 == "unsolved" || $1 == "overflows" { n++; if ($2 != 0) print }
-        END { if (n != 3) print "stats gave", n + 0, "of the three counters" }')
-    [ -z "$faults" ] && ok "$name: stats shows no restart, unsolved contact or overflow" \
-        || notok "$name: stats shows no restart, unsolved contact or overflow" "$faults"
+    # whose events ran away to the guard's last resort or were cut short
+    faults=$(printf '%s\n' "$out" | awk -F' = ' '$1 == "restarts" || $1 == "unsolved" || $1 == "overflows" || $1 == "guards" { n++; if ($2 != 0) print }
+        END { if (n != 4) print "stats gave", n + 0, "of the four counters" }')
+    [ -z "$faults" ] && ok "$name: stats shows no restart, unsolved contact, guard or overflow" \
+        || notok "$name: stats shows no restart, unsolved contact, guard or overflow" "$faults"
 
     # no dynamic object overlaps another object at the start
     if gaps "$name" "$f"; then

@@ -69,4 +69,12 @@ int hold_exact(world *w, int i, vec3 pivot, vec3 v);
  * Its velocities stay; a held body's pivot keeps its place relative to it. */
 void hold_place(world *w, int i, vec3 x, quat q);
 
+/* Held body i jumps with a hand that jumped while time stood still: it sweeps
+ * along the straight path from its pose towards origin x1 with orientation q1 (its
+ * centre of mass in a line, turning the short way, both evenly) and stops at the
+ * first thing it touches, a hover gap (tolerance.h) short of it, there placed as
+ * hold_place places it.  It pushes nothing: no time passes.  Where it starts in
+ * something, it stays.  Returns the fraction of the way it went, 0 to 1. */
+double hold_sweep(world *w, int i, vec3 x1, quat q1);
+
 #endif

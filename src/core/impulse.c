@@ -83,15 +83,31 @@ void impulse_apply(const impulse_row *rows, int n, body *const *bs, const bool *
     }
 }
 
+/* The frictionless problem of impulse_solve set up and solved into lambda (not
+ * least-norm, not applied): 0, or -1.  A is left in A. */
+static int normal_lcp(const impulse_row *rows, int n, body *const *bs, const bool *mobile,
+                      const double *u_before, double *lambda, lcp_work *work, double *A, double *q)
+{
+    if (n <= 0 || n > IMPULSE_MAX_ROWS) return -1;
+    double w[IMPULSE_MAX_ROWS];
+    impulse_matrix(rows, n, bs, mobile, A);
+    for (int k = 0; k < n; k++) q[k] = (1 + rows[k].e) * u_before[k];
+    return lcp_solve(n, A, q, lambda, w, work) != 0 ? -1 : 0;
+}
+
 int impulse_solve(const impulse_row *rows, int n, body *const *bs, const bool *mobile,
                   const double *u_before, double *lambda, lcp_work *work)
 {
-    if (n <= 0 || n > IMPULSE_MAX_ROWS) return -1;
-    double A[IMPULSE_MAX_ROWS * IMPULSE_MAX_ROWS], q[IMPULSE_MAX_ROWS], w[IMPULSE_MAX_ROWS];
-    impulse_matrix(rows, n, bs, mobile, A);
-    for (int k = 0; k < n; k++) q[k] = (1 + rows[k].e) * u_before[k];
-    if (lcp_solve(n, A, q, lambda, w, work) != 0) return -1;
+    double A[IMPULSE_MAX_ROWS * IMPULSE_MAX_ROWS], q[IMPULSE_MAX_ROWS];
+    if (normal_lcp(rows, n, bs, mobile, u_before, lambda, work, A, q) != 0) return -1;
     lcp_least_norm(n, A, q, lambda, work);
     impulse_apply(rows, n, bs, mobile, lambda);
     return 0;
+}
+
+int impulse_solvable(const impulse_row *rows, int n, body *const *bs, const bool *mobile,
+                     const double *u_before, lcp_work *work)
+{
+    double A[IMPULSE_MAX_ROWS * IMPULSE_MAX_ROWS], q[IMPULSE_MAX_ROWS], lambda[IMPULSE_MAX_ROWS];
+    return normal_lcp(rows, n, bs, mobile, u_before, lambda, work, A, q);
 }

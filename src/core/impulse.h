@@ -54,4 +54,10 @@ void impulse_apply(const impulse_row *rows, int n, body *const *bs, const bool *
 int impulse_solve(const impulse_row *rows, int n, body *const *bs, const bool *mobile,
                   const double *u_before, double *lambda, lcp_work *work);
 
+/* Whether impulse_solve's frictionless problem has an answer (0) or not (-1),
+ * nothing applied: a held object that pushes what cannot give way leaves none
+ * (squeeze.h), and a cone solve, which always returns its best, cannot tell. */
+int impulse_solvable(const impulse_row *rows, int n, body *const *bs, const bool *mobile,
+                     const double *u_before, lcp_work *work);
+
 #endif

@@ -23,6 +23,7 @@
 #include "rest.h"
 #include "retime.h"
 #include "rows.h"
+#include "squeeze.h"
 #include "step.h"
 #include "tolerance.h"
 #include "world.h"
@@ -56,8 +57,10 @@ typedef struct {
 typedef enum {
     SOLVE_WAVE,      /* each row's own (instant.h) */
     SOLVE_LAST,      /* none: the last solve, after 4 n waves */
-    SOLVE_LIMITS     /* none, and only what would approach again stops (the
+    SOLVE_LIMITS,    /* none, and only what would approach again stops (the
                       * speed limits cut a result) */
+    SOLVE_JAMMED     /* none, and nothing parts from a held object: it has
+                      * stopped against what cannot give way (squeeze.h) */
 } solve_kind;
 
 struct instant_work {
@@ -77,6 +80,7 @@ struct instant_work {
     int nobj, cap;
     double t;
     bool cut;       /* the speed limits cut its result (limit_all) */
+    bool hand;      /* a held object is among its objects (squeeze.h) */
     bool take_back; /* the joining objects' cluster kicks are taken back (join) */
     bool checked;   /* and instant_answer has seen that the seeds close without */
     int *backs;     /* the seeds' objects they were taken back from, nbacks */
@@ -149,6 +153,7 @@ static void join(world *w, instant_work *I, int i)
     if (I->joined[i]) return;
     I->joined[i] = true;
     I->objects[I->nobj++] = i;
+    I->hand = I->hand || w->bodies[i]->held;
     step_sync(w, i, I->t);
     kick_record *k = &w->answer.kicks[i];
     if (I->take_back && k->h > 0 && I->t >= k->t0 && I->t < k->t0 + k->h) {
@@ -191,7 +196,9 @@ static void add_contact(world *w, instant_work *I, long slot, const closest_resu
     pair *p = &w->pairs.p[slot];
     if (I->nc == INSTANT_MAX_CONTACTS || r->status == CLOSEST_INVALID) return;
     const body *A = w->bodies[p->a], *B = w->bodies[p->b];
-    double e = d_min(A->elasticity, B->elasticity);
+    /* (a crowded object's contacts do not bounce: guard.h) */
+    bool crowd = guard_crowded(&w->guard, p->a) || guard_crowded(&w->guard, p->b);
+    double e = crowd ? 0 : d_min(A->elasticity, B->elasticity);
     row_list rl = {I->row + I->nr, NULL, NULL, 0, INSTANT_MAX_ROWS - I->nr, false};
     int n = rows_add(&rl, p, A, B, r, tol_region(A, B, r->distance), e, w->bodies);
     if (n == 0) return;
@@ -203,7 +210,8 @@ static void add_contact(world *w, instant_work *I, long slot, const closest_resu
 }
 
 /* Object i's contacts join the instant (once): its lasting contacts, and its
- * pairs within the contact distance. */
+ * pairs within the contact distance (within the squeeze gap where a held object
+ * pushes: squeeze.h). */
 static void gather(world *w, instant_work *I, int i)
 {
     if (I->opened[i]) return;
@@ -215,15 +223,16 @@ static void gather(world *w, instant_work *I, int i)
         int o = link->other;
         if ((!p->near && !p->touching) || listed(I, link->slot)) continue;
         const body *bo = w->bodies[o];
+        double reach = I->hand ? d_max(tol_touch(bi, bo), squeeze_gap(bi, bo)) : tol_touch(bi, bo);
         if (!p->touching) {
             /* (apart by more than the contact distance, bounding spheres and all) */
             double apart = v3_len(v3_sub(centre_at(w, I, o), ci)) - bi->shape.r_out - bo->shape.r_out;
-            if (apart > 2 * tol_touch(bi, bo)) continue;
+            if (apart > 2 * reach) continue;
         }
         join(w, I, o);
         const body *A = w->bodies[p->a], *B = w->bodies[p->b];
         closest_result r = pair_query(w, p, A, B);
-        if (r.status == CLOSEST_INVALID || (!p->touching && r.distance > tol_touch(A, B))) continue;
+        if (r.status == CLOSEST_INVALID || (!p->touching && r.distance > reach)) continue;
         add_contact(w, I, link->slot, &r, p->cache);
     }
 }
@@ -266,6 +275,9 @@ static int solve_rough(world *w, instant_work *I, int m, const bool *mob, bool h
     friction_flags f = {false, false, false};
     const impulse_row *r0 = &I->take[0];
     int who = mob[r0->p] ? r0->p : r0->q;
+    /* a held object that pushes what cannot give way: no answer, as without
+     * friction, so that it stops (unsolved) */
+    if (held && impulse_solvable(I->take, m, bs, mob, I->u, w->answer.lcp) != 0) return -1;
     if (m == 1 && !held) {
         f = friction_impact(&I->take[0], bs, mob, &I->lambda[0]);
     } else {
@@ -298,8 +310,9 @@ static int solve(world *w, instant_work *I, solve_kind kind)
             I->closing[m] = -u;
             row->e = kind == SOLVE_WAVE ? restitution(c, -u) : 0;
             if (kind == SOLVE_LIMITS) u = d_min(0, u);
-            /* nothing stays on a held object: it parts at that speed */
-            if (c->held && row->e == 0) u -= SIM_BOUNCE_SPEED;
+            /* nothing stays on a held object: it parts at that speed (unless it
+             * has stopped against what cannot give way) */
+            if (c->held && row->e == 0 && kind != SOLVE_JAMMED) u -= SIM_BOUNCE_SPEED;
             I->u[m] = u;
             I->of[m++] = k;
         }
@@ -325,31 +338,28 @@ static int solve(world *w, instant_work *I, solve_kind kind)
     return 0;
 }
 
-/* Held body i stops where it is, until the hand sets its motion again (hold.h):
- * it met what cannot give way. */
-static void hold_stop(world *w, int i, double t)
+/* A solve found no answer.  With a held object among the instant's, what it
+ * pushes cannot give way (squeeze.h): it stops, and every contact is solved again
+ * with no restitution against it standing still, so that what it pressed stops
+ * too; where even that has no answer (rounding), they stop where they are.
+ * Without one, a fault counted in stats. */
+static void unsolved(world *w, instant_work *I)
 {
-    body *b = w->bodies[i];
-    step_sync(w, i, t);
-    b->hold_v = b->v = v3(0, 0, 0);
-    body_set_angular_vel(b, v3(0, 0, 0));
-    retime_object(w, i, t);
-}
-
-/* A solve found no answer: the held objects among the instant's stop (what
- * they push cannot give way); without one, a fault counted in stats.  True when
- * one stopped. */
-static bool unsolved(world *w, instant_work *I)
-{
-    bool hand = false;
-    for (int k = 0; k < I->nobj; k++) {
-        int i = I->objects[k];
-        if (!w->bodies[i]->held) continue;
-        hold_stop(w, i, I->t);
-        hand = true;
+    if (!I->hand) {
+        w->st.unsolved++;
+        return;
     }
-    if (!hand) w->st.unsolved++;
-    return hand;
+    for (int k = 0; k < I->nobj; k++)
+        if (w->bodies[I->objects[k]]->held) squeeze_hold_stop(w, I->objects[k], I->t);
+    for (int k = 0; k < I->nc; k++) I->wave[k] = true;
+    if (solve(w, I, SOLVE_JAMMED) == 0) return;
+    w->st.unsolved++;
+    for (int k = 0; k < I->nobj; k++) {
+        body *b = w->bodies[I->objects[k]];
+        if (!mobile(w, I->objects[k])) continue;
+        b->v = v3(0, 0, 0);
+        body_set_angular_vel(b, v3(0, 0, 0));
+    }
 }
 
 /* The waves (instant.h), from the seeds' contacts. */
@@ -366,7 +376,7 @@ static void waves(world *w, instant_work *I)
             /* one last solve of them all with no restitution ends it */
             w->st.waves_cut++;
             for (int k = 0; k < I->nc; k++) I->wave[k] = true;
-            if (solve(w, I, SOLVE_LAST) != 0 && unsolved(w, I)) solve(w, I, SOLVE_LAST);
+            if (solve(w, I, SOLVE_LAST) != 0) unsolved(w, I);
             return;
         }
         if (solve(w, I, SOLVE_WAVE) != 0) {
@@ -493,6 +503,7 @@ void instant_answer(world *w, const instant_seed *seeds, int n, double t, double
     I->nc = I->nr = I->nobj = I->nbacks = 0;
     I->take_back = true;
     I->checked = false;
+    I->hand = false;
     w->time = t;
     for (int s = 0; s < n; s++) {
         const pair *p = &w->pairs.p[seeds[s].slot];
@@ -521,7 +532,7 @@ void instant_answer(world *w, const instant_seed *seeds, int n, double t, double
     if (!any) {
         /* held objects against static or held ones: they stop */
         for (int k = 0; k < I->nobj; k++)
-            if (w->bodies[I->objects[k]]->held) hold_stop(w, I->objects[k], t);
+            if (w->bodies[I->objects[k]]->held) squeeze_hold_stop(w, I->objects[k], t);
     } else {
         for (int s = 0; s < I->nseeds; s++) {
             const pair *p = I->c[s].p;

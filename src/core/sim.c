@@ -15,7 +15,9 @@
  * that takes in every other contact beginning with it (instant.h: within the
  * contact distance and closing), so that the answer does not depend on that
  * order; and which pairs are searched (the heap's due ones, or all of them)
- * changes no answer: a search depends on its pair's flights alone.  The frame ends with the thesis's rule of rest (rest_frame_end).  As
+ * changes no answer: a search depends on its pair's flights alone.  The frame
+ * ends with what overlaps moved apart (apart.h) and the thesis's rule of rest
+ * (rest_frame_end).  As
  * Box2D's b2World_Step sits beside its contact_solver.c, this file keeps the
  * frame, the step and the loop over the events; answering them is answer.c's.
  */
@@ -26,7 +28,9 @@
 #include <stdio.h>
 
 #include "answer.h"
+#include "apart.h"
 #include "broad.h"
+#include "guard.h"
 #include "instant.h"
 #include "pairs.h"
 #include "rest.h"
@@ -175,16 +179,18 @@ static void internal_step(world *w, double t_end, bool fresh)
         if (step_moves(w, i) && b->mode == MODE_GENERAL && w->step.event[i] == HUGE_VAL)
             answer_clusters(w, &i, 1, t, t_end);
     }
-    for (int n = 0;; n++) {
+    for (long n = 0;; n++) {
         next_event e = find_next(w, t, t_end);
         if (e.kind < 0) break;
-        if (n >= SIM_MAX_EVENTS_PER_STEP) {
-            w->st.overflows++;
-            break;
-        }
+        const pair *p = e.kind == 0 ? &w->pairs.p[e.index] : NULL;
+        if (!guard_event(w, p ? p->a : (int)e.index, p ? p->b : -1, n, e.t)) break;
         if (e.kind == 0) answer_contact(w, e.index, e.t, t_end);
         else answer_object(w, (int)e.index, e.t, t_end);
+#ifdef VROC_VALIDATE
+        apart_watch(w, e.t); /* (st.deepest: that nothing passes into anything) */
+#endif
     }
+    guard_step_end(w);
     for (int i = 0; i < w->n; i++) step_sync(w, i, t_end);
     w->time = t_end;
 #ifdef VROC_VALIDATE
@@ -269,7 +275,8 @@ int sim_prepare(world *w)
 {
     if (update_pairs(w) != 0) return -1;
     bool changed = w->sched_dirty;
-    if (step_prepare(w, changed) != 0 || answer_prepare(w, changed) != 0) return -1;
+    if (step_prepare(w, changed) != 0 || answer_prepare(w, changed) != 0 || guard_prepare(w) != 0)
+        return -1;
     if (!changed) return 0;
     /* the boxes for the first internal step */
     long n = world_subframes(w);
@@ -404,7 +411,11 @@ int sim_frame_hooked(world *w, const sim_hook *hook, char *err, size_t errlen)
         internal_step(w, t_end, k == 0 || cut);
         w->st.subframes++;
     }
-    if (n > 0) mark_fallen(w);
+    /* a frame where nothing moved leaves nothing new to part or to fall */
+    if (n > 0) {
+        apart_frame_end(w);
+        mark_fallen(w);
+    }
     if (rest_frame_end(w) > 0) {
         for (int i = 0; i < w->n; i++) {
             if (w->bodies[i]->state != STATE_RESTING) continue;

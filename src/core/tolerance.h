@@ -165,8 +165,8 @@ static inline double tol_accel(const body *a, const body *b)
 /* Rows of contact one cluster may hold (the corners of its contact regions). */
 #define SIM_CLUSTER_ROWS 64
 
-/* Events one internal step may answer before it gives up and lets the step end
- * (a guard against a fault; counted in stats as an overflow). */
+/* Events one internal step may answer before the event guard's last resort stops
+ * the objects whose events ran away (guard.h; counted in stats as guards). */
 #define SIM_MAX_EVENTS_PER_STEP 100000
 
 #endif

@@ -37,6 +37,7 @@ void world_init(world *w)
     sched_init(&w->sched);
     step_init(&w->step);
     answer_init(&w->answer);
+    guard_init(&w->guard);
 }
 
 void world_free(world *w)
@@ -59,6 +60,7 @@ void world_free(world *w)
     sched_free(&w->sched);
     step_free(&w->step);
     answer_free(&w->answer);
+    guard_free(&w->guard);
 }
 
 void world_event(world *w, const sim_event *e)

@@ -21,6 +21,7 @@
 #include "body.h"
 #include "broad.h"
 #include "force.h"
+#include "guard.h"
 #include "pairs.h"
 #include "schedule.h"
 #include "step.h"
@@ -50,6 +51,15 @@ typedef struct {
     bool thrown;          /* a throw's, not a collision's */
 } sim_cut;
 
+/* The first last resort of the event guard (guard.h): at time t, in the event of
+ * objects a and b (b -1: an object's own event; indices then), `stopped` objects
+ * were stopped where they were. */
+typedef struct {
+    double t;
+    int a, b;
+    int stopped;
+} sim_guard;
+
 /* The simulation's counters since the world was made. */
 typedef struct {
     long frames;          /* frames advanced */
@@ -61,8 +71,15 @@ typedef struct {
     long unsolved;        /* contact problems with no solution (a collision's, a
                            * cluster's kicks): the impulses are not applied; never
                            * expected but for a held body, which stops instead */
-    long overflows;       /* internal steps cut short after SIM_MAX_EVENTS_PER_STEP
-                           * events (a guard against a fault; never expected) */
+    long overflows;       /* internal steps cut short after twice
+                           * SIM_MAX_EVENTS_PER_STEP events (guard.h; never
+                           * expected) */
+    long crowds;          /* objects whose contacts were answered with no
+                           * restitution for the rest of a step, after
+                           * SIM_CROWD_EVENTS events in it (guard.h) */
+    long guards;          /* internal steps that reached SIM_MAX_EVENTS_PER_STEP
+                           * events, where the crowded objects stopped (guard.h) */
+    sim_guard first_guard; /* the first of them (when guards > 0) */
     long speed_cuts;      /* collisions and throws whose result max_linear or
                            * max_angular cut: each loses energy (elasticity 1 keeps
                            * it only within the limits) */
@@ -82,6 +99,11 @@ typedef struct {
     long events_lost;     /* collisions not reported in events (out of memory) */
     long late_pairs;      /* (heap off) contacts found of pairs the broad phase did
                            * not hold near: it was late; never expected */
+    long separations;     /* pairs moved apart at frames' ends (apart.h) */
+    double deepest;       /* (validation build) the deepest overlap of any pair
+                           * after any event (m; 0: none), of objects deepest_a and
+                           * deepest_b (apart_watch) */
+    int deepest_a, deepest_b;
 } sim_stats;
 
 
@@ -116,6 +138,7 @@ typedef struct world {
     schedule sched;       /* schedule.h */
     step_state step;      /* step.h */
     answer_scratch answer; /* answer.h */
+    guard_work guard;     /* guard.h */
     bool sched_dirty;     /* something changed other than by the simulation: every
                            * pair is due, and the simulation copies its bodies
                            * afresh (edit.h sets it) */

@@ -11,8 +11,9 @@
  * HAND_SYNC), or else the motion that brings it there by the next update (it was
  * stopped against something, or the hand went faster than the speed limits).
  * Where the hand jumps (a statement, a tick of the wall clock while time stands
- * still, a row of a live feed), what it holds jumps with it, where nothing is in
- * the way; otherwise the next frame carries it back to the hand.
+ * still, a row of a live feed), what it holds sweeps towards its place in the
+ * hand and stops at the first thing in its way (hold_sweep); the next frames
+ * carry it on to the hand.
  *
  * A live source (the window's mouse) plays as a path of its own samples, each
  * added at a frame boundary as the row at the coming frame's end (hand.h), so
@@ -245,30 +246,16 @@ static void carry(hand *h, world *w, double t1)
                                        v3_scale(tracker_turn(b->q, q), 1 / dt)});
 }
 
-/* True when body i, put at (x, q), would be apart from every other object. */
-static bool clear_at(const world *w, int i, vec3 x, quat q)
-{
-    body moved = *w->bodies[i];
-    moved.x = x;
-    moved.q = q;
-    for (int j = 0; j < w->n; j++) {
-        if (j == i) continue;
-        closest_result r = body_distance_apart(&moved, w->bodies[j], NULL);
-        if (r.status != CLOSEST_SEPARATED) return false;
-    }
-    return true;
-}
-
 /* The hand moved between frames: a held object waits for the next frame to be
- * carried to it, or, where the hand jumped (jump), jumps there at once where
- * nothing is in the way. */
+ * carried to it, or, where the hand jumped (jump), sweeps there at once, and
+ * stops at the first thing in its way (hold_sweep). */
 static void follow(hand *h, world *w, bool jump)
 {
     if (h->grip != GRIP_OBJECT || held_gone(h, w) || !jump) return;
     vec3 x;
     quat q;
     held_place(h, h->p, h->q, &x, &q);
-    if (!near_pose(w->bodies[h->held], x, q) && clear_at(w, h->held, x, q)) hold_place(w, h->held, x, q);
+    if (!near_pose(w->bodies[h->held], x, q)) hold_sweep(w, h->held, x, q);
     hold_set(w, h->held, (hold_motion){h->p, h->mv, h->mw});
 }
 

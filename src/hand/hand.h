@@ -131,7 +131,7 @@ void hand_free(hand *h);
 /* ---- statements (outside frames; w->time is now) ---- */
 
 /* Moves the hand to p (hand = p) or turns it to q (hand_rotate): what it holds
- * follows at once where nothing is in the way.  Its velocity is the change over
+ * sweeps after it at once, as far as nothing is in the way (hold_sweep).  Its velocity is the change over
  * the simulated time since the last such statement (zero when none passed). */
 void hand_move(hand *h, world *w, vec3 p, quat q);
 
@@ -237,7 +237,7 @@ void hand_wall(hand *h, world *w, double dt);
 /* A live feed's descriptor for select(), or -1. */
 int hand_feed_fd(const hand *h);
 /* Reads the live feed between frames: rows take effect as they come, and what the
- * hand holds jumps with it where nothing is in the way. */
+ * hand holds sweeps after it, as far as nothing is in the way. */
 void hand_poll(hand *h, world *w);
 
 /* True when something moves on the tracker clock while time stands still (a
@@ -264,7 +264,7 @@ void hand_live(hand *h, world *w, const tracker_row *now);
 
 /* While time stands still: the hand takes the live source's sample now, at the
  * clock's time, as it takes a row of a live feed (it jumps there, and what it
- * holds with it where nothing is in the way; its velocity is the change from the
+ * holds sweeps after it, as far as nothing is in the way; its velocity is the change from the
  * sample before over the clock's time between them). */
 void hand_live_act(hand *h, world *w);
 

@@ -198,6 +198,8 @@ cmd_status cmd_stats(shell *sh, const stmt *st)
     fprintf(sh->out, "existing_pairs = %ld\n", w->pairs.live);
     fprintf(sh->out, "unsolved = %ld\n", w->st.unsolved);
     fprintf(sh->out, "overflows = %ld\n", w->st.overflows);
+    fprintf(sh->out, "crowds = %ld\n", w->st.crowds);
+    fprintf(sh->out, "guards = %ld\n", w->st.guards);
     fprintf(sh->out, "speed_cuts = %ld\n", w->st.speed_cuts);
     fprintf(sh->out, "energy_cuts = %ld\n", w->st.energy_cuts);
     fprintf(sh->out, "cone_unconverged = %ld\n", w->st.cone_unconverged);
@@ -207,6 +209,11 @@ cmd_status cmd_stats(shell *sh, const stmt *st)
     for (int i = 0; i < w->n; i++) resting += w->bodies[i]->state == STATE_RESTING;
     fprintf(sh->out, "resting = %ld\n", resting);
     fprintf(sh->out, "waves_cut = %ld\n", w->st.waves_cut);
+    fprintf(sh->out, "separations = %ld\n", w->st.separations);
+#ifdef VROC_VALIDATE
+    /* (the validation build's watch: that nothing passes into anything) */
+    fprintf(sh->out, "deepest = %.17g\n", w->st.deepest);
+#endif
     return CMD_OK;
 }
 

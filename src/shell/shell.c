@@ -415,6 +415,12 @@ static cmd_status interrupted(shell *sh, const stmt *st)
     return CMD_ERROR;
 }
 
+/* The name of object i (an index the core reported), or "?". */
+static const char *name_of(const shell *sh, int i)
+{
+    return i >= 0 && i < sh->w.n ? sh->w.bodies[i]->name : "?";
+}
+
 /* The world's first collision or throw whose result a speed limit cut (sim.h,
  * hold.h) warns, naming the object and the limit to raise: each such cut loses
  * energy. */
@@ -422,7 +428,7 @@ static void warn_speed_cut(shell *sh, const stmt *st)
 {
     const sim_cut *c = &sh->w.st.first_cut;
     const char *limit = c->angular ? "max_angular" : "max_linear";
-    const char *name = c->object >= 0 && c->object < sh->w.n ? sh->w.bodies[c->object]->name : "?";
+    const char *name = name_of(sh, c->object);
     sh_warn(sh, st,
             "%s = %g cut the %s a %s gave '%s' (%.3g %s): each such cut loses energy, and "
             "stats counts them (speed_cuts); raise %s to keep it",
@@ -430,10 +436,28 @@ static void warn_speed_cut(shell *sh, const stmt *st)
             c->speed, c->angular ? "rad/s" : "m/s", limit);
 }
 
+/* The world's first internal step whose events reached the guard's last resort
+ * (guard.h) warns, naming the objects of the event at hand. */
+static void warn_guard(shell *sh, const stmt *st)
+{
+    const sim_guard *g = &sh->w.st.first_guard;
+    char t[32];
+    fmt_num(t, g->t);
+    char with[160] = "";
+    if (g->b >= 0) snprintf(with, sizeof with, " and '%s'", name_of(sh, g->b));
+    sh_warn(sh, st,
+            "at time = %s the events of '%s'%s ran away (%ld in one step): %d object%s stopped "
+            "where they were, so that nothing passes through anything; stats counts these (guards)",
+            t, name_of(sh, g->a), with, sh->w.guard.max_events, g->stopped, g->stopped == 1 ? "" : "s");
+}
+
 void shell_check_cuts(shell *sh, const stmt *st)
 {
     const sim_stats *s = &sh->w.st;
-    if (s->speed_cuts < sh->cuts_seen) sh->cuts_seen = 0; /* a new world (restart) */
+    if (s->guards < sh->guards_seen) sh->guards_seen = 0; /* a new world (restart) */
+    if (sh->guards_seen == 0 && s->guards > 0) warn_guard(sh, st);
+    sh->guards_seen = s->guards;
+    if (s->speed_cuts < sh->cuts_seen) sh->cuts_seen = 0;
     if (sh->cuts_seen == 0 && s->speed_cuts > 0) warn_speed_cut(sh, st);
     sh->cuts_seen = s->speed_cuts;
     /* the world's first contact with friction that had no consistent answer */

@@ -85,7 +85,8 @@ typedef struct shell {
     long cuts_seen;        /* the world's speed_cuts when last looked at
                             * (shell_check_cuts), */
     long painleve_seen;    /*   its painleve, */
-    long fallen_seen;      /*   and its fallen */
+    long fallen_seen;      /*   its fallen */
+    long guards_seen;      /*   and its guards (the event guard's last resort) */
     bool fly_told;         /* flying was stopped at the limits, and said so */
 } shell;
 
@@ -145,7 +146,9 @@ cmd_status shell_close_logs(shell *sh, const stmt *st);
 
 /* The world's first collision or throw whose result a speed limit cut (st.speed_cuts
  * grew from 0 since the last look) warns once, naming the object and the limit
- * to raise; later ones are only counted (stats: speed_cuts). */
+ * to raise; later ones are only counted (stats: speed_cuts).  So does the first
+ * step whose events reached the event guard's last resort (st.guards: guard.h),
+ * naming the objects. */
 void shell_check_cuts(shell *sh, const stmt *st);
 
 /* Messages about statement st (NULL: no location). */
