@@ -39,20 +39,6 @@ double friction_rolling(const body *a, const body *b)
     return sqrt(a->rolling_friction * b->rolling_friction);
 }
 
-double friction_roll_decel(const body *b, const body *s, vec3 a, vec3 n)
-{
-    double mu = friction_mu(b, s), c = friction_rolling(b, s), gn = -v3_dot(a, n);
-    vec3 com = b->shape.mass.com;
-    if (b->sp.kind != SHAPE_SPHERE || com.x != 0 || com.y != 0 || com.z != 0 || !(mu > 0) ||
-        !(b->mass > 0) || !(gn > 0))
-        return -1;
-    double size = 1 + b->shape.r_out;
-    if (v3_len(v3_mad(a, n, gn)) > SIM_ACCEL_ROUND * size) return -1; /* not level */
-    double r = b->shape.r_out, k = b->I_princ.x / (b->mass * r * r);
-    if (!(k > 0) || c / (1 + k) > mu) return -1;
-    return c * gn / (1 + k);
-}
-
 bool friction_ball(const body *b)
 {
     vec3 com = b->shape.mass.com;

@@ -104,16 +104,6 @@ int friction_compress(const impulse_row *rows, int m, body *const *bs, const boo
 void friction_restitute(const impulse_row *rows, int m, body *const *bs, const bool *mobile,
                         double *lambda, double ke_before, friction_work *fw, friction_flags *f);
 
-/* A ball that rolls on a level face of a static support s (normal n, towards
- * the ball), pressed onto it by the force's acceleration a: the deceleration of
- * its centre, c g_n / (1 + k) with c the pair's rolling resistance, g_n = -a.n
- * and I = k m r^2 (a solid ball: (5/7) c g), or -1 when b does not roll there
- * in closed form: it is not a ball (a sphere with its centre of mass at its
- * centre), the pair has no friction, the face is not level (a's part along it
- * above rounding), or friction cannot hold the couple (c / (1 + k) > mu: it
- * slides). */
-double friction_roll_decel(const body *b, const body *s, vec3 a, vec3 n);
-
 /* Closed-form lasting contact (design.md, "Dynamics"): how body b moves on a
  * level or inclined face of a still support s (normal n, towards b) with
  * friction, pressed onto it by the force's acceleration g, from its state (its
