@@ -12,7 +12,8 @@
  * mu >= (2/7) tan th, and slides otherwise, spinning up at 5 mu g cos th / (2
  * r).  A box at rest on an incline tips iff tan th > b / h; launched on a level
  * floor it stays flat iff mu h < b; sliding flat it goes straight; a cube
- * spinning flat slows at (sqrt 2 + ln(1 + sqrt 2)) mu g / s.  Rolling
+ * spinning flat slows at (sqrt 2 + ln(1 + sqrt 2)) mu g / s; one sliding across
+ * the seam of two coplanar tiles stops where one face would stop it.  Rolling
  * resistance is 0 unless said; 1e-6 relative unless said. */
 #include "check.h"
 
@@ -415,6 +416,35 @@ static void box_launched_on_floor(void **state)
         }
 }
 
+/* Sliding across the seam of two coplanar tiles, a box goes on in closed form
+ * as on one face: it stops u^2 / (2 mu g) from where it started, on the second
+ * tile, and sticks there. */
+static void box_slides_across_a_seam(void **state)
+{
+    (void)state;
+    world w;
+    world_init(&w);
+    w.set.force = (dir_amount){v3(0, 0, -1), G};
+    w.set.max_linear = 50;
+    body *t1 = add_static_box(&w, "tile1", v3(0.5, 0.5, 0.05));
+    body *t2 = add_static_box(&w, "tile2", v3(0.5, 0.5, 0.05));
+    t1->x = v3(0, 0, -0.05);
+    t2->x = v3(1, 0, -0.05);
+    t1->friction = t2->friction = 0.4;
+    body *box = add_box(&w, "box", v3(0.1, 0.1, 0.1));
+    box->friction = 0.4;
+    box->rolling_friction = 0;
+    box->elasticity = 0;
+    box->x = v3(-0.3, 0, 0.1 + 1e-9);
+    double u = 3, want = u * u / (2 * 0.4 * G); /* 1.148 m: past the seam at 0.5 */
+    box->v = v3(u, 0, 0);
+    frames(&w, 20, 0.1);
+    print_message("across a seam: stops at %.12f (want %.12f)\n", box->x.x + 0.3, want);
+    assert_rel(box->x.x + 0.3, want, 1e-6);
+    assert_true(stuck(box) && box->slide_on == 1);
+    world_free(&w);
+}
+
 /* A cube of side s spinning flat about the vertical slows at the angular
  * deceleration of the integral of mu p r over its face, p = m g / s^2 uniform:
  * mu m g s (sqrt 2 + ln(1 + sqrt 2)) / 6 over I = m s^2 / 6, that is (sqrt 2 +
@@ -460,6 +490,7 @@ int main(void)
         cmocka_unit_test(box_tips_on_incline_iff),
         cmocka_unit_test(box_launched_on_floor),
         cmocka_unit_test(cube_spins_down),
+        cmocka_unit_test(box_slides_across_a_seam),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
