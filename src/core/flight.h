@@ -63,10 +63,10 @@ typedef struct {
 
 /* Starts flight f of kind at time t0 from body b's state (x, q, v, L; b's w is
  * taken as consistent with L): a the acceleration of the centre of mass (FREE,
- * SLIDE; ROLL: its deceleration's size, |a|), n the support's normal (SLIDE: b
- * turns about n only, at w . n; ROLL: b's velocity along the face sets its
- * motion, and its turning follows).  HELD
- * takes the pivot, its velocity and w from b (hold_pivot, hold_v, w). */
+ * SLIDE, ROLL), n the support's normal (SLIDE: b turns about n only, at w . n,
+ * as on a frictionless face; with friction, and for ROLL, flight_start_face
+ * sets the rest).  HELD takes the pivot, its velocity and w from b
+ * (hold_pivot, hold_v, w). */
 void flight_start(flight *f, const body *b, flight_kind kind, double t0, vec3 a, vec3 n, long id);
 
 /* How a body moves on a still face with friction (friction_face writes it):
