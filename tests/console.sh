@@ -86,10 +86,14 @@ expect "precision takes short or exact" 1 "precision must be one of short|exact 
     "$VROC" -b -c 'precision = long'
 
 # ---- warnings: a contact with friction with no answer, an object that left the room
-# A rod (1 m, thin) landing on its end at 0.9 rad from the floor while sliding
-# back fast, with mu = 3, jams (Painleve): one warning names it, whatever follows.
+# A rod (1 m, thin) landing on its end at 0.9 rad from the floor, sliding fast
+# towards that end, with mu = 3, jams (Painleve): one warning names it, whatever
+# follows.  (Its end r = L (cos a, -sin a) from the centre, I = m L^2 / 3: along
+# the normal impulse with sliding friction -mu along x, the end's normal speed
+# changes by (1 + 3 cos^2 a - 3 mu sin a cos a) / m per unit, negative, a jam,
+# for mu > (1 + 3 cos^2 a) / (3 sin a cos a) = 1.48 at a = 0.9.)
 out=$("$VROC" -b -q -c "gravity; max_angular = 1000; max_linear = 100; cube floor; mass = -1; size = (20, 20, 0.1); translate = (0, 0, -0.1); friction = 3" \
-    -c "cube rod; size = (0.5, 0.01, 0.01); friction = 3; rotate = (0, 1, 0) 0.9; translate = (0, 0, 0.5 * sin(0.9) + 0.011); linear_vel = (-3, 0, -0.5); run 10; run 10; stats" 2>&1)
+    -c "cube rod; size = (0.5, 0.01, 0.01); friction = 3; rotate = (0, 1, 0) 0.9; translate = (0, 0, 0.5 * sin(0.9) + 0.011); linear_vel = (3, 0, -0.5); run 10; run 10; stats" 2>&1)
 [ "$(printf '%s\n' "$out" | grep -c "^warning: a contact of 'rod' with friction had no consistent answer (Painleve): it was answered without friction there, and stats counts such contacts (painleve)$")" = 1 ] &&
     [ "$(printf '%s\n' "$out" | grep -c '^warning')" = 1 ] && printf '%s\n' "$out" | grep -q '^painleve = [1-9]' &&
     ok "a Painleve contact warns once, naming its object, and stats counts it" ||

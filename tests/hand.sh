@@ -264,6 +264,17 @@ for k in 3 5 6; do
     fi
 done
 
+# ---- an object named none ----
+# last_held = none means no object; an object that is named none is written
+# quoted, and the saved world reads back to the same file.
+"$VROC" -b -q -c "sphere none; sphere b; translate = (3, 0, 0); select on; hand = (0, 0, 0)" \
+    -c "last_held = \"none\"; save $TMP/none.vroc; last_held = none; save $TMP/nobody.vroc" > /dev/null 2>&1
+"$VROC" -b -q -c "read $TMP/none.vroc; save $TMP/none2.vroc" > /dev/null 2>&1
+if grep -qx 'last_held = "none"' "$TMP/none.vroc" && grep -qx 'last_held = none' "$TMP/nobody.vroc"; then
+    ok "last_held names an object called none quoted, and none unquoted"
+else notok "last_held names an object called none quoted" "$(grep last_held "$TMP/none.vroc" "$TMP/nobody.vroc")"; fi
+same "a world whose last_held is an object called none reads back to the same file" "$TMP/none.vroc" "$TMP/none2.vroc"
+
 # ---- the hand log replays what the hand did ----
 "$VROC" -b -q -c "gravity; sphere ball; radius = 0.1; translate = ($bx, $by, 0.7); select on" \
     -c "hand_log = $TMP/log.csv; tracker = $TMP/throw.csv; run 12; hand_log = off; print ball" > "$TMP/log-a" 2>&1

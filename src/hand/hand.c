@@ -729,10 +729,11 @@ void hand_grip_pose(const hand *h, vec3 *x, quat *q)
     *q = h->grip_q;
 }
 
-int hand_set_last_held(hand *h, const world *w, const char *name, char *err, size_t errlen)
+int hand_set_last_held(hand *h, const world *w, const char *name, bool quoted, char *err, size_t errlen)
 {
-    int i = strcmp(name, "none") == 0 ? -1 : world_find(w, name);
-    if (strcmp(name, "none") != 0 && (i < 0 || body_is_static(w->bodies[i]))) {
+    bool none = !quoted && strcmp(name, "none") == 0;
+    int i = none ? -1 : world_find(w, name);
+    if (!none && (i < 0 || body_is_static(w->bodies[i]))) {
         snprintf(err, errlen,
                  i < 0 ? "no object named '%s'" : "'%s' is static: the hand holds only dynamic objects", name);
         return -1;

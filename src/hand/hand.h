@@ -211,9 +211,10 @@ void hand_set_spin(hand *h, vec3 wv);
 void hand_set_grip_pose(hand *h, const vec3 *x, const quat *q);
 void hand_grip_pose(const hand *h, vec3 *x, quat *q);
 
-/* last_held = NAME or none: the object the re-select button takes.  Returns 0, or
- * -1 with a message (no such dynamic object). */
-int hand_set_last_held(hand *h, const world *w, const char *name, char *err, size_t errlen);
+/* last_held = NAME or none: the object the re-select button takes; quoted is
+ * true when the name was written as a quoted string, which names an object even
+ * if it reads "none".  Returns 0, or -1 with a message (no such dynamic object). */
+int hand_set_last_held(hand *h, const world *w, const char *name, bool quoted, char *err, size_t errlen);
 
 /* Object i was deleted: indices above it move down. */
 void hand_object_deleted(hand *h, int i);

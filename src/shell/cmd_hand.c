@@ -121,7 +121,7 @@ cmd_status cmd_hand_exact(shell *sh, const stmt *st)
         quat q = q_as_unit((quat){st->num[0], st->num[1], st->num[2], st->num[3]});
         hand_set_grip_pose(h, NULL, &q);
     } else { /* last_held */
-        rc = hand_set_last_held(h, &sh->w, st->word, err, sizeof err);
+        rc = hand_set_last_held(h, &sh->w, st->word, st->n == 1, err, sizeof err);
     }
     return answer(sh, st, rc, err);
 }

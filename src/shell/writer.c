@@ -76,8 +76,12 @@ static bool write_hand_exact(FILE *out, const shell *sh, const char *n, fmt_styl
         return true;
     }
     if (strcmp(n, "last_held") == 0) {
-        fprintf(out, "last_held = %s\n", h->last_held >= 0 && h->last_held < sh->w.n
-                                               ? sh->w.bodies[h->last_held]->name : "none");
+        const char *held = h->last_held >= 0 && h->last_held < sh->w.n ? sh->w.bodies[h->last_held]->name : NULL;
+        fputs("last_held = ", out);
+        /* (an object named none is written quoted, so that it reads back as that object) */
+        if (held && strcmp(held, "none") == 0) writer_quoted(out, held);
+        else fputs(held ? held : "none", out);
+        fputc('\n', out);
         return true;
     }
     bool quat_ = strcmp(n, "hand_orientation") == 0 || strcmp(n, "grip_orientation") == 0;
