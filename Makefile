@@ -71,7 +71,7 @@ UPPER_SRC = $(sort $(filter-out src/shell/main.c,$(wildcard src/shell/*.c)) $(wi
                    $(wildcard src/sound/*.c) $(wildcard src/hand/*.c))
 COMMANDS  = $(sort $(wildcard commands/*))
 # the core's own tests link libvroc-core.a alone; the others the whole program
-CORE_TESTS  = test_broad test_closest test_collide test_contact test_flight test_friction test_geometry test_instant test_lcp test_physics test_schedule test_spin
+CORE_TESTS  = test_broad test_closest test_collide test_contact test_flight test_friction test_geometry test_instant test_lasting test_lcp test_physics test_schedule test_spin
 # the readers' tests link the readers and the core
 MESH_TESTS  = test_mesh
 UPPER_TESTS = $(filter-out $(CORE_TESTS) $(MESH_TESTS),$(patsubst tests/%.c,%,$(wildcard tests/test_*.c)))

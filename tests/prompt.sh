@@ -29,6 +29,8 @@ check_screen "Tab completes a setting's choices" "stereo = anaglyph"
 type_ Enter
 type_ Up
 check_screen "Up recalls the last line" "vroc> stereo = anaglyph"
+type_ C-u "mode = st" Tab
+check_screen "Tab completes mode's choices, stick among them" "vroc> mode = stick"
 type_ C-u "print ball" Enter
 type_ "start" Enter
 sleep 1

@@ -147,3 +147,29 @@ then='print ball; hand = (0.3, 0, 0.3); run 1; print ball; trigger = off; run 5;
 awk -F'[(), ]+' '/^translate = / { exit !($5 > 0.0999 && $5 < 0.1001) }' hs-a.txt &&
     same "a statement-driven hand, its ball stopped against a table, saved and read back, carries and throws it as it would have" hs-a.txt hs-b.txt ||
     notok "a statement-driven hand, its ball stopped against a table: the ball stopped on the table" "$(grep translate hs-a.txt | head -1)"
+
+# ---- issue 37: the modes of lasting contact with friction ----
+
+# slopes.vroc's objects in each mode: a shoved box stuck on the gentle ramp,
+# the ball on the steep one rolling, the ball thrown on the floor sliding; print
+# shows the mode, save writes it with its support, and each read back goes on
+# to the bit (continue.sh saves it at every frame)
+out=$("$VROC" -b -q "$S/slopes.vroc" -c "run 1; print thrown.mode; print roller.mode; run 9; print shoved.mode; print shoved.slide_on; save m.vroc" 2>&1)
+printf '%s\n' "$out" | grep -qx 'thrown.mode = slide' && printf '%s\n' "$out" | grep -qx 'roller.mode = roll' &&
+    printf '%s\n' "$out" | grep -qx 'shoved.mode = stick' && printf '%s\n' "$out" | grep -qx 'shoved.slide_on = gentle' &&
+    ok "print shows the modes slide, roll and stick, and a stuck object's support" ||
+    notok "print shows the modes slide, roll and stick, and a stuck object's support" "$out"
+awk '/^cube shoved$/ { s = 1 } s && /^slide_on = gentle$/ { a = 1 } s && a && /^mode = stick$/ { m = 1 } s && m && /^resting = on$/ { print "yes"; exit }' m.vroc | grep -q yes &&
+    ok "save writes a stuck object's support, mode = stick and resting" ||
+    notok "save writes a stuck object's support, mode = stick and resting" "$(grep -A12 '^cube shoved$' m.vroc | head -20)"
+for f in 1 3 12; do
+    "$VROC" -b -q "$S/slopes.vroc" -c "run $f; save m$f.vroc; trace = m$f.a.csv; run 15; hash" > m$f.a.txt 2>&1
+    "$VROC" -b -q m$f.vroc -c "trace = m$f.b.csv; run 15; hash" > m$f.b.txt 2>&1
+    cmp -s m$f.a.csv m$f.b.csv && cmp -s m$f.a.txt m$f.b.txt &&
+        ok "slopes saved at frame $f (slide, roll, stick) goes on to the bit" ||
+        notok "slopes saved at frame $f (slide, roll, stick) goes on to the bit" "$(cat m$f.a.txt m$f.b.txt)"
+done
+expect "mode = roll is a ball's" 1 "only a ball rolls" \
+    "$VROC" -b -q -c "cube floor; mass = -1; cube c; translate = (0, 0, 2.000000001); slide_on = floor; slide_face = 5; mode = roll"
+expect "mode = stick needs a static support" 1 "mode = stick needs slide_on" \
+    "$VROC" -b -q -c "sphere s; mode = stick"

@@ -143,8 +143,15 @@ void answer_object(world *w, int i, double t, double t_end)
     int *mine = w->answer.objects;
     body *b = w->bodies[i];
     w->time = t;
-    if (b->mode == MODE_SLIDE) {
+    if (body_mode_on_face(b->mode)) {
         step_sync(w, i, t);
+        /* its closed form's end: it sticks, rolls, slides on, or goes to a
+         * cluster */
+        if (rest_face_stop(w, i)) {
+            retime_object(w, i, t);
+            if (b->state == STATE_DYNAMIC && b->mode == MODE_GENERAL) answer_clusters(w, &i, 1, t, t_end);
+            return;
+        }
         /* across a seam, onto a coplanar face: on it slides */
         if (rest_slide_on(w, i)) {
             retime_object(w, i, t);

@@ -28,10 +28,20 @@
 typedef enum { STATE_DYNAMIC, STATE_STATIC, STATE_RESTING } body_state;
 
 /* How a dynamic body moves (rest.h): freely; sliding on a face of a still support
- * (translating along it, turning about its normal only); or pressed against
- * others in ways that need the contact forces found as it goes (a cluster:
- * tipping, pivoting, stacks and piles that move). */
-typedef enum { MODE_FREE, MODE_SLIDE, MODE_GENERAL } body_mode;
+ * (translating along it, turning about its normal only; with friction, slipping
+ * against it in closed form); pressed against others in ways that need the
+ * contact forces found as it goes (a cluster: tipping, pivoting, stacks and
+ * piles that move); stuck by friction on a face of a still support; or, a
+ * ball, rolling on one without slipping.  (The order is the language's:
+ * `mode = free|slide|general|stick|roll`.) */
+typedef enum { MODE_FREE, MODE_SLIDE, MODE_GENERAL, MODE_STICK, MODE_ROLL } body_mode;
+
+/* True for the modes of a body on a face of a still support (slide_on,
+ * slide_face, slide_n hold it). */
+static inline bool body_mode_on_face(body_mode m)
+{
+    return m == MODE_SLIDE || m == MODE_STICK || m == MODE_ROLL;
+}
 
 typedef struct body {
     char name[BODY_NAME_MAX];
@@ -75,7 +85,7 @@ typedef struct body {
 
     body_mode mode;    /* how a dynamic body moves (sim.h): free, sliding, or in a
                         * cluster of bodies pressed together (general) */
-    int slide_on;      /* MODE_SLIDE: the static object it slides on, or -1, */
+    int slide_on;      /* on a face (body_mode_on_face): the static object, or -1, */
     int slide_face;    /*   the face of it, */
     vec3 slide_n;      /*   and that face's normal, towards this body */
     bool moved;        /* a command placed, turned, reshaped it or changed its mass

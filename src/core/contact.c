@@ -422,6 +422,57 @@ int contact_facing(const body *o, vec3 d)
     return best;
 }
 
+/* The integral of the distance from the origin over the triangle (0, a, b),
+ * signed as the turn from a to b: in polar coordinates about the origin, with
+ * psi measured from the foot of the perpendicular to the line ab (at distance
+ * d), r runs to d / cos psi, and int int r r dr dpsi = d^3 / 3 int sec^3 psi
+ * dpsi = d^3 / 6 [sec psi tan psi + ln(sec psi + tan psi)]. */
+static double arm_triangle(p2 a, p2 b)
+{
+    double ex = b.x - a.x, ey = b.y - a.y, len = hypot(ex, ey), cr = a.x * b.y - a.y * b.x;
+    if (!(len > 0) || cr == 0) return 0;
+    double d = fabs(cr) / len, tx = ex / len, ty = ey / len;
+    double ta = (a.x * tx + a.y * ty) / d, tb = (b.x * tx + b.y * ty) / d; /* tan psi */
+    double sa = hypot(1, ta), sb = hypot(1, tb);                           /* sec psi */
+    double f = (sb * tb + log(sb + tb)) - (sa * ta + log(sa + ta));
+    return copysign(d * d * d / 6 * f, cr);
+}
+
+double contact_face_arm(const body *m, vec3 n)
+{
+    int fi = contact_facing(m, v3_neg(n));
+    if (fi < 0 || body_compound(m)) return -1;
+    const poly *h = m->shape.hull;
+    const poly_face *F = &h->f[fi];
+    if (F->count < 3 || v3_dot(q_rotate(m->q, F->n), n) > -1 + SIM_PARALLEL) return -1;
+    vec3 u, v, c = body_com(m);
+    plane_axes(n, &u, &v);
+    p2 local[LOCAL_SUPPORT];
+    p2 *pg = room_for(local, LOCAL_SUPPORT, F->count);
+    if (!pg) return -1;
+    for (int k = 0; k < F->count; k++) {
+        vec3 x = v3_sub(v3_add(m->x, q_rotate(m->q, h->v[h->face_vert[F->first + k]])), c);
+        pg[k] = (p2){v3_dot(x, u), v3_dot(x, v)};
+    }
+    /* centrally symmetric about the foot of the centre of mass: each corner's
+     * opposite is a corner too */
+    double tol = 1e-9 * (1 + m->shape.r_out), area = 0, arm = 0;
+    bool symmetric = true;
+    for (int k = 0; k < F->count && symmetric; k++) {
+        bool found = false;
+        for (int j = 0; j < F->count && !found; j++)
+            found = fabs(pg[k].x + pg[j].x) <= tol && fabs(pg[k].y + pg[j].y) <= tol;
+        symmetric = found;
+    }
+    for (int k = 0; k < F->count && symmetric; k++) {
+        p2 a = pg[k], b = pg[(k + 1) % F->count];
+        area += 0.5 * (a.x * b.y - a.y * b.x);
+        arm += arm_triangle(a, b);
+    }
+    free_points(pg, local);
+    return symmetric && area != 0 ? arm / area : -1;
+}
+
 /* Where the line xb + s mb (P's frame) crosses the plane of P's face f inwards:
  * s, or -inf for a face it does not cross inwards (nearly parallel, or facing
  * away). */
@@ -756,19 +807,27 @@ double cpoint_eval(const cpoint *cp, const body *P, const body *Q, vec3 *n, vec3
     return gap;
 }
 
-static bool holds(const body *m, const body *s, const closest_result *r, double tol, int *face);
+static bool holds(const body *m, const body *s, const closest_result *r, double tol, vec3 shift,
+                  int *face);
 
 bool contact_holds(const body *m0, const body *s0, const closest_result *r, double tol, int *face)
 {
+    return contact_holds_at(m0, s0, r, tol, v3(0, 0, 0), face);
+}
+
+bool contact_holds_at(const body *m0, const body *s0, const closest_result *r, double tol, vec3 shift,
+                      int *face)
+{
     body tm, ts;
     const body *m = pieces_view(m0, r->ka, &tm), *s = pieces_view(s0, r->kb, &ts);
-    bool held = holds(m, s, r, tol, face);
+    bool held = holds(m, s, r, tol, shift, face);
     if (*face >= 0) *face = shape_face_number(&s0->shape, r->kb, *face);
     return held;
 }
 
 /* contact_holds for one convex piece of each. */
-static bool holds(const body *m, const body *s, const closest_result *r, double tol, int *face)
+static bool holds(const body *m, const body *s, const closest_result *r, double tol, vec3 shift,
+                  int *face)
 {
     *face = -1;
     const poly *h = s->shape.hull;
@@ -784,7 +843,7 @@ static bool holds(const body *m, const body *s, const closest_result *r, double 
     *face = fi;
     vec3 n = q_rotate(s->q, h->f[fi].n), u, v;
     plane_axes(n, &u, &v);
-    vec3 c = body_com(m);
+    vec3 c = v3_add(body_com(m), shift);
     p2 cp = {v3_dot(c, u), v3_dot(c, v)};
     /* (an area, and a length: a billionth of the size, squared and not) */
     double size = tol_size(m, s), round = tol_round(m, s);

@@ -83,11 +83,23 @@ double cpoint_eval(const cpoint *cp, const body *P, const body *Q, vec3 *n, vec3
  * when s touches with no face). */
 bool contact_holds(const body *m, const body *s, const closest_result *r, double tol, int *face);
 
+/* The same for the point shift (along the face) from m's centre of mass: where
+ * friction moves the centre of pressure (friction_face). */
+bool contact_holds_at(const body *m, const body *s, const closest_result *r, double tol, vec3 shift,
+                      int *face);
+
 /* Turns m about its centre of mass so that its face nearest s's face `face` lies
  * flat on it, and moves it along that face's normal to `gap` from its plane:
  * false (and m unchanged) when that face is more than max_tilt radians off.  w
  * is recomputed from L. */
 bool contact_level(body *m, const body *s, int face, double max_tilt, double gap);
+
+/* The mean distance from the foot of m's centre of mass over m's face that lies
+ * flat against a face of normal n (the integral of the distance over its area,
+ * exact): what a uniform pressure's friction turns against as m spins about n.
+ * -1 when that face is not flat against n, or not centrally symmetric about
+ * that foot (a spin alone would then push it sideways). */
+double contact_face_arm(const body *m, vec3 n);
 
 /* The face of polyhedron o whose outward normal is nearest world direction d, or
  * -1 for a sphere. */

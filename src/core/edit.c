@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "friction.h"
 #include "limits.h"
 #include "rest.h"
 
@@ -269,14 +270,19 @@ int edit_exact_contact(world *w, int i, body_mode mode, bool resting, char *err,
         b->moved = b->woken = false; /* placed as saved */
         return 0;
     }
-    if (mode == MODE_SLIDE) {
+    if (mode == MODE_ROLL && !friction_ball(b)) {
+        snprintf(err, errlen, "only a ball rolls: '%s' is not a sphere", b->name);
+        return -1;
+    }
+    if (body_mode_on_face(mode)) {
         int support = b->slide_on, face = b->slide_face;
         const body *s = support >= 0 && support < w->n ? w->bodies[support] : NULL;
         int local;
         const poly *h = s && body_is_static(s) ? shape_face(&s->shape, face, &local) : NULL;
         if (!h) {
-            snprintf(err, errlen, "a slide needs slide_on, a static object, and slide_face, one "
-                     "of its faces, before it");
+            const char *what = mode == MODE_SLIDE ? "a slide" : mode == MODE_STICK ? "mode = stick" : "mode = roll";
+            snprintf(err, errlen, "%s needs slide_on, a static object, and slide_face, one of its "
+                     "faces, before it", what);
             return -1;
         }
         b->slide_n = v3_norm(q_rotate(s->q, h->f[local].n));

@@ -46,15 +46,11 @@ static void roll_at(const flight *f, const body *shape_of, double h, body *out)
 {
     bool stopped = h >= f->t_stop;
     if (stopped) h = f->t_stop;
-    double speed = v3_len(f->v0), d = v3_len(f->a);
-    double gone = speed * h - 0.5 * d * h * h; /* (the distance, without rounding's turn) */
+    double gone = v3_dot(f->v0, f->u) * h + 0.5 * v3_dot(f->a, f->u) * h * h;
     out->x = v3_add(f->c0, v3_add(v3_scale(f->v0, h), v3_scale(f->a, 0.5 * h * h)));
     out->v = stopped ? v3(0, 0, 0) : v3_mad(f->v0, f->a, h);
     out->q = f->q0;
-    if (speed > 0 && gone > 0) {
-        vec3 axis = v3_scale(v3_cross(f->n, f->v0), 1 / speed);
-        out->q = q_normalize(q_mul(q_axis_angle(axis, gone / f->radius), f->q0));
-    }
+    if (gone > 0) out->q = q_normalize(q_mul(q_axis_angle(v3_cross(f->n, f->u), gone / f->radius), f->q0));
     out->w = v3_scale(v3_cross(f->n, out->v), 1 / f->radius);
     out->L = m3_mulv(body_inertia_world(out), out->w);
     out->rot_given = false;
@@ -72,9 +68,12 @@ void flight_start(flight *f, const body *b, flight_kind kind, double t0, vec3 a,
     f->L = kind == FLIGHT_STILL ? v3(0, 0, 0) : b->L;
     f->spins = false;
     f->n = n;
-    f->wn = 0;
+    f->axis = n;
+    f->w0 = f->dw = 0;
     f->rate = 0;
     f->t_stop = HUGE_VAL;
+    f->u = v3(0, 0, 0);
+    f->closed = false;
     f->radius = 0;
     f->id = id;
     if (kind == FLIGHT_HELD) {
@@ -89,17 +88,31 @@ void flight_start(flight *f, const body *b, flight_kind kind, double t0, vec3 a,
         spin_init(&f->spin, b->I_princ, qp, b->L);
         f->rate = spin_rate_bound(&f->spin);
     } else if (kind == FLIGHT_SLIDE) {
-        f->wn = v3_dot(b->w, n);
-        f->rate = fabs(f->wn);
-    } else if (kind == FLIGHT_ROLL) {
-        /* along the face, and against the motion */
-        f->v0 = v3_mad(b->v, n, -v3_dot(b->v, n));
-        double speed = v3_len(f->v0), d = v3_len(a);
-        f->radius = b->shape.r_out;
-        f->a = speed > 0 ? v3_scale(f->v0, -d / speed) : v3(0, 0, 0);
-        f->t_stop = speed > 0 && d > 0 ? speed / d : speed > 0 ? HUGE_VAL : 0;
-        f->rate = speed / f->radius;
+        f->w0 = v3_dot(b->w, n);
+        f->rate = fabs(f->w0);
     }
+}
+
+void flight_start_face(flight *f, const body *b, flight_kind kind, double t0, const face_motion *m,
+                       vec3 n, double until, long id)
+{
+    flight_start(f, b, kind, t0, m->a, n, id);
+    double h = d_max(0, d_min(until - t0, m->t_stop));
+    f->t_stop = m->t_stop;
+    f->closed = m->mode != MODE_GENERAL;
+    if (kind == FLIGHT_SLIDE) {
+        /* (a box: not turning; a ball: about the axis, which its spin is along) */
+        f->axis = m->axis;
+        f->w0 = v3_dot(b->w, m->axis);
+        f->dw = m->dw;
+        f->rate = d_max(fabs(f->w0), fabs(f->w0 + f->dw * h));
+        return;
+    }
+    /* ROLL: along its velocity, or from rest along its acceleration */
+    f->v0 = v3_mad(b->v, n, -v3_dot(b->v, n));
+    f->u = v3_len2(f->v0) > 0 ? v3_norm(f->v0) : v3_len2(m->a) > 0 ? v3_norm(m->a) : v3(0, 0, 0);
+    f->radius = b->shape.r_out;
+    f->rate = d_max(v3_len(f->v0), v3_len(v3_mad(f->v0, m->a, h))) / f->radius;
 }
 
 void flight_at(const flight *f, const body *shape_of, double t, body *out)
@@ -114,6 +127,8 @@ void flight_at(const flight *f, const body *shape_of, double t, body *out)
         roll_at(f, shape_of, h, out);
         return;
     }
+    bool stopped = f->kind == FLIGHT_SLIDE && h >= f->t_stop;
+    if (stopped) h = f->t_stop;
     vec3 c = f->c0;
     out->v = v3(0, 0, 0);
     out->q = f->q0;
@@ -132,12 +147,15 @@ void flight_at(const flight *f, const body *shape_of, double t, body *out)
          * within Q_UNIT_TOL) */
         out->q = q_normalize(aligned(shape_of) ? qp : q_mul(qp, q_conj(shape_of->q_principal)));
         out->rot_given = false;
-    } else if (f->kind == FLIGHT_SLIDE && f->wn != 0) {
-        out->q = q_normalize(q_mul(q_axis_angle(f->n, f->wn * h), f->q0));
-        out->w = v3_scale(f->n, f->wn);
+    } else if (f->kind == FLIGHT_SLIDE && (f->w0 != 0 || f->dw != 0)) {
+        /* (a frictionless slide's rate is constant: w0 h, as it always was) */
+        double angle = f->dw != 0 ? f->w0 * h + 0.5 * f->dw * h * h : f->w0 * h;
+        out->q = q_normalize(q_mul(q_axis_angle(f->axis, angle), f->q0));
+        out->w = v3_scale(f->axis, f->dw != 0 ? f->w0 + f->dw * h : f->w0);
         out->L = m3_mulv(body_inertia_world(out), out->w);
         out->rot_given = false;
     }
+    if (stopped && f->dw == 0) out->v = v3(0, 0, 0); /* (a box: at its stop, still) */
     vec3 com = shape_of->shape.mass.com;
     out->x = c;
     if (com.x != 0 || com.y != 0 || com.z != 0) out->x = v3_sub(c, q_rotate(out->q, com));

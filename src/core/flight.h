@@ -6,13 +6,20 @@
  *    v0 t + a t^2 / 2, and the body turns freely with its angular momentum L kept,
  *    by the exact torque-free motion (spin.h); energy and L are kept to rounding.
  *  - FLIGHT_SLIDE: on a face of a still support with normal n, the centre flies
- *    its parabola under the force less its part along -n, and the body turns about
- *    n only, at a constant rate (what a frictionless face leaves free).
- *  - FLIGHT_ROLL: a ball rolling on a level face of a still support with normal
- *    n, slowed by its rolling resistance (friction_roll_decel): its centre goes
- *    straight along its velocity v0 (along the face), decelerating at |a| (a
- *    against v0) until it stops at t_stop, and stays there; it turns about n x
- *    v0 by the distance gone over its radius, at w = n x v / r (no slip).
+ *    a parabola along the face, and the body turns about a fixed axis by
+ *    w0 h + dw h^2 / 2.  On a frictionless face: under the force less its part
+ *    along -n, turning about n only at a constant rate (what such a face leaves
+ *    free).  With friction (friction_face): under the force and a constant
+ *    Coulomb force against its slip, a box not turning (or spinning in place
+ *    about n, slowed by friction's couple), a ball turning about n x slip,
+ *    spun up by friction's couple, until its slip reaches zero at t_stop (an
+ *    event: it then sticks, rolls or slides on anew), where it stays.
+ *  - FLIGHT_ROLL: a ball rolling on a face of a still support with normal n,
+ *    along a line u of the face (its velocity's, or its acceleration's from
+ *    rest), at the constant acceleration a along u that gravity and its rolling
+ *    resistance give (friction_face), until its speed reaches zero at t_stop
+ *    (an event), where it stays; it turns about n x u by the distance gone over
+ *    its radius, at w = n x v / r (no slip).
  *  - FLIGHT_STILL: the body stays where it is (resting, static).
  *  - FLIGHT_HELD: held by the hand (hold.h), the body is fixed to a point, the
  *    pivot, that moves at a constant velocity, and turns about it at a constant
@@ -40,11 +47,15 @@ typedef struct {
     vec3 L;           /* the angular momentum (world axes): constant in FREE */
     bool spins;       /* FREE: L is not zero, spin holds the motion */
     free_spin spin;
-    vec3 n;           /* SLIDE: the support's normal, towards the body, */
-    double wn;        /*   and the rate it turns about it */
+    vec3 n;           /* SLIDE, ROLL: the support's normal, towards the body; */
+    vec3 axis;        /* SLIDE: the axis it turns about, its rate then */
+    double w0, dw;    /*   and the rate's constant change */
     vec3 p0, r0, w;   /* HELD: the pivot then (v0 its velocity), the centre of
                        *   mass from it, and the constant spin */
-    double t_stop;    /* ROLL: how long after t0 it stops (HUGE_VAL: never), */
+    double t_stop;    /* SLIDE, ROLL: how long after t0 it stops (HUGE_VAL: never), */
+    bool closed;      /* SLIDE, ROLL with friction: t_stop ends its closed form
+                       *   (else its state asked for none, and t_stop is 0) */
+    vec3 u;           /* ROLL: the line it rolls along, */
     double radius;    /*   and its radius */
     double rate;      /* no point of the body turns faster than rate (rad/s) */
     long id;          /* a number no other flight of this world has */
@@ -52,11 +63,30 @@ typedef struct {
 
 /* Starts flight f of kind at time t0 from body b's state (x, q, v, L; b's w is
  * taken as consistent with L): a the acceleration of the centre of mass (FREE,
- * SLIDE; ROLL: its deceleration's size, |a|), n the support's normal (SLIDE: b
- * turns about n only, at w . n; ROLL: b's velocity along the face sets its
- * motion, and its turning follows).  HELD
- * takes the pivot, its velocity and w from b (hold_pivot, hold_v, w). */
+ * SLIDE, ROLL), n the support's normal (SLIDE: b turns about n only, at w . n,
+ * as on a frictionless face; with friction, and for ROLL, flight_start_face
+ * sets the rest).  HELD takes the pivot, its velocity and w from b
+ * (hold_pivot, hold_v, w). */
 void flight_start(flight *f, const body *b, flight_kind kind, double t0, vec3 a, vec3 n, long id);
+
+/* How a body moves on a still face with friction (friction_face writes it):
+ * its mode there (MODE_SLIDE, MODE_STICK, MODE_ROLL; MODE_GENERAL where no
+ * closed form holds), the acceleration of its centre of mass, the fixed axis
+ * it turns about and the constant rate of change of its spin about it
+ * (SLIDE), and how long until its slip (SLIDE) or speed (ROLL) reaches zero
+ * (HUGE_VAL: never). */
+typedef struct {
+    body_mode mode;
+    vec3 a, axis;
+    double dw, t_stop;
+} face_motion;
+
+/* Starts b's flight f of kind FLIGHT_SLIDE or FLIGHT_ROLL on a face of normal
+ * n with friction, as m says, at t0 (b's state as friction_face found it:
+ * along the face, a ball's spin about m->axis); rate covers it up to time
+ * until (the end of its step: it is started again there). */
+void flight_start_face(flight *f, const body *b, flight_kind kind, double t0, const face_motion *m,
+                       vec3 n, double until, long id);
 
 /* Writes the state at time t (t >= t0) into out, a copy of the flight's body:
  * x, q, v, L and w (and a held body's pivot). */

@@ -21,6 +21,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "contact.h"
 #include "tolerance.h"
 
 /* Stretches of a turning slip in one impact (each at most 1/64 of the impulse's
@@ -38,18 +39,98 @@ double friction_rolling(const body *a, const body *b)
     return sqrt(a->rolling_friction * b->rolling_friction);
 }
 
-double friction_roll_decel(const body *b, const body *s, vec3 a, vec3 n)
+bool friction_ball(const body *b)
 {
-    double mu = friction_mu(b, s), c = friction_rolling(b, s), gn = -v3_dot(a, n);
     vec3 com = b->shape.mass.com;
-    if (b->sp.kind != SHAPE_SPHERE || com.x != 0 || com.y != 0 || com.z != 0 || !(mu > 0) ||
-        !(b->mass > 0) || !(gn > 0))
-        return -1;
-    double size = 1 + b->shape.r_out;
-    if (v3_len(v3_mad(a, n, gn)) > SIM_ACCEL_ROUND * size) return -1; /* not level */
+    return b->sp.kind == SHAPE_SPHERE && com.x == 0 && com.y == 0 && com.z == 0;
+}
+
+/* A ball's motion on a face (friction_face) while it slips along unit sl, at
+ * |slip| (0: it starts to): its centre's acceleration, its spin's about n x sl,
+ * and when the slip stops growing smaller; MODE_GENERAL where the force along
+ * the face is not along sl, or the slip cannot start along sl. */
+static face_motion ball_slides(vec3 gt, double gn, double mu, double k, double r, vec3 n, vec3 sl,
+                               double slip, double round)
+{
+    face_motion m = {MODE_SLIDE, v3_mad(gt, sl, -mu * gn), v3_cross(n, sl), mu * gn / (k * r), HUGE_VAL};
+    double ds = v3_dot(gt, sl) - mu * gn * (1 + 1 / k);
+    if (v3_len(v3_cross(gt, sl)) > round || (slip == 0 && ds < 0)) m.mode = MODE_GENERAL;
+    else if (ds < 0) m.t_stop = slip / -ds;
+    return m;
+}
+
+face_motion friction_face(const body *b, const body *s, vec3 g, vec3 n, body_mode want, vec3 *lean)
+{
+    face_motion m = {MODE_GENERAL, v3(0, 0, 0), n, 0, HUGE_VAL};
+    double mu = friction_mu(b, s), c = friction_rolling(b, s), gn = -v3_dot(g, n);
+    *lean = v3(0, 0, 0);
+    if (!(mu > 0) || !(gn > 0) || !(b->mass > 0)) return m;
+    double size = 1 + b->shape.r_out, round = SIM_ACCEL_ROUND * size;
+    vec3 gt = v3_mad(g, n, gn);
+    if (v3_len(gt) <= round) gt = v3(0, 0, 0); /* level */
+    double gtl = v3_len(gt);
+    vec3 v = v3_mad(b->v, n, -v3_dot(b->v, n));
+    double vl = v3_len(v);
+    if (!friction_ball(b)) {
+        double wn = v3_dot(b->w, n);
+        if (wn != 0) {
+            /* spinning in place on a level face, on a face of its own that is
+             * centrally symmetric about its centre of mass's foot: the
+             * pressure is uniform, friction's force sums to zero and its
+             * couple to mu g_n m arm, against the spin, until it stops */
+            double arm = vl == 0 && gtl == 0 ? contact_face_arm(b, n) : -1;
+            double in = v3_dot(n, m3_mulv(body_inertia_world(b), n));
+            if (!(arm > 0) || !(in > 0)) return m;
+            m.mode = MODE_SLIDE;
+            m.dw = -copysign(mu * gn * b->mass * arm / in, wn);
+            m.t_stop = fabs(wn / m.dw);
+            return m;
+        }
+        /* a box: its velocity's line, or from rest its pull's */
+        if (vl == 0 && gtl <= mu * gn) {
+            m.mode = MODE_STICK;
+            *lean = v3_scale(gt, 1 / gn);
+            return m;
+        }
+        vec3 dir = vl > 0 ? v3_scale(v, 1 / vl) : v3_scale(gt, 1 / gtl);
+        if (v3_len(v3_cross(gt, dir)) > round) return m;
+        m.mode = MODE_SLIDE;
+        m.a = v3_mad(gt, dir, -mu * gn);
+        *lean = v3_scale(dir, mu);
+        double along = v3_dot(m.a, dir);
+        if (want == MODE_SLIDE && vl == 0 && gtl <= mu * gn) m.t_stop = 0;
+        else if (vl > 0 && along < 0) m.t_stop = vl / -along;
+        return m;
+    }
     double r = b->shape.r_out, k = b->I_princ.x / (b->mass * r * r);
-    if (!(k > 0) || c / (1 + k) > mu) return -1;
-    return c * gn / (1 + k);
+    if (!(k > 0)) return m;
+    vec3 slip = v3_sub(v, v3_scale(v3_cross(b->w, n), r));
+    double sl = v3_len(slip);
+    bool slips = sl > SIM_SPEED_ROUND * size;
+    if (slips && want != MODE_ROLL)
+        return ball_slides(gt, gn, mu, k, r, n, v3_scale(slip, 1 / sl), sl, round);
+    /* not slipping: it rolls along its velocity, or from rest along its pull,
+     * where friction holds it so (else it starts to slip, against the force
+     * friction would need), and sticks where rolling resistance holds it */
+    m.t_stop = 0; /* (the end at once of a mode asked for that does not hold) */
+    m.mode = want == MODE_FREE ? MODE_STICK : want;
+    if (vl == 0 && gtl <= c * gn && gtl <= mu * gn) return m;
+    vec3 dir = vl > 0 ? v3_scale(v, 1 / vl) : v3_scale(gt, 1 / gtl);
+    if (v3_len(v3_cross(gt, dir)) > round) {
+        m.mode = MODE_GENERAL;
+        return m;
+    }
+    vec3 a = v3_scale(v3_mad(gt, dir, -c * gn), 1 / (1 + k));
+    vec3 need = v3_sub(a, gt); /* friction's force over the mass */
+    if (v3_len(need) > mu * gn)
+        return want == MODE_ROLL ? m : ball_slides(gt, gn, mu, k, r, n, v3_norm(v3_neg(need)), 0, round);
+    if (want == MODE_SLIDE) return m;
+    m.mode = MODE_ROLL;
+    m.a = a;
+    m.t_stop = HUGE_VAL;
+    double along = v3_dot(a, dir);
+    if (vl > 0 && along < 0) m.t_stop = vl / -along;
+    return m;
 }
 
 bool friction_any(const impulse_row *rows, int n)

@@ -29,6 +29,7 @@
 #include <stdbool.h>
 
 #include "body.h"
+#include "flight.h"
 #include "impulse.h"
 
 /* Points one problem with friction may hold (3 rows each). */
@@ -103,15 +104,37 @@ int friction_compress(const impulse_row *rows, int m, body *const *bs, const boo
 void friction_restitute(const impulse_row *rows, int m, body *const *bs, const bool *mobile,
                         double *lambda, double ke_before, friction_work *fw, friction_flags *f);
 
-/* A ball that rolls on a level face of a static support s (normal n, towards
- * the ball), pressed onto it by the force's acceleration a: the deceleration of
- * its centre, c g_n / (1 + k) with c the pair's rolling resistance, g_n = -a.n
- * and I = k m r^2 (a solid ball: (5/7) c g), or -1 when b does not roll there
- * in closed form: it is not a ball (a sphere with its centre of mass at its
- * centre), the pair has no friction, the face is not level (a's part along it
- * above rounding), or friction cannot hold the couple (c / (1 + k) > mu: it
- * slides). */
-double friction_roll_decel(const body *b, const body *s, vec3 a, vec3 n);
+/* Closed-form lasting contact (design.md, "Dynamics"): how body b moves on a
+ * level or inclined face of a still support s (normal n, towards b) with
+ * friction, pressed onto it by the force's acceleration g, from its state (its
+ * velocity along the face; a ball's spin, about an axis along the face square
+ * to its velocity: what a caller makes of it first).  With mu and c the pair's
+ * coefficients, g_n = -g.n, g_t g's part along the face:
+ *  - a box (any body but a ball), flat on the face and not turning: at rest,
+ *    it sticks where |g_t| <= mu g_n, else it slides down along g_t; moving at
+ *    v, it slides at g_t - mu g_n v/|v| until v is zero (t_stop).  *lean is the
+ *    friction force over the normal force, -F_t / N: the centre of pressure is
+ *    h *lean from under the centre of mass (h its height over the face), which
+ *    must lie inside the region they touch on, or the box tips.  Spinning in
+ *    place about n on a level face, on a face of its own centrally symmetric
+ *    about its centre of mass's foot (contact_face_arm: the pressure is then
+ *    uniform), its spin slows at mu g_n m arm / I_n until it stops; spinning
+ *    and sliding at once has no closed form;
+ *  - a ball (I = k m r^2), slipping at s = v - r w x n: it slides at g_t - mu
+ *    g_n s/|s|, its spin growing by mu g_n / (k r) about n x s/|s|, until its
+ *    slip is zero (t_stop: ds/dt = g_t - mu g_n (1 + 1/k) s/|s|); not
+ *    slipping, it rolls at (g_t - c g_n v/|v|) / (1 + k) until its speed is
+ *    zero, where friction can hold that (|m a - m g_t| <= mu m g_n), and
+ *    slides otherwise; at rest it sticks where |g_t| <= c g_n and mu g_n;
+ * along a line: where g_t is not along the motion (beyond rounding), or the
+ * pair has no friction, there is no closed form (MODE_GENERAL).  want is the
+ * mode asked for (MODE_SLIDE or MODE_ROLL: that mode's motion, t_stop 0 where
+ * it ends at once), or MODE_FREE: the mode the state gives. */
+face_motion friction_face(const body *b, const body *s, vec3 g, vec3 n, body_mode want, vec3 *lean);
+
+/* True when b is a ball to friction_face: a sphere with its centre of mass at
+ * its centre. */
+bool friction_ball(const body *b);
 
 /* Rolling resistance at the m points with the impulses z (3m, as
  * friction_cone_solve's): at each point that does not slip (zt strictly inside

@@ -74,34 +74,6 @@ void rest_wake(world *w, int i)
  * SIM_CONTACT_TOL), and from on the face. */
 #define REST_LEVEL_DEPTH 1e-4
 
-/* Makes ball m roll on face `face` (normal n) of static s, at gap `gap` from it,
- * if it rolls there in closed form (friction_roll_decel) and nearly does
- * already: it does not leave the face, its slip and its spin about the normal
- * are below tol.  The slip ends as a sticking impulse at the contact would end
- * it (the angular momentum about the contact point kept), and the spin about
- * the normal with it: neither adds energy.  True when it did. */
-static bool try_roll(world *w, body *m, const body *s, int si, int face, vec3 n, double gap,
-                     double tol)
-{
-    if (friction_roll_decel(m, s, world_accel(w), n) < 0) return false;
-    double r = m->shape.r_out, k = m->I_princ.x / (m->mass * r * r);
-    vec3 v = v3_mad(m->v, n, -v3_dot(m->v, n));
-    vec3 slip = v3_sub(v, v3_scale(v3_cross(m->w, n), r)); /* v + w x (-r n) */
-    if (fabs(v3_dot(m->v, n)) > tol || v3_len(slip) > tol || fabs(v3_dot(m->w, n)) * r > tol)
-        return false;
-    /* the sticking impulse P = -m k slip / (1 + k) moves the centre by P / m */
-    v = v3_mad(v, slip, -k / (1 + k));
-    m->x = v3_mad(m->x, n, tol_hover(m, s) - gap);
-    m->mode = MODE_SLIDE;
-    m->slide_on = si;
-    m->slide_n = n;
-    m->slide_face = face;
-    m->v = v;
-    body_set_angular_vel(m, v3_scale(v3_cross(n, v), 1 / r));
-    m->rot_given = false;
-    return true;
-}
-
 /* A slide goes on across a seam, onto a face of another static object, when the
  * two faces are coplanar within this angle (rad) and this offset (m); a centre of
  * mass on the seam that is short of the new face by no more than REST_SEAM_GAP
@@ -137,6 +109,81 @@ static bool past_edge(edge_gap g)
     return !(entering && g.g0 >= -REST_SEAM_GAP);
 }
 
+/* Makes m, touching face `face` (normal n) of static s with friction (r the
+ * closest result of m against s, thick the contact's thickness), move on it in
+ * closed form (friction_face), if it nearly does already: its speed along n
+ * and its turning that the closed form has not (a box's, a ball's about n and
+ * across its line) are below tol, and are dropped (which adds no energy); on a
+ * slope, a drift across the slope's line below tol is dropped too.  A box is
+ * laid flat on the face, and must keep its centre of pressure inside the region
+ * they touch on, or it tips (the clusters then take it).  True when it did. */
+static bool try_face(world *w, body *m, const body *s, int si, int face, vec3 n,
+                     const closest_result *r, double thick, double tol)
+{
+    body t = *m;
+    double R = t.shape.r_out;
+    if (fabs(v3_dot(t.v, n)) > tol) return false;
+    vec3 g = world_accel(w), gt = v3_mad(g, n, -v3_dot(g, n));
+    vec3 v = v3_mad(t.v, n, -v3_dot(t.v, n));
+    if (v3_len(gt) > SIM_ACCEL_ROUND * (1 + R)) {
+        vec3 down = v3_norm(gt), across = v3_mad(v, down, -v3_dot(v, down));
+        if (v3_len(across) <= tol) v = v3_sub(v, across);
+    }
+    if (v3_len(v) <= SIM_SPEED_ROUND * (1 + R)) v = v3(0, 0, 0);
+    t.v = v;
+    double hover = tol_hover(m, s);
+    t.x = v3_mad(t.x, n, hover - r->distance);
+    int local;
+    const poly *hf = shape_face(&s->shape, face, &local);
+    vec3 on = v3_add(s->x, q_rotate(s->q, hf->v[hf->face_vert[hf->f[local].first]]));
+    if (!friction_ball(&t)) {
+        double wn = v3_dot(t.w, n);
+        if (v3_len(v3_mad(t.w, n, -wn)) * R > tol) return false;
+        body_set_angular_vel(&t, v3(0, 0, 0));
+        if (!contact_level(&t, s, face, REST_LEVEL_TILT, hover)) return false;
+        /* a spin about n is kept where it has a closed form (friction_face):
+         * at rest on a level face, on a face of its own that the support's
+         * holds wherever it turns (the circle its corners sweep inside) */
+        double arm = v3_len(v) == 0 && v3_len(gt) <= SIM_ACCEL_ROUND * (1 + R) ? contact_face_arm(&t, n) : -1;
+        bool inside = arm > 0;
+        const poly_face *F = &hf->f[local];
+        for (int k = 0; k < F->count && inside; k++)
+            inside = gap_to_edge(s, hf, F, k, n, body_com(&t), v, v3(0, 0, 0)).g0 > R;
+        if (inside && wn != 0) body_set_angular_vel(&t, v3_scale(n, wn));
+        else if (fabs(wn) * R > tol) return false;
+    } else {
+        if (fabs(v3_dot(t.w, n)) * R > tol) return false;
+        vec3 wp = v3_mad(t.w, n, -v3_dot(t.w, n));
+        if (v3_len(v) > 0) {
+            vec3 e = v3_norm(v3_cross(n, v)), off = v3_mad(wp, e, -v3_dot(wp, e));
+            if (v3_len(off) * R > tol) return false;
+            wp = v3_scale(e, v3_dot(wp, e));
+        }
+        body_set_angular_vel(&t, wp);
+    }
+    t.rot_given = false;
+    vec3 lean;
+    face_motion fm = friction_face(&t, s, g, n, MODE_FREE, &lean);
+    if (fm.mode == MODE_GENERAL) return false;
+    if (!friction_ball(&t)) {
+        /* the centre of pressure, h lean from under the centre of mass (h its
+         * height over the face) */
+        int f2;
+        double h = v3_dot(v3_sub(body_com(&t), on), n);
+        if (!contact_holds_at(&t, s, r, thick, v3_scale(lean, h), &f2)) return false;
+    }
+    if (fm.mode == MODE_STICK) {
+        t.v = v3(0, 0, 0);
+        body_set_angular_vel(&t, v3(0, 0, 0));
+    }
+    body_copy_state(m, &t);
+    m->mode = fm.mode;
+    m->slide_on = si;
+    m->slide_n = n;
+    m->slide_face = face;
+    return true;
+}
+
 /* Makes m slide on face `face` of static s, if that face holds it (see rest.h):
  * true when it did.  p the pair. */
 static bool try_slide(world *w, int mi, int si, pair *p)
@@ -144,10 +191,7 @@ static bool try_slide(world *w, int mi, int si, pair *p)
     body *m = w->bodies[mi];
     const body *s = w->bodies[si];
     double size = 1 + tol_size(m, s);
-    /* (with friction only a ball slides, rolling, on a level face: elsewhere the
-     * cluster's cones decide) */
     bool rough = friction_mu(m, s) > 0;
-    if (rough && m->sp.kind != SHAPE_SPHERE) return false;
     closest_result r = mi == p->a ? pair_query(w, p, m, s) : pair_query(w, p, s, m);
     if (r.status == CLOSEST_INVALID) return false;
     if (mi != p->a) closest_mirror(&r);
@@ -172,7 +216,7 @@ static bool try_slide(world *w, int mi, int si, pair *p)
     /* a lossy contact ends a rocking too slow to see as a rebound would (impulse's
      * SIM_BOUNCE_SPEED): it lands flat */
     double tol = e < 1 || rough ? SIM_BOUNCE_SPEED : 1e3 * tol_speed(m, s);
-    if (rough) return try_roll(w, m, s, si, face, n, r.distance, tol);
+    if (rough) return try_face(w, m, s, si, face, n, &r, thick, tol);
     vec3 w_off = v3_mad(m->w, n, -v3_dot(m->w, n));
     if (fabs(v3_dot(m->v, n)) > tol || v3_len(w_off) * m->shape.r_out > tol) {
         return false;
@@ -244,15 +288,16 @@ static double first_below(double g0, double g1, double g2)
 double rest_slide_exit(const world *w, int i, double t)
 {
     const body *m = w->bodies[i];
-    if (m->state != STATE_DYNAMIC || m->mode != MODE_SLIDE || m->slide_on < 0) return HUGE_VAL;
+    if (m->state != STATE_DYNAMIC || !body_mode_on_face(m->mode) || m->slide_on < 0) return HUGE_VAL;
+    const flight *f = &w->step.fl[i];
+    if (f->kind != FLIGHT_SLIDE && f->kind != FLIGHT_ROLL) return HUGE_VAL;
     const body *s = w->bodies[m->slide_on];
     int face;
     const poly *h = shape_face(&s->shape, m->slide_face, &face);
     if (!h) return HUGE_VAL;
-    const flight *f = &w->step.fl[i];
     double h0 = t - f->t0;
-    /* (a ball that rolls goes no further once it stops) */
-    double left = f->kind == FLIGHT_ROLL ? f->t_stop - h0 : HUGE_VAL;
+    /* (it goes no further once it stops: its stop is its event) */
+    double left = f->t_stop - h0, stop = f->t_stop < HUGE_VAL ? d_max(t, f->t0 + f->t_stop) : HUGE_VAL;
     if (left < 0) h0 = f->t_stop;
     vec3 c = v3_add(f->c0, v3_add(v3_scale(f->v0, h0), v3_scale(f->a, 0.5 * h0 * h0)));
     vec3 v = left > 0 ? v3_mad(f->v0, f->a, h0) : v3(0, 0, 0), n = m->slide_n;
@@ -264,7 +309,27 @@ double rest_slide_exit(const world *w, int i, double t)
         if (past_edge(g)) return t; /* over the edge already */
         best = d_min(best, first_below(d_max(g.g0, 0), g.g1, g.g2));
     }
-    return best == HUGE_VAL || best > left ? HUGE_VAL : t + best;
+    return best == HUGE_VAL || best > left ? stop : d_min(stop, t + best);
+}
+
+bool rest_face_stop(world *w, int i)
+{
+    body *m = w->bodies[i];
+    const flight *f = &w->step.fl[i];
+    if (!(f->t_stop < HUGE_VAL) || w->time < f->t0 + f->t_stop) return false;
+    /* where the closed form ended, exactly: a box, or a rolling ball, still; a
+     * sliding ball rolling */
+    if (f->closed) {
+        if (m->mode == MODE_SLIDE && friction_ball(m))
+            body_set_angular_vel(m, v3_scale(v3_cross(m->slide_n, m->v), 1 / m->shape.r_out));
+        else {
+            m->v = v3(0, 0, 0);
+            body_set_angular_vel(m, v3(0, 0, 0));
+        }
+        m->rot_given = false;
+    }
+    rest_classify(w, &i, 1);
+    return true;
 }
 
 bool rest_slide_on(world *w, int i)
@@ -407,11 +472,14 @@ static bool lossy(world *w, int i)
     return false;
 }
 
+/* (one stuck on a face keeps its mode and its support: they are its state) */
 static void come_to_rest(body *b)
 {
     b->state = STATE_RESTING;
-    b->mode = MODE_FREE;
-    b->slide_on = -1;
+    if (b->mode != MODE_STICK) {
+        b->mode = MODE_FREE;
+        b->slide_on = -1;
+    }
     b->v = b->L = b->w = v3(0, 0, 0);
 }
 
@@ -422,6 +490,15 @@ int rest_frame_end(world *w)
         body *b = w->bodies[i];
         if (b->state != STATE_DYNAMIC || b->mode == MODE_FREE) continue;
         double speed = speed_of(b);
+        if (b->mode == MODE_STICK) {
+            come_to_rest(b);
+            count++;
+            continue;
+        }
+        /* (with friction, a slide and a roll end at their own stops, exactly) */
+        if (b->mode == MODE_ROLL ||
+            (b->mode == MODE_SLIDE && b->slide_on >= 0 && friction_mu(b, w->bodies[b->slide_on]) > 0))
+            continue;
         if (b->mode == MODE_SLIDE) {
             double scale = 1 + b->shape.r_out;
             bool level = v3_len(world_body_accel(w, b)) <= SIM_ACCEL_ROUND * scale;

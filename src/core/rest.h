@@ -12,12 +12,19 @@
  *    normal only, until its centre of mass leaves the face (an exact event:
  *    rest_slide_exit), and on across a seam onto a coplanar face of another
  *    static object (rest_slide_on);
+ *  - with friction on such a face, where mechanics has a closed form
+ *    (friction_face): sliding along a line (a box flat on the face, a ball
+ *    slipping), stuck, or rolling (a ball), each until its slip or its speed
+ *    reaches zero, an exact event too (rest_face_stop), where it gets its mode
+ *    anew; a box whose centre of pressure friction moves out of the region it
+ *    stands on tips, and is general;
  *  - general: anything else (tipping over an edge, pivoting on it, stacks and
  *    piles that move): its cluster (the objects pressed together with it) moves
  *    with the contact forces found as it goes (cluster.h).
- * At the end of a frame an object that is held (sliding on a level face, or a
- * cluster whose supports balance the force) and slower than SIM_REST_SPEED rests
- * (STATE_RESTING): it stays put and costs nothing until something moves it.
+ * At the end of a frame an object that is held (sliding on a level frictionless
+ * face, or a cluster whose supports balance the force) and slower than
+ * SIM_REST_SPEED rests (STATE_RESTING), and so does one stuck (keeping its mode
+ * and support): it stays put and costs nothing until something moves it.
  */
 #ifndef VROC_REST_H
 #define VROC_REST_H
@@ -41,9 +48,19 @@ int rest_cluster(world *w, int seed, int *out);
  * pressed on a general one.  A resting object among them moves again. */
 void rest_classify(world *w, const int *list, int n);
 
-/* When sliding object i, flying its flight from time t, leaves the face it slides
- * on (its centre of mass passes the face's edge): an absolute time, or +inf. */
+/* When object i, sliding or rolling on a face with its flight from time t, leaves
+ * the face (its centre of mass passes the face's edge), or its closed-form
+ * motion ends (flight.h's t_stop), whichever is first: an absolute time, or
+ * +inf. */
 double rest_slide_exit(const world *w, int i, double t);
+
+/* When object i, on a face with friction, has its closed-form motion end (its
+ * slip or its speed reaching zero: flight.h's t_stop) at the world's time, its
+ * state there (synced to it): makes that end exact (a box or a rolling ball
+ * still, a sliding ball rolling) and gives it its mode anew (it sticks, rolls,
+ * slides on, or goes to a cluster).  False, and nothing changed, when its
+ * event is not that end. */
+bool rest_face_stop(world *w, int i);
 
 /* Sliding object i (its state at the instant its centre of mass leaves its face)
  * goes on sliding onto a face of another static object that is coplanar with its

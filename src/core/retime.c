@@ -49,7 +49,7 @@ void retime_object(world *w, int i, double t)
     step_start(w, i, t);
     const body *b = w->bodies[i];
     double ev = HUGE_VAL;
-    if (step_moves(w, i) && b->mode == MODE_SLIDE) ev = rest_slide_exit(w, i, t);
+    if (step_moves(w, i) && body_mode_on_face(b->mode)) ev = rest_slide_exit(w, i, t);
     retime_event(w, i, ev);
     retime_box(w, i, t, false);
     retime_pairs(w, i, t); /* (the pairs its box just made among them) */

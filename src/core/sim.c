@@ -167,7 +167,7 @@ static void internal_step(world *w, double t_end, bool fresh)
         const body *b = w->bodies[i];
         if (fresh || b->mode != MODE_FREE || b->held || w->step.fl[i].kind != FLIGHT_FREE)
             step_start(w, i, t);
-        double ev = b->mode == MODE_SLIDE ? rest_slide_exit(w, i, t) : HUGE_VAL;
+        double ev = body_mode_on_face(b->mode) ? rest_slide_exit(w, i, t) : HUGE_VAL;
         retime_event(w, i, ev);
         /* (retime_box's first test, here without a call) */
         if (w->step.t_end > w->broad.until[i]) retime_box(w, i, t, true);

@@ -148,11 +148,23 @@ void step_start(world *w, int i, double t)
         flight_start(f, b, FLIGHT_HELD, t, v3(0, 0, 0), v3(0, 0, 0), id);
         return;
     }
-    if (b->mode == MODE_SLIDE) {
-        /* (a ball on a level face with friction rolls) */
-        double d = b->slide_on >= 0 ? friction_roll_decel(b, w->bodies[b->slide_on], world_accel(w), b->slide_n) : -1;
-        if (d >= 0) flight_start(f, b, FLIGHT_ROLL, t, v3(d, 0, 0), b->slide_n, id);
-        else flight_start(f, b, FLIGHT_SLIDE, t, world_body_accel(w, b), b->slide_n, id);
+    if (body_mode_on_face(b->mode)) {
+        const body *s = b->slide_on >= 0 ? w->bodies[b->slide_on] : NULL;
+        if (b->mode == MODE_STICK) {
+            flight_start(f, b, FLIGHT_STILL, t, v3(0, 0, 0), v3(0, 0, 0), id);
+            return;
+        }
+        if (s && friction_mu(b, s) > 0) {
+            /* in closed form; where the state has none, its event comes at once
+             * (rest_face_stop: its mode is found anew) */
+            vec3 lean;
+            face_motion m = friction_face(b, s, world_accel(w), b->slide_n, b->mode, &lean);
+            if (m.mode == MODE_GENERAL) m = (face_motion){MODE_GENERAL, v3(0, 0, 0), b->slide_n, 0, 0};
+            flight_kind k = b->mode == MODE_ROLL ? FLIGHT_ROLL : FLIGHT_SLIDE;
+            flight_start_face(f, b, k, t, &m, b->slide_n, w->step.t_end, id);
+            return;
+        }
+        flight_start(f, b, FLIGHT_SLIDE, t, world_body_accel(w, b), b->slide_n, id);
         return;
     }
     flight_start(f, b, FLIGHT_FREE, t, world_accel(w), v3(0, 0, 0), id);

@@ -166,7 +166,7 @@ void world_delete(world *w, int i)
     for (int k = 0; k < w->n; k++) {
         body *b = w->bodies[k];
         b->slide_on = index_after(b->slide_on, i);
-        if (b->slide_on < 0 && b->mode == MODE_SLIDE) b->mode = MODE_FREE;
+        if (b->slide_on < 0 && body_mode_on_face(b->mode)) b->mode = MODE_FREE;
     }
     /* the pairs keep their objects (pairs_update finds the lasting contacts again
      * by them): those of i end */

@@ -108,7 +108,7 @@ const command command_table[] = {
     EXACT("angular_momentum", VAL_VECTOR, R_RANGE, -LIM_MOMENTUM_MAX, LIM_MOMENTUM_MAX, L),
     EXACT("slide_on", VAL_NAME, 0, 0, 0, slide_on),
     EXACT("slide_face", VAL_INTEGER, R_RANGE, 0, 1e6, slide_face),
-    {"mode", FORM_PROPERTY, VAL_CHOICE, 0, 0, 0, "free|slide|general", C_ALL, OWN_NONE,
+    {"mode", FORM_PROPERTY, VAL_CHOICE, 0, 0, 0, "free|slide|general|stick|roll", C_ALL, OWN_NONE,
      offsetof(body, mode), cmd_exact, NO_AFTER},
     EXACT("resting", VAL_ONOFF, 0, 0, 0, state),
     EXACT("touching", VAL_NAME, 0, 0, 0, moved),

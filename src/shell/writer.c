@@ -423,9 +423,14 @@ void body_write(FILE *out, const body *b, write_style st)
     fputc('\n', out);
 }
 
+/* Object b's mode as the language names it (the command table's `mode`). */
+static void write_mode(FILE *out, const body *b)
+{
+    write_choice(out, command_find("mode")->choices, body_is_static(b) ? MODE_FREE : (int)b->mode);
+}
+
 void property_write(FILE *out, const world *w, int i, const command *c, fmt_style s)
 {
-    static const char *modes[] = {"free", "slide", "general"};
     const body *b = w->bodies[i];
     const char *field = (const char *)b + c->off;
     const char *n = c->name;
@@ -441,17 +446,18 @@ void property_write(FILE *out, const world *w, int i, const command *c, fmt_styl
         if (!any) fprintf(out, "# %s touches nothing lasting\n", b->name);
         return;
     }
-    bool slide = b->mode == MODE_SLIDE && b->slide_on >= 0 && b->slide_on < w->n;
+    bool slide = body_mode_on_face(b->mode) && b->slide_on >= 0 && b->slide_on < w->n;
     if ((strcmp(n, "slide_on") == 0 || strcmp(n, "slide_face") == 0) && !slide) {
-        fprintf(out, "# %s slides on nothing (mode = %s)\n", b->name,
-                body_is_static(b) ? "free" : modes[b->mode]);
+        fprintf(out, "# %s is on no face (mode = ", b->name);
+        write_mode(out, b);
+        fprintf(out, ")\n");
         return;
     }
     fprintf(out, "%s.%s = ", b->name, n);
     if (strcmp(n, "slide_on") == 0) {
         fprintf(out, "%s", w->bodies[b->slide_on]->name);
     } else if (strcmp(n, "mode") == 0) {
-        fprintf(out, "%s", body_is_static(b) ? "free" : modes[b->mode]);
+        write_mode(out, b);
     } else if (strcmp(n, "resting") == 0) {
         fprintf(out, "%s", b->state == STATE_RESTING ? "on" : "off");
     } else {
@@ -497,12 +503,13 @@ static int contact_other(const world *w, long k, int i, int only_later)
 
 void contact_write(FILE *out, const world *w, int i, int only_later)
 {
-    static const char *modes[] = {"free", "slide", "general"};
     const body *b = w->bodies[i];
-    if (b->mode == MODE_SLIDE && b->slide_on >= 0 && b->slide_on < w->n)
+    if (body_mode_on_face(b->mode) && b->slide_on >= 0 && b->slide_on < w->n)
         fprintf(out, "slide_on = %s\nslide_face = %d\n", w->bodies[b->slide_on]->name,
                 b->slide_face);
-    fprintf(out, "mode = %s\n", body_is_static(b) ? "free" : modes[b->mode]);
+    fprintf(out, "mode = ");
+    write_mode(out, b);
+    fputc('\n', out);
     if (!body_is_static(b)) fprintf(out, "resting = %s\n", b->state == STATE_RESTING ? "on" : "off");
     /* in the order of the other objects, whatever the order the pairs were made
      * in: a world saved, read back and saved again gives the same file (in the
