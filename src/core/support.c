@@ -250,18 +250,9 @@ int support_vertex(const support_tree *t, const poly *p, vec3 d)
 {
     if (!t) return poly_climb(p, d, 0);
     const poly *top = t->lev[t->nlev - 1];
-    int j = 0;
-    double best = v3_dot(top->v[0], d);
-    for (int v = 1; v < top->nv; v++) {
-        double x = v3_dot(top->v[v], d);
-        if (x > best) {
-            best = x;
-            j = v;
-        }
-    }
     /* a top of more than TOP_VERTICES (the hierarchy stopped early) is climbed */
-    j = poly_climb(top, d, j);
-    best = v3_dot(top->v[j], d);
+    int j = poly_climb(top, d, poly_support(top, d));
+    double best = v3_dot(top->v[j], d);
     for (int k = t->nlev - 1; k >= 1; k--) {
         const step_down *dn = &t->dn[k - 1];
         if (!dn->node) {
