@@ -83,7 +83,11 @@ xvfb_start() {
         notok "Xvfb is installed (make deps installs it)"
         return 1
     fi
-    Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp 3>"$TMP/display" 2>"$TMP/xvfb.log" &
+    # -noreset: by default the server resets when its last client leaves, and
+    # refuses connections while it does; with a probe (xdotool) connecting and
+    # leaving every 0.1 s, a vroc that opened its window at such a moment
+    # found no server.
+    Xvfb -displayfd 3 -noreset -screen 0 1280x1024x24 -nolisten tcp 3>"$TMP/display" 2>"$TMP/xvfb.log" &
     XPID=$!
     i=0
     while [ ! -s "$TMP/display" ] && [ $i -lt 100 ]; do sleep 0.1; i=$((i + 1)); done
@@ -93,6 +97,13 @@ xvfb_start() {
     fi
     DISPLAY=":$(cat "$TMP/display")"
     export DISPLAY
+    # and it answers (a client gets through) before the test goes on
+    i=0
+    while ! xdpyinfo >/dev/null 2>&1 && [ $i -lt 100 ]; do sleep 0.1; i=$((i + 1)); done
+    if ! xdpyinfo >/dev/null 2>&1; then
+        notok "Xvfb answers on $DISPLAY" "$(cat "$TMP/xvfb.log")"
+        return 1
+    fi
 }
 xvfb_stop() { [ -n "$XPID" ] && kill "$XPID" 2>/dev/null; XPID=; }
 

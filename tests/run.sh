@@ -37,8 +37,10 @@ for build in build build-san; do
     for t in $build/tests/test_*; do
         [ -x "$t" ] || continue
         echo "# $t" >> "$log"
+        t0=$(date +%s)
         out=$("$t" 2>&1)
         status=$?
+        echo "# $t took $(($(date +%s) - t0)) s" >> "$log"
         printf '%s\n' "$out" | { count "$t"; echo "$pass $fail $skipped" > tests/out/.counts; printf '%s' "$failed" > tests/out/.failed; }
         read -r pass fail skipped < tests/out/.counts
         failed=$(cat tests/out/.failed)
@@ -52,8 +54,10 @@ $t: exited with status $status"
         [ "$s" = tests/run.sh ] && continue
         echo "# $s ($build)" >> "$log"
         bin=./vroc; [ "$build" = build-san ] && bin=build-san/vroc
+        t0=$(date +%s)
         out=$(VROC=$bin BUILD=$build sh "$s" 2>&1)
         status=$?
+        echo "# $s ($build) took $(($(date +%s) - t0)) s" >> "$log"
         printf '%s\n' "$out" | { count "$s ($build)"; echo "$pass $fail $skipped" > tests/out/.counts; printf '%s' "$failed" > tests/out/.failed; }
         read -r pass fail skipped < tests/out/.counts
         failed=$(cat tests/out/.failed)

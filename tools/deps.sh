@@ -56,6 +56,7 @@ need_cmd pgrep procps
 need_cmd Xvfb xvfb
 need_cmd xdotool xdotool
 need_cmd xwd x11-apps
+need_cmd xdpyinfo x11-utils
 if [ "${1:-}" = fuzz ]; then need_cmd afl-fuzz afl++; fi
 # make bench measures the mesh readers against assimp's `assimp info`
 if [ "${1:-}" = bench ]; then need_cmd assimp assimp-utils; fi

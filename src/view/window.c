@@ -78,8 +78,23 @@ int window_open(window **win, const char *title, int width, int height, char *er
      * memory images), not through an OpenGL renderer: the system's GL (Mesa's
      * GLX) and the OSMesa the views draw with clash in one process */
     sdl.SDL_SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
+    /* Only a display that shows the window will do: left to itself, SDL falls
+     * back to its invisible "offscreen" driver when no X11 or Wayland server
+     * answers, and the window would open nowhere without a word.  So SDL tries
+     * the servers the environment names, and no other.  A driver the user names
+     * in SDL_VIDEODRIVER is still theirs. */
+    const char *named = getenv("SDL_VIDEODRIVER");
+    const char *x = getenv("DISPLAY"), *wl = getenv("WAYLAND_DISPLAY");
+    bool on_x = x && *x, on_wl = wl && *wl, ours = !named || !*named;
+    if (ours) sdl.SDL_SetHint(SDL_HINT_VIDEODRIVER, on_x && on_wl ? "x11,wayland" : on_x ? "x11" : "wayland");
     if (sdl.SDL_Init(SDL_INIT_VIDEO) != 0) {
-        snprintf(err, errlen, "cannot open a window on the display: %s", sdl.SDL_GetError());
+        if (ours)
+            snprintf(err, errlen, "cannot open a window: no %s server answers on %s%s%s",
+                     on_x && on_wl ? "X11 or Wayland" : on_x ? "X11" : "Wayland",
+                     on_x ? "DISPLAY=" : "WAYLAND_DISPLAY=", on_x ? x : wl,
+                     on_x && on_wl ? " or WAYLAND_DISPLAY" : "");
+        else
+            snprintf(err, errlen, "cannot open a window on the display: %s", sdl.SDL_GetError());
         sdl.SDL_Quit();
         return -1;
     }
