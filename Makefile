@@ -191,7 +191,7 @@ vroc: build/vroc
 
 # ---- tests ----
 check: deps
-	@$(MAKE) --no-print-directory check-build
+	@$(MAKE) --no-print-directory -j$$(nproc 2>/dev/null || echo 2) check-build
 	@sh tests/run.sh
 
 # The long sweeps, with the normal build only (tests/long/run.sh); about 15

@@ -33,14 +33,27 @@ $1: $line" ;;
 export CMOCKA_MESSAGE_OUTPUT=TAP
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:exitcode=99
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+# The unit tests of both builds first, as many at once as there are processors:
+# they are pure computation and share nothing (each output and status goes to
+# its own file under tests/out/unit), so this only saves time.  The scripts run
+# one at a time after them: the window's and the prompt's tests time what a
+# person does, and want the machine to themselves.
+units=tests/out/unit
+rm -rf "$units"
+mkdir -p "$units"
+for t in build/tests/test_* build-san/tests/test_*; do
+    [ -x "$t" ] && printf '%s\n' "$t"
+done | xargs -P "$(nproc 2>/dev/null || echo 2)" -I{} sh -c '
+    f=$0/$(printf "%s" "$1" | tr / _); t0=$(date +%s)
+    "$1" > "$f.out" 2>&1; echo $? > "$f.status"; echo $(($(date +%s) - t0)) > "$f.time"' "$units" {}
 for build in build build-san; do
     for t in $build/tests/test_*; do
         [ -x "$t" ] || continue
         echo "# $t" >> "$log"
-        t0=$(date +%s)
-        out=$("$t" 2>&1)
-        status=$?
-        echo "# $t took $(($(date +%s) - t0)) s" >> "$log"
+        f=$units/$(printf '%s' "$t" | tr / _)
+        out=$(cat "$f.out" 2>/dev/null)
+        status=$(cat "$f.status" 2>/dev/null || echo 127)
+        echo "# $t took $(cat "$f.time" 2>/dev/null) s (beside the other unit tests)" >> "$log"
         printf '%s\n' "$out" | { count "$t"; echo "$pass $fail $skipped" > tests/out/.counts; printf '%s' "$failed" > tests/out/.failed; }
         read -r pass fail skipped < tests/out/.counts
         failed=$(cat tests/out/.failed)
@@ -68,6 +81,7 @@ $s ($build): exited with status $status"
     done
 done
 rm -f tests/out/.counts tests/out/.failed
+rm -rf "$units"
 if [ -n "$failed" ]; then
     echo "failures (full log in $log):$failed"
 fi

@@ -451,9 +451,21 @@ static void failed_logs_are_turned_off(void **state)
  * its sequence as it was, so that random with that many adds them.  The objects'
  * sizes come from random_size, not from the box: a larger box, or smaller
  * objects, hold more. */
+/* The two tests below run hundreds of random objects for hundreds of frames:
+ * seconds here, minutes under valgrind, which tests/valgrind.sh runs this
+ * program in.  There (VROC_TEST_LIGHT set) they skip: the code they reach,
+ * random and run, is under valgrind in the lighter tests, and the sanitizer
+ * build runs them whole. */
+static void skip_when_light(void)
+{
+    const char *light = getenv("VROC_TEST_LIGHT");
+    if (light && *light) skip();
+}
+
 static void random_says_how_many_fit(void **state)
 {
     (void)state;
+    skip_when_light();
     long fit;
     assert_int_equal(run("restart\n"), CMD_OK);
     unsigned long long rng = g_sh.rng;
@@ -695,6 +707,7 @@ static void the_room_of_200(void)
 static void speed_limits_count_what_they_cut(void **state)
 {
     (void)state;
+    skip_when_light();
     assert_int_equal(run("restart"), CMD_OK);
     the_room_of_200();
     double e0 = kinetic_energy();
