@@ -45,6 +45,13 @@
 #define PLANAR_REL 1e-10
 #define PLANAR_ULPS 1000
 
+/* poly_hull_surface: the most vertex-face checks it makes before it leaves the
+ * hull to qhull (they grow with the square of the points), and the least fold at
+ * an edge, relative to the cloud's size, it accepts (far above roundoff, so that
+ * qhull would merge none of its faces) */
+#define POLY_SURFACE_CHECKS 2000000
+#define POLY_SURFACE_FOLD 1e-9
+
 /* ---- allocation ---- */
 
 int poly_climb(const poly *p, vec3 d, int j)
@@ -733,23 +740,11 @@ static double cloud_size(const vec3 *pts, int n, double *coord)
     return fmax(d.x, fmax(d.y, d.z));
 }
 
-poly *poly_hull_merge(const vec3 *pts, int n, double angle, char *err, size_t errlen)
+/* The checks and merging every hull p of points of this size (largest extent) and
+ * largest coordinate gets once built: solid, planar faces, nearly flat regions
+ * merged at angle.  Takes p; NULL with err. */
+static poly *hull_finish(poly *p, double size, double coord, double angle, char *err, size_t errlen)
 {
-    if (n < 4) {
-        errmsg_set(err, errlen, "convex hull needs at least 4 points (got %d)", n);
-        return NULL;
-    }
-    double coord, size = cloud_size(pts, n, &coord);
-    if (isnan(size)) {
-        errmsg_set(err, errlen, "convex hull: a point is not finite");
-        return NULL;
-    }
-    if (!(size > 0)) {
-        errmsg_set(err, errlen, "convex hull: all %d points coincide", n);
-        return NULL;
-    }
-    poly *p = hull_once(pts, n, err, errlen);
-    if (!p) return NULL;
     if (!(poly_mass(p).volume > 1e-12 * size * size * size)) {
         errmsg_set(err, errlen, "convex hull: the solid is too thin: its volume is under 1e-12 "
                 "of the cube around it");
@@ -778,6 +773,86 @@ poly *poly_hull_merge(const vec3 *pts, int n, double angle, char *err, size_t er
         return NULL;
     }
     return p;
+}
+
+/* The points' size (cloud_size), or -1 with err when they cannot make a hull. */
+static double hull_size(const vec3 *pts, int n, double *coord, char *err, size_t errlen)
+{
+    if (n < 4) {
+        errmsg_set(err, errlen, "convex hull needs at least 4 points (got %d)", n);
+        return -1;
+    }
+    double size = cloud_size(pts, n, coord);
+    if (isnan(size)) {
+        errmsg_set(err, errlen, "convex hull: a point is not finite");
+        return -1;
+    }
+    if (!(size > 0)) {
+        errmsg_set(err, errlen, "convex hull: all %d points coincide", n);
+        return -1;
+    }
+    return size;
+}
+
+poly *poly_hull_merge(const vec3 *pts, int n, double angle, char *err, size_t errlen)
+{
+    double coord, size = hull_size(pts, n, &coord, err, errlen);
+    if (size < 0) return NULL;
+    poly *p = hull_once(pts, n, err, errlen);
+    return p ? hull_finish(p, size, coord, angle, err, errlen) : NULL;
+}
+
+/* Whether p is the convex hull of its vertices with every edge a fold of more than
+ * margin (each neighbour's other vertices that far below a face's plane), so that
+ * no two faces would merge to roundoff: every vertex on or below every face's
+ * plane (within tol). */
+static bool surface_is_hull(const poly *p, double tol, double margin)
+{
+    for (int e = 0; e < p->ne; e++)
+        for (int s = 0; s < 2; s++) {
+            const poly_face *F = &p->f[p->e[e].f[s]], *G = &p->f[p->e[e].f[1 - s]];
+            for (int k = 0; k < G->count; k++) {
+                int v = p->face_vert[G->first + k];
+                if (v == p->e[e].v[0] || v == p->e[e].v[1]) continue;
+                if (!(v3_dot(F->n, p->v[v]) - F->d < -margin)) return false;
+            }
+        }
+    for (int f = 0; f < p->nf; f++) {
+        const poly_face *F = &p->f[f];
+        for (int k = 0; k < F->count; k++)
+            if (!(fabs(v3_dot(F->n, p->v[p->face_vert[F->first + k]]) - F->d) <= tol)) return false;
+        for (int v = 0; v < p->nv; v++)
+            if (!(v3_dot(F->n, p->v[v]) - F->d <= tol)) return false;
+    }
+    return true;
+}
+
+poly *poly_hull_surface(const vec3 *pts, int n, int nf, const int *count, const int *fvert,
+                        double angle, char *err, size_t errlen)
+{
+    double coord, size = hull_size(pts, n, &coord, err, errlen);
+    if (size < 0) return NULL;
+    int nfv = 0;
+    for (int f = 0; f < nf; f++) nfv += count[f];
+    vec3 *hint = malloc((size_t)(nf > 0 ? nf : 1) * sizeof *hint);
+    char why[200];
+    poly *p = NULL;
+    if (hint && (long long)n * nf <= POLY_SURFACE_CHECKS) {
+        /* each face's own ccw normal is its hint: assembling keeps its turn */
+        for (int f = 0, at = 0; f < nf; at += count[f++])
+            hint[f] = polygon_area2(pts, fvert + at, count[f], NULL);
+        p = poly_assemble(n, pts, nf, count, fvert, hint, why, sizeof why);
+    }
+    free(hint);
+    double tol = PLANAR_REL * size + PLANAR_ULPS * DBL_EPSILON * coord;
+    /* nearly flat regions are merged from qhull's hull as ever: which face seeds a
+     * region goes by area, ties and rounding by the faces' order, which differs */
+    if (!p || p->ne * 2 != nfv || !surface_is_hull(p, tol, POLY_SURFACE_FOLD * size) ||
+        (angle > 0 && has_flat_region(p, angle))) {
+        poly_free(p);
+        return poly_hull_merge(pts, n, angle, err, errlen);
+    }
+    return hull_finish(p, size, coord, angle, err, errlen);
 }
 
 poly *poly_hull(const vec3 *pts, int n, char *err, size_t errlen)

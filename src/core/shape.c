@@ -798,6 +798,68 @@ long shape_off_hull(const shape *s)
     return off;
 }
 
+/* The faces of the tessellation's hull, as cycles ccw seen from outside: the caps'
+ * triangles about the poles, and each quad between two rings whole when its four
+ * corners are coplanar to roundoff, else split along the diagonal that folds out
+ * (the one whose two triangles leave the other corner below).  Returns the count,
+ * or -1 where a quad is neither clearly flat nor clearly folded (qhull decides). */
+static int sq_hull_faces(const shape_params *p, const vec3 *pos, int *count, int *fvert)
+{
+    int u = p->ures, top = p->vres - 1, north = u * top + 1, nf = 0, at = 0;
+    double size = fmax(p->a1, fmax(p->a2, p->a3));
+#define RING(j, i) (1 + ((j) - 1) * u + ((i) % u))
+#define FACE3(x, y, z) (fvert[at++] = (x), fvert[at++] = (y), fvert[at++] = (z), count[nf++] = 3)
+    for (int i = 0; i < u; i++) {
+        FACE3(0, RING(1, i + 1), RING(1, i));
+        FACE3(RING(top, i), RING(top, i + 1), north);
+    }
+    for (int j = 1; j < top; j++)
+        for (int i = 0; i < u; i++) {
+            int a = RING(j, i), b = RING(j, i + 1), c = RING(j + 1, i + 1), d = RING(j + 1, i);
+            vec3 n = v3_cross(v3_sub(pos[b], pos[a]), v3_sub(pos[c], pos[a]));
+            double ln = v3_len(n);
+            if (!(ln > 0)) return -1;
+            double h = v3_dot(n, v3_sub(pos[d], pos[a])) / ln; /* d above abc */
+            if (fabs(h) <= 1e-14 * size) {
+                fvert[at++] = a;
+                fvert[at++] = b;
+                fvert[at++] = c;
+                fvert[at++] = d;
+                count[nf++] = 4;
+            } else if (h < -1e-9 * size) {
+                FACE3(a, b, c);
+                FACE3(a, c, d);
+            } else if (h > 1e-9 * size) {
+                FACE3(a, b, d);
+                FACE3(b, c, d);
+            } else {
+                return -1;
+            }
+        }
+#undef FACE3
+#undef RING
+    return nf;
+}
+
+/* The superquadric's hull: from its tessellation where that is checked to be its
+ * hull (poly_hull_surface: exponents up to 2 put every point on it), else by qhull;
+ * the same solid either way. */
+static poly *sq_hull(const shape_params *p, const mesh *m, char *err, size_t errlen)
+{
+    int *count = malloc((size_t)m->nt * sizeof *count), *fvert = malloc((size_t)m->nt * 3 * sizeof *fvert);
+    poly *h = NULL;
+    if (!count || !fvert) {
+        errmsg_set(err, errlen, "out of memory");
+    } else {
+        int nf = sq_hull_faces(p, m->pos, count, fvert);
+        h = nf > 0 ? poly_hull_surface(m->pos, m->nv, nf, count, fvert, POLY_FLAT_ANGLE, err, errlen)
+                   : poly_hull(m->pos, m->nv, err, errlen);
+    }
+    free(count);
+    free(fvert);
+    return h;
+}
+
 static int build_superquadric(shape *s, char *err, size_t errlen)
 {
     if (sq_count(&s->p) < 0) {
@@ -811,7 +873,7 @@ static int build_superquadric(shape *s, char *err, size_t errlen)
         return -1;
     }
     char why[200];
-    s->hull = poly_hull(s->draw.pos, s->draw.nv, why, sizeof why);
+    s->hull = sq_hull(&s->p, &s->draw, why, sizeof why);
     if (!s->hull && strstr(why, "out of memory")) { /* not the shape's fault */
         errmsg_set(err, errlen, "superquadric: out of memory");
         return -1;
