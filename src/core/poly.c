@@ -740,12 +740,28 @@ static double cloud_size(const vec3 *pts, int n, double *coord)
     return fmax(d.x, fmax(d.y, d.z));
 }
 
+/* poly_mass(p).volume, the same sum to the bit, without the moments. */
+static double poly_volume(const poly *p)
+{
+    vec3 r = vertex_mean(p);
+    double vol = 0;
+    for (int f = 0; f < p->nf; f++) {
+        const int *fv = p->face_vert + p->f[f].first;
+        vec3 a = v3_sub(p->v[fv[0]], r);
+        for (int k = 1; k + 1 < p->f[f].count; k++) {
+            vec3 b = v3_sub(p->v[fv[k]], r), c = v3_sub(p->v[fv[k + 1]], r);
+            vol += v3_dot(a, v3_cross(b, c)) / 6.0;
+        }
+    }
+    return vol;
+}
+
 /* The checks and merging every hull p of points of this size (largest extent) and
  * largest coordinate gets once built: solid, planar faces, nearly flat regions
  * merged at angle.  Takes p; NULL with err. */
 static poly *hull_finish(poly *p, double size, double coord, double angle, char *err, size_t errlen)
 {
-    if (!(poly_mass(p).volume > 1e-12 * size * size * size)) {
+    if (!(poly_volume(p) > 1e-12 * size * size * size)) {
         errmsg_set(err, errlen, "convex hull: the solid is too thin: its volume is under 1e-12 "
                 "of the cube around it");
         poly_free(p);
