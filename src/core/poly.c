@@ -549,58 +549,118 @@ static vec3 vertex_mean(const poly *p)
     return v3_scale(c, 1.0 / p->nv);
 }
 
-static vec3 face_area2(const poly *p, int f)
+/* ---- faces as their geometry gives them, whatever their numbering ----
+ *
+ * Merging must make the same solid of the same hull however its vertices and
+ * faces are numbered (qhull's order, or a tessellation's: poly_hull_surface), to
+ * the bit: so each face's area vector is summed from its least vertex
+ * (lexicographically) on, regions are seeded in an order of the faces that their
+ * areas and coordinates alone decide, and sums over faces and vertices run in
+ * such orders. */
+
+static int cmp_vec3(const vec3 *a, const vec3 *b)
 {
-    return polygon_area2(p->v, p->face_vert + p->f[f].first, p->f[f].count, NULL);
+    if (a->x != b->x) return a->x < b->x ? -1 : 1;
+    if (a->y != b->y) return a->y < b->y ? -1 : 1;
+    if (a->z != b->z) return a->z < b->z ? -1 : 1;
+    return 0;
 }
 
-/* The vertex furthest along dir, climbing edges from vertex v (on a convex
- * polyhedron a vertex no neighbour of which is further is furthest). */
-static int climb(const poly *p, int v, vec3 dir)
+/* Where face f's cycle starts when read from its least vertex. */
+static int face_start(const poly *p, int f)
 {
-    for (;;) {
-        int best = v;
-        for (int j = p->vert_first[v]; j < p->vert_first[v + 1]; j++) {
-            const poly_edge *e = &p->e[p->vert_edge[j]];
-            int w = e->v[0] == v ? e->v[1] : e->v[0];
-            if (v3_dot(p->v[w], dir) > v3_dot(p->v[best], dir)) best = w;
-        }
-        if (best == v) return v;
-        v = best;
+    const int *fv = p->face_vert + p->f[f].first;
+    int k0 = 0;
+    for (int k = 1; k < p->f[f].count; k++)
+        if (cmp_vec3(&p->v[fv[k]], &p->v[fv[k0]]) < 0) k0 = k;
+    return k0;
+}
+
+/* Face f's area vector (polygon_area2) read from its least vertex on. */
+static vec3 face_area2(const poly *p, int f)
+{
+    const int *fv = p->face_vert + p->f[f].first;
+    int n = p->f[f].count, k0 = face_start(p, f);
+    vec3 c = v3(0, 0, 0);
+    for (int k = 0; k < n; k++) c = v3_add(c, p->v[fv[(k0 + k) % n]]);
+    c = v3_scale(c, 1.0 / n);
+    vec3 a = v3(0, 0, 0);
+    for (int k = 0; k < n; k++) {
+        vec3 u = v3_sub(p->v[fv[(k0 + k) % n]], c), w = v3_sub(p->v[fv[(k0 + k + 1) % n]], c);
+        a = v3_add(a, v3_cross(u, w));
     }
+    return a;
 }
 
 typedef struct {
+    const poly *p;
     double area;
-    int face;
-} face_area;
+    int face, start;
+} face_key;
 
-/* Largest area first; ties by index, so that merging is deterministic. */
+/* Largest area first; ties by the faces' corners from their least vertex on
+ * (then fewer corners first), so that the order is the geometry's. */
 static int by_area_desc(const void *a, const void *b)
 {
-    const face_area *x = a, *y = b;
+    const face_key *x = a, *y = b;
     if (x->area != y->area) return x->area < y->area ? 1 : -1;
-    return (x->face > y->face) - (x->face < y->face);
+    const poly *p = x->p;
+    int nx = p->f[x->face].count, ny = p->f[y->face].count;
+    const int *fx = p->face_vert + p->f[x->face].first, *fy = p->face_vert + p->f[y->face].first;
+    for (int k = 0; k < nx && k < ny; k++) {
+        int c = cmp_vec3(&p->v[fx[(x->start + k) % nx]], &p->v[fy[(y->start + k) % ny]]);
+        if (c != 0) return c;
+    }
+    return (nx > ny) - (nx < ny);
 }
 
-/* Groups p's faces into regions: from each face not yet grouped, largest first, the
- * faces connected to it whose normals lie within half_angle of its normal.  Writes
- * region[f] and returns the number of regions, or -1 when out of memory. */
-static int flat_regions(const poly *p, double half_angle, int *region)
+/* The faces in that order (into order[]), their area vectors into a2[]; 0, or -1
+ * when out of memory. */
+static int faces_in_order(const poly *p, vec3 *a2, int *order)
 {
-    face_area *order = malloc((size_t)p->nf * sizeof *order);
-    int *stack = malloc((size_t)p->nf * sizeof *stack);
-    int nreg = -1;
-    if (!order || !stack) goto done;
+    face_key *key = malloc((size_t)p->nf * sizeof *key);
+    if (!key) return -1;
     for (int f = 0; f < p->nf; f++) {
-        order[f] = (face_area){v3_len(face_area2(p, f)), f};
+        a2[f] = face_area2(p, f);
+        key[f] = (face_key){p, v3_len(a2[f]), f, face_start(p, f)};
+    }
+    qsort(key, (size_t)p->nf, sizeof *key, by_area_desc);
+    for (int i = 0; i < p->nf; i++) order[i] = key[i].face;
+    free(key);
+    return 0;
+}
+
+/* The mean of p's vertices, summed in the order of their coordinates. */
+static vec3 vertex_mean_sorted(const poly *p)
+{
+    vec3 *v = malloc((size_t)p->nv * sizeof *v);
+    if (!v) return vertex_mean(p);
+    memcpy(v, p->v, (size_t)p->nv * sizeof *v);
+    qsort(v, (size_t)p->nv, sizeof *v, (int (*)(const void *, const void *))cmp_vec3);
+    vec3 c = v3(0, 0, 0);
+    for (int i = 0; i < p->nv; i++) c = v3_add(c, v[i]);
+    free(v);
+    return v3_scale(c, 1.0 / p->nv);
+}
+
+/* Groups p's faces into regions: from each face not yet grouped, in order, the
+ * faces connected to it whose normals (a2, unit) lie within half_angle of its
+ * normal.  Writes region[f] and returns the number of regions, or -1 when out of
+ * memory. */
+static int flat_regions(const poly *p, const vec3 *a2, const int *order, double half_angle, int *region)
+{
+    int *stack = malloc((size_t)p->nf * sizeof *stack);
+    vec3 *n = malloc((size_t)p->nf * sizeof *n);
+    int nreg = -1;
+    if (!stack || !n) goto done;
+    for (int f = 0; f < p->nf; f++) {
+        n[f] = v3_norm(a2[f]);
         region[f] = -1;
     }
-    qsort(order, (size_t)p->nf, sizeof *order, by_area_desc);
     double cos_max = cos(half_angle);
     nreg = 0;
     for (int i = 0; i < p->nf; i++) {
-        int s = order[i].face, top = 0;
+        int s = order[i], top = 0;
         if (region[s] >= 0) continue;
         region[s] = nreg;
         stack[top++] = s;
@@ -610,7 +670,7 @@ static int flat_regions(const poly *p, double half_angle, int *region)
             for (int k = 0; k < F->count; k++) {
                 const poly_edge *e = &p->e[p->face_edge[F->first + k]];
                 int g = e->f[0] == f ? e->f[1] : e->f[0];
-                if (region[g] < 0 && v3_dot(p->f[g].n, p->f[s].n) >= cos_max) {
+                if (region[g] < 0 && v3_dot(n[g], n[s]) >= cos_max) {
                     region[g] = nreg;
                     stack[top++] = g;
                 }
@@ -619,23 +679,23 @@ static int flat_regions(const poly *p, double half_angle, int *region)
         nreg++;
     }
 done:
-    free(order);
     free(stack);
+    free(n);
     return nreg;
 }
 
-/* The plane of each region: the area-weighted normal, moved out to touch p (so that
- * it supports every point p contains).  A region of one face keeps that face's
- * normal. */
-static void region_planes(const poly *p, const int *region, int nreg, vec3 *n, double *d)
+/* The plane of each region: the area-weighted normal (summed in the faces'
+ * order), moved out to touch p (so that it supports every point p contains).  A
+ * region of one face keeps that face's normal. */
+static void region_planes(const poly *p, const vec3 *a2, const int *order, const int *region, int nreg,
+                          vec3 *n, double *d)
 {
     for (int r = 0; r < nreg; r++) n[r] = v3(0, 0, 0);
-    for (int f = 0; f < p->nf; f++) n[region[f]] = v3_add(n[region[f]], face_area2(p, f));
-    for (int r = 0; r < nreg; r++) n[r] = v3_norm(n[r]);
-    for (int r = 0; r < nreg; r++) d[r] = -INFINITY;
-    for (int f = 0; f < p->nf; f++) {
-        int r = region[f];
-        if (d[r] == -INFINITY) d[r] = v3_dot(n[r], p->v[climb(p, p->face_vert[p->f[f].first], n[r])]);
+    for (int i = 0; i < p->nf; i++) n[region[order[i]]] = v3_add(n[region[order[i]]], a2[order[i]]);
+    for (int r = 0; r < nreg; r++) {
+        n[r] = v3_norm(n[r]);
+        d[r] = -INFINITY;
+        for (int v = 0; v < p->nv; v++) d[r] = fmax(d[r], v3_dot(n[r], p->v[v]));
     }
 }
 
@@ -693,8 +753,11 @@ static int halfspace_vertices(const vec3 *n, const double *d, int m, vec3 c, vec
  * NULL with err.  p itself is left alone. */
 static poly *merge_flat(const poly *p, double angle, char *err, size_t errlen)
 {
-    int *region = malloc((size_t)p->nf * sizeof *region);
-    int nreg = region ? flat_regions(p, 0.5 * angle, region) : -1;
+    int *region = malloc((size_t)p->nf * sizeof *region), *order = malloc((size_t)p->nf * sizeof *order);
+    vec3 *a2 = malloc((size_t)p->nf * sizeof *a2);
+    int nreg = region && order && a2 && faces_in_order(p, a2, order) == 0
+                   ? flat_regions(p, a2, order, 0.5 * angle, region)
+                   : -1;
     vec3 *n = nreg > 0 ? malloc((size_t)nreg * sizeof *n) : NULL;
     double *d = nreg > 0 ? malloc((size_t)nreg * sizeof *d) : NULL;
     vec3 *verts = NULL;
@@ -702,24 +765,29 @@ static poly *merge_flat(const poly *p, double angle, char *err, size_t errlen)
     if (!n || !d) {
         errmsg_set(err, errlen, "out of memory");
     } else {
-        region_planes(p, region, nreg, n, d);
-        int nv = halfspace_vertices(n, d, nreg, vertex_mean(p), &verts, err, errlen);
+        region_planes(p, a2, order, region, nreg, n, d);
+        int nv = halfspace_vertices(n, d, nreg, vertex_mean_sorted(p), &verts, err, errlen);
         if (nv >= 4) q = hull_once(verts, nv, err, errlen);
         else if (nv >= 0) errmsg_set(err, errlen, "convex hull: merging left %d vertices", nv);
     }
     free(region);
+    free(order);
+    free(a2);
     free(n);
     free(d);
     free(verts);
     return q;
 }
 
-/* Whether some faces of p would merge at this angle. */
+/* Whether some faces of p would merge at this angle (their normals as
+ * flat_regions finds them). */
 static bool has_flat_region(const poly *p, double angle)
 {
     double cos_max = cos(0.5 * angle);
-    for (int e = 0; e < p->ne; e++)
-        if (v3_dot(p->f[p->e[e].f[0]].n, p->f[p->e[e].f[1]].n) >= cos_max) return true;
+    for (int e = 0; e < p->ne; e++) {
+        vec3 a = v3_norm(face_area2(p, p->e[e].f[0])), b = v3_norm(face_area2(p, p->e[e].f[1]));
+        if (v3_dot(a, b) >= cos_max) return true;
+    }
     return false;
 }
 
@@ -861,10 +929,7 @@ poly *poly_hull_surface(const vec3 *pts, int n, int nf, const int *count, const 
     }
     free(hint);
     double tol = PLANAR_REL * size + PLANAR_ULPS * DBL_EPSILON * coord;
-    /* nearly flat regions are merged from qhull's hull as ever: which face seeds a
-     * region goes by area, ties and rounding by the faces' order, which differs */
-    if (!p || p->ne * 2 != nfv || !surface_is_hull(p, tol, POLY_SURFACE_FOLD * size) ||
-        (angle > 0 && has_flat_region(p, angle))) {
+    if (!p || p->ne * 2 != nfv || !surface_is_hull(p, tol, POLY_SURFACE_FOLD * size)) {
         poly_free(p);
         return poly_hull_merge(pts, n, angle, err, errlen);
     }

@@ -77,11 +77,12 @@ poly *poly_hull_merge(const vec3 *pts, int n, double angle, char *err, size_t er
  * face cycles (count[f] vertex indices each, one after another in fvert, ccw seen
  * from outside) that close a surface over all n points.  Where that surface is
  * checked to be their exact hull (every face planar to roundoff, every point on
- * or below every face, every edge folded by far more than roundoff) and has no
- * nearly flat region to merge at angle, it is taken as is, with no qhull run;
- * else (and for more than a few thousand points, where the check would cost more
- * than qhull) it is poly_hull_merge's.  The same solid either way (the same
- * vertices and faces; its vertices in pts' order, not qhull's). */
+ * or below every face, every edge folded by far more than roundoff) it is taken as
+ * is, with no qhull run, and its nearly flat regions merged as poly_hull_merge
+ * merges them (which goes by the faces' geometry, not their numbering); else (and
+ * for more than a few thousand points, where the check would cost more than
+ * qhull) it is poly_hull_merge's.  The same solid either way, to the bit (where
+ * nothing merged, its vertices are in pts' order, not qhull's). */
 poly *poly_hull_surface(const vec3 *pts, int n, int nf, const int *count, const int *fvert,
                         double angle, char *err, size_t errlen);
 
