@@ -784,11 +784,16 @@ static poly *merge_flat(const poly *p, double angle, char *err, size_t errlen)
 static bool has_flat_region(const poly *p, double angle)
 {
     double cos_max = cos(0.5 * angle);
-    for (int e = 0; e < p->ne; e++) {
-        vec3 a = v3_norm(face_area2(p, p->e[e].f[0])), b = v3_norm(face_area2(p, p->e[e].f[1]));
-        if (v3_dot(a, b) >= cos_max) return true;
+    vec3 *n = malloc((size_t)p->nf * sizeof *n);
+    for (int f = 0; n && f < p->nf; f++) n[f] = v3_norm(face_area2(p, f));
+    bool flat = false;
+    for (int e = 0; e < p->ne && !flat; e++) {
+        int f = p->e[e].f[0], g = p->e[e].f[1];
+        vec3 a = n ? n[f] : v3_norm(face_area2(p, f)), b = n ? n[g] : v3_norm(face_area2(p, g));
+        flat = v3_dot(a, b) >= cos_max;
     }
-    return false;
+    free(n);
+    return flat;
 }
 
 /* ---- public construction ---- */
