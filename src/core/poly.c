@@ -566,6 +566,8 @@ static int cmp_vec3(const vec3 *a, const vec3 *b)
     return 0;
 }
 
+static int cmp_vec3_any(const void *a, const void *b) { return cmp_vec3(a, b); }
+
 /* Where face f's cycle starts when read from its least vertex. */
 static int face_start(const poly *p, int f)
 {
@@ -636,7 +638,7 @@ static vec3 vertex_mean_sorted(const poly *p)
     vec3 *v = malloc((size_t)p->nv * sizeof *v);
     if (!v) return vertex_mean(p);
     memcpy(v, p->v, (size_t)p->nv * sizeof *v);
-    qsort(v, (size_t)p->nv, sizeof *v, (int (*)(const void *, const void *))cmp_vec3);
+    qsort(v, (size_t)p->nv, sizeof *v, cmp_vec3_any);
     vec3 c = v3(0, 0, 0);
     for (int i = 0; i < p->nv; i++) c = v3_add(c, v[i]);
     free(v);
