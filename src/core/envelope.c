@@ -132,15 +132,17 @@ static void side_start(side_env *e, const env_side *s, double T, line *ln, piece
         e->cut = 0;
         return;
     }
-    if (s->hull->nv <= ENV_FLAT_VERTICES) {
+    if (s->hull->nv <= ENV_WALK_VERTICES || (s->hull->nv <= ENV_FLAT_VERTICES && !s->feat)) {
         e->k = lower_envelope(s, ln, s->hull->nv, T, p);
         e->reads = s->hull->nv;
         e->done = true;
         return;
     }
-    /* the lowest vertex now: the furthest along -dh0 (ties of height are walked
-     * off at time 0 to the one falling fastest) */
-    int v = closest_hull_support(s->feat, v3_neg(s->dh0));
+    /* the lowest vertex now: the furthest along -dh0, by a climb from a vertex
+     * near it or down the hierarchy (ties of height are walked off at time 0 to
+     * the one falling fastest) */
+    int v = s->near >= 0 && s->near < s->hull->nv ? poly_climb(s->hull, v3_neg(s->dh0), s->near)
+                                                 : closest_hull_support(s->feat, v3_neg(s->dh0));
     p[0] = (piece){0, vertex_line(s, s->hull->v[v]), v};
     e->k = 1;
     e->reads = 1;

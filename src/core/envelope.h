@@ -24,6 +24,10 @@
  * gives is where it stopped: early, never late). */
 #define ENV_FLAT_VERTICES 1024
 
+/* Hulls of more than this many vertices (and closest data) are walked: reading
+ * every vertex of a smaller one costs about as much as the walk's start. */
+#define ENV_WALK_VERTICES 32
+
 /* One object's points: vertex y (body frame) of hull is at height h0 + y.dh0
  * along the normal, and rises at h1 + y.dh1.  hull NULL: a single point of height
  * h0 and rate h1 (a ball's lowest).  feat: hull's closest data, to walk its
@@ -33,6 +37,8 @@ typedef struct {
     vec3 dh0, dh1;
     const poly *hull;
     const closest_hull *feat;
+    int near; /* a vertex near the lowest now, where a walk starts looking for it
+                 (a climb), or -1 (down the hull's hierarchy) */
 } env_side;
 
 /* The first time in [0, T) at which (lowest of a) + (lowest of b) + q t^2 can

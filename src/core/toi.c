@@ -22,6 +22,16 @@
  * both bounds are never late). */
 #define TOI_ENVELOPE_WHEN 0.05
 
+/* A vertex of feature f of hull h (its closest feature: near its lowest point
+ * along the normal), or -1. */
+static int feature_vertex(const poly *h, closest_feature f)
+{
+    if (f.kind == CLOSEST_VERTEX && f.index >= 0 && f.index < h->nv) return f.index;
+    if (f.kind == CLOSEST_EDGE && f.index >= 0 && f.index < h->ne) return h->e[f.index].v[0];
+    if (f.kind == CLOSEST_FACE && f.index >= 0 && f.index < h->nf) return h->face_vert[h->f[f.index].first];
+    return -1;
+}
+
 /* The points of o (moving as mo) along side * n, from world point p, as lines of
  * time (envelope.h): a ball's lowest point, or every vertex's (walked on a large
  * hull); and *quad, the most their second derivative can take off them over t^2
@@ -29,14 +39,14 @@
  * |dw/dt| R, |dw/dt| <= w^2 for a free body; for a held one, turning at a constant
  * w about its pivot, w^2 R with R its reach).  Returns 0,
  * or -1 when o has too many vertices to read and no closest data to walk. */
-static int side_of(const body *o, const sched_move *mo, vec3 n, double side, vec3 p, env_side *out,
-                   double *quad)
+static int side_of(const body *o, const sched_move *mo, vec3 n, double side, vec3 p, closest_feature near,
+                   env_side *out, double *quad)
 {
     vec3 sn = v3_scale(n, side);
     vec3 v = mo->moves ? mo->v : v3(0, 0, 0), c = body_com(o);
     *quad = mo->moves ? 0.5 * v3_dot(mo->a, sn) - mo->rate * mo->rate * mo->reach : 0;
     if (o->sp.kind == SHAPE_SPHERE) {
-        *out = (env_side){.hull = NULL};
+        *out = (env_side){.hull = NULL, .near = -1};
         if (mo->held) { /* its centre goes round the pivot */
             out->h0 = v3_dot(v3_sub(c, p), sn) - o->sp.radius;
             out->h1 = v3_dot(o->v, sn);
@@ -61,24 +71,27 @@ static int side_of(const body *o, const sched_move *mo, vec3 n, double side, vec
                       .dh0 = q_unrotate(o->q, sn),
                       .dh1 = q_unrotate(o->q, sw),
                       .hull = h,
-                      .feat = o->shape.feat};
+                      .feat = o->shape.feat,
+                      .near = feature_vertex(h, near)};
     return 0;
 }
 
 /* The time, never late, before which a (moving as ma) and b (mb) cannot close
- * their gap along n (the unit normal from b to a) down to target: the lowest of
+ * their gap along r's normal (from b to a) down to target: the lowest of
  * a's points along n less the highest of b's, each point's height bounded by its
  * own rate now and the most it can accelerate.  Sharper than the surfaces' bound
  * as a whole (|w| R) when the points that meet close slowly, as a box settling
  * onto an edge does; valid whatever n is, and whatever the rounding of the
- * closest points it came from.  HUGE_VAL when not within T, -1 when either has
- * too many vertices and no closest data. */
+ * closest points it came from (a walk starts from r's features).  HUGE_VAL when
+ * not within T, -1 when either has too many vertices and no closest data. */
 static double envelope_time(const body *a, const sched_move *ma, const body *b,
-                            const sched_move *mb, vec3 n, vec3 p, double target, double T)
+                            const sched_move *mb, const closest_result *r, double target, double T)
 {
     env_side sa, sb;
     double qa, qb;
-    if (side_of(a, ma, n, 1, p, &sa, &qa) < 0 || side_of(b, mb, n, -1, p, &sb, &qb) < 0) return -1;
+    if (side_of(a, ma, r->normal, 1, r->pb, r->fa, &sa, &qa) < 0 ||
+        side_of(b, mb, r->normal, -1, r->pb, r->fb, &sb, &qb) < 0)
+        return -1;
     return env_first_time(&sa, &sb, qa + qb, target, tol_margin(a, b), T, NULL);
 }
 
@@ -158,7 +171,7 @@ static double advance(const body *a, const sched_move *ma, const body *b, const 
     /* the points' bound costs a pass over their vertices: only where the surfaces'
      * would crawl (a twentieth of what is left to search, or less) */
     if (dt < TOI_ENVELOPE_WHEN * T)
-        dt = d_max(dt, envelope_time(a, ma, b, mb, r->normal, r->pb, target, T));
+        dt = d_max(dt, envelope_time(a, ma, b, mb, r, target, T));
     return d_min(dt, dt_near);
 }
 
