@@ -28,6 +28,7 @@
 
 #include "core/body.h"
 #include "core/closest.h"
+#include "core/envelope.h"
 #include "core/shape.h"
 #include "core/support.h"
 
@@ -1222,6 +1223,135 @@ static void support_hierarchy(void **state)
     free(pts);
 }
 
+/* ---- the time of impact's points' bound, walked on large hulls (envelope.h) ---- */
+
+/* A random side for hull h: its lowest vertex gap above the plane, its vertices
+ * rising at rates that differ by up to a few m/s across it (a turn). */
+static env_side rnd_side(const poly *h, const closest_hull *feat)
+{
+    /* (a walk starts down the hierarchy, or by a climb from a vertex anywhere) */
+    env_side s = {.dh0 = rnd_unit(), .dh1 = v3_scale(rnd_unit(), rnd_in(0, 3)), .hull = h, .feat = feat,
+                  .near = rnd() < 0.5 ? -1 : (int)(rnd() * h->nv)};
+    double lo = HUGE_VAL;
+    for (int i = 0; i < h->nv; i++) lo = fmin(lo, v3_dot(h->v[i], s.dh0));
+    s.h0 = -lo + rnd_in(0, 0.02);
+    s.h1 = rnd_in(-4, 1);
+    return s;
+}
+
+/* The first time in [0, T) at which c0 + c1 t + q t^2 <= 0, else HUGE_VAL. */
+static double first_root(double c0, double c1, double q, double T)
+{
+    if (!(c0 > 0)) return 0;
+    double r = HUGE_VAL;
+    if (q == 0) {
+        if (c1 < 0) r = -c0 / c1;
+    } else {
+        double disc = c1 * c1 - 4 * q * c0;
+        if (disc >= 0) {
+            double s = sqrt(disc);
+            double r1 = (-c1 - s) / (2 * q), r2 = (-c1 + s) / (2 * q);
+            if (r1 >= 0) r = r1;
+            if (r2 >= 0 && r2 < r) r = r2;
+        }
+    }
+    return r < T ? r : HUGE_VAL;
+}
+
+/* The oracle: the first time any vertex of a and any of b (each its own line)
+ * plus q t^2 come down to goal, pair by pair. */
+static double oracle_time(const env_side *a, const env_side *b, double q, double goal, double T)
+{
+    double best = HUGE_VAL;
+    for (int i = 0; i < a->hull->nv; i++) {
+        vec3 y = a->hull->v[i];
+        double a0 = a->h0 + v3_dot(y, a->dh0), a1 = a->h1 + v3_dot(y, a->dh1);
+        for (int j = 0; j < (b->hull ? b->hull->nv : 1); j++) {
+            double b0 = b->hull ? b->h0 + v3_dot(b->hull->v[j], b->dh0) : b->h0;
+            double b1 = b->hull ? b->h1 + v3_dot(b->hull->v[j], b->dh1) : b->h1;
+            best = fmin(best, first_root(a0 + b0 - goal, a1 + b1, q, T));
+        }
+    }
+    return best;
+}
+
+/* Hulls of 2,000 and 10,000 vertices (points over an ellipsoid) and a 48 x 48
+ * superquadric with flat merged faces under random motions, against a ball, a
+ * small hull and another large one: the walked bound is never later than the
+ * first contact of the vertices (each pair's own quadratic, solved), no earlier
+ * than it by more than rounding (as sharp as the vertex-by-vertex envelope, which
+ * is that contact), and reads a few dozen vertices, not all. */
+static void envelope_walk(void **state)
+{
+    (void)state;
+    shape_params sp = shape_defaults(SHAPE_SUPERQUADRIC);
+    sp.exp1 = 0.1;
+    sp.exp2 = 1;
+    sp.ures = sp.vres = 48;
+    tshape sq;
+    tshape_build(&sq, &sp);
+    int sizes[] = {2000, 10000, 0};
+    vec3 *small = malloc(64 * sizeof *small);
+    assert_non_null(small);
+    for (int i = 0; i < 64; i++) small[i] = v3_scale(rnd_unit(), 0.1);
+    char err[256];
+    poly *ph = poly_hull_merge(small, 64, 0, err, sizeof err);
+    if (!ph) fail_msg("poly_hull_merge: %s", err);
+    for (size_t z = 0; z < sizeof sizes / sizeof sizes[0]; z++) {
+        int np = sizes[z];
+        poly *h = sq.s.hull;
+        if (np > 0) {
+            vec3 *pts = malloc((size_t)np * sizeof *pts);
+            assert_non_null(pts);
+            const double golden = 3.14159265358979323846 * (3 - sqrt(5));
+            for (int i = 0; i < np; i++) {
+                double zz = 1 - (2 * i + 1.0) / np, r = sqrt(1 - zz * zz);
+                pts[i] = v3(0.4 * r * cos(golden * i), 0.25 * r * sin(golden * i), 0.15 * zz);
+            }
+            h = poly_hull_merge(pts, np, 0, err, sizeof err);
+            free(pts);
+            if (!h) fail_msg("poly_hull_merge: %s", err);
+        }
+        assert_true(h->nv > ENV_FLAT_VERTICES);
+        closest_hull *feat = closest_hull_new(h);
+        assert_non_null(feat);
+        long reads = 0, met = 0;
+        int trials = h->nv > 2500 ? 50 : 90;
+        for (int k = 0; k < trials; k++) {
+            env_side a = rnd_side(h, feat), b;
+            if (k % 3 == 0) b = (env_side){.h0 = rnd_in(0, 0.02), .h1 = rnd_in(-4, 1), .near = -1}; /* a ball */
+            else if (k % 3 == 1 || h->nv > 2500) b = rnd_side(ph, NULL);
+            else b = rnd_side(h, feat);
+            double q = k % 4 == 0 ? 0 : rnd_in(-3, 0.5), target = rnd_in(0, 0.01), margin = 1e-9;
+            double T = rnd_in(0.002, 0.02);
+            int n = 0;
+            double t = env_first_time(&a, &b, q, target, margin, T, &n);
+            reads += n;
+            double truth = oracle_time(&a, &b, q, target + margin, T);
+            met += truth < HUGE_VAL;
+            /* (within rounding: the oracle's roots and the bound's sums round apart) */
+            if (!(t <= truth + 1e-12 * (1 + truth)))
+                fail_msg("%d vertices, trial %d: the walked bound %.17g is after the contact at %.17g",
+                         h->nv, k, t, truth);
+            if (truth < HUGE_VAL && !(t >= truth - 1e-9 * (1 + truth)))
+                fail_msg("%d vertices, trial %d: the walked bound %.17g is well before the contact at %.17g",
+                         h->nv, k, t, truth);
+            if (truth == HUGE_VAL) assert_true(t == HUGE_VAL);
+        }
+        double per = (double)reads / trials;
+        print_message("envelope walked on %d vertices: %.1f vertices read a query (besides finding the "
+                      "lowest now); %ld of %d meet\n",
+                      h->nv, per, met, trials);
+        assert_true(met > trials / 4 && met < trials);
+        assert_true(per < 200);
+        closest_hull_free(feat);
+        if (h != sq.s.hull) poly_free(h);
+    }
+    poly_free(ph);
+    free(small);
+    tshape_free(&sq);
+}
+
 int main(void)
 {
     const char *filter = getenv("VROC_TEST_FILTER");
@@ -1235,6 +1365,7 @@ int main(void)
         cmocka_unit_test(symmetric_bodies),
         cmocka_unit_test(invalid_input),
         cmocka_unit_test(support_hierarchy),
+        cmocka_unit_test(envelope_walk),
     };
     return cmocka_run_group_tests(tests, pool_setup, pool_teardown);
 }

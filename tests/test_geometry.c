@@ -544,6 +544,80 @@ static void test_superquadric_range(void **state)
             }
 }
 
+static int cmp_vec3(const void *a, const void *b)
+{
+    const vec3 *x = a, *y = b;
+    if (x->x != y->x) return x->x < y->x ? -1 : 1;
+    if (x->y != y->y) return x->y < y->y ? -1 : 1;
+    return (x->z > y->z) - (x->z < y->z);
+}
+
+/* A superquadric's hull built from its tessellation (poly_hull_surface, no qhull
+ * run for the exact hull where it checks out) is the solid qhull makes of the
+ * same points (poly_hull): the same counts, the same vertices to the bit (nearly
+ * flat regions merged too: merging goes by the faces' geometry, not their
+ * numbering), every face's plane one of the other's to roundoff, the same volume;
+ * over exponents on both sides of 2 (beyond it, points inside: qhull's), radii
+ * and resolutions. */
+static void test_superquadric_hull_direct(void **state)
+{
+    (void)state;
+    const double exps[] = {0.3, 0.55, 1, 1.3, 1.8, 2, 2.5};
+    const int res[][2] = {{3, 3}, {4, 4}, {10, 10}, {7, 12}, {20, 20}};
+    uint64_t sd = 40;
+    long same_bits = 0, cases = 0;
+    for (size_t i = 0; i < sizeof exps / sizeof exps[0]; i++)
+        for (size_t j = 0; j < sizeof exps / sizeof exps[0]; j++)
+            for (size_t r = 0; r < sizeof res / sizeof res[0]; r++) {
+                shape_params p = shape_defaults(SHAPE_SUPERQUADRIC);
+                p.exp1 = exps[i], p.exp2 = exps[j];
+                p.a1 = 0.55 + 0.5 * rnd(&sd), p.a2 = 0.55 + 0.5 * rnd(&sd), p.a3 = 0.55 + 0.5 * rnd(&sd);
+                if (r == 0) p.a1 = p.a2 = p.a3 = 1; /* (symmetric: coplanar quads) */
+                p.ures = res[r][0], p.vres = res[r][1];
+                shape s;
+                char err[256] = "";
+                if (shape_build(&s, &p, err, sizeof err) != 0)
+                    fail_msg("e %g %g res %d %d: %s", p.exp1, p.exp2, p.ures, p.vres, err);
+                poly *q = poly_hull(s.draw.pos, s.draw.nv, err, sizeof err);
+                if (!q) fail_msg("poly_hull: %s", err);
+                const poly *h = s.hull;
+                double size = fmax(p.a1, fmax(p.a2, p.a3));
+                check_poly(h, 1e-9 * size);
+                if (h->nv != q->nv || h->ne != q->ne || h->nf != q->nf)
+                    fail_msg("e %g %g res %d %d: %d %d %d, qhull's %d %d %d", p.exp1, p.exp2, p.ures, p.vres, h->nv,
+                             h->ne, h->nf, q->nv, q->ne, q->nf);
+                vec3 *a = malloc((size_t)h->nv * sizeof *a), *b = malloc((size_t)q->nv * sizeof *b);
+                assert_non_null(a);
+                assert_non_null(b);
+                memcpy(a, h->v, (size_t)h->nv * sizeof *a);
+                memcpy(b, q->v, (size_t)q->nv * sizeof *b);
+                qsort(a, (size_t)h->nv, sizeof *a, cmp_vec3);
+                qsort(b, (size_t)q->nv, sizeof *b, cmp_vec3);
+                if (memcmp(a, b, (size_t)h->nv * sizeof *a) != 0)
+                    fail_msg("e %g %g res %d %d: the vertices are not qhull's", p.exp1, p.exp2, p.ures, p.vres);
+                for (int f = 0; f < h->nf; f++) {
+                    int match = 0;
+                    for (int g = 0; g < q->nf && !match; g++)
+                        match = v3_dot(h->f[f].n, q->f[g].n) > 1 - 1e-10 && fabs(h->f[f].d - q->f[g].d) < 1e-10 * size;
+                    if (!match)
+                        fail_msg("e %g %g res %d %d: face %d of the tessellation's hull is none of qhull's", p.exp1,
+                                 p.exp2, p.ures, p.vres, f);
+                }
+                double va = poly_mass(h).volume, vb = poly_mass(q).volume;
+                assert_true(fabs(va - vb) <= 1e-10 * vb);
+                /* (built from the tessellation: its vertices in the points' order) */
+                same_bits += h->nv == s.draw.nv && memcmp(h->v, s.draw.pos, (size_t)h->nv * sizeof *h->v) == 0;
+                cases++;
+                free(a);
+                free(b);
+                poly_free(q);
+                shape_free(&s);
+            }
+    print_message("%ld superquadric hulls as qhull's, %ld of them unmerged, in the tessellation's order\n", cases,
+                  same_bits);
+    assert_true(same_bits >= cases / 3);
+}
+
 /* The tessellation's layout: south pole, rings from south to north, north pole;
  * exact axis points where the angles hit them. */
 static void test_superquadric_points(void **state)
@@ -619,6 +693,7 @@ int main(void)
         cmocka_unit_test(test_superquadric_box),
         cmocka_unit_test(test_superquadric_range),
         cmocka_unit_test(test_superquadric_points),
+        cmocka_unit_test(test_superquadric_hull_direct),
         cmocka_unit_test(test_build_failure),
         cmocka_unit_test(test_sin_cos),
     };

@@ -45,6 +45,13 @@
 #define PLANAR_REL 1e-10
 #define PLANAR_ULPS 1000
 
+/* poly_hull_surface: the most vertex-face checks it makes before it leaves the
+ * hull to qhull (they grow with the square of the points), and the least fold at
+ * an edge, relative to the cloud's size, it accepts (far above roundoff, so that
+ * qhull would merge none of its faces) */
+#define POLY_SURFACE_CHECKS 2000000
+#define POLY_SURFACE_FOLD 1e-9
+
 /* ---- allocation ---- */
 
 int poly_climb(const poly *p, vec3 d, int j)
@@ -542,58 +549,120 @@ static vec3 vertex_mean(const poly *p)
     return v3_scale(c, 1.0 / p->nv);
 }
 
-static vec3 face_area2(const poly *p, int f)
+/* ---- faces as their geometry gives them, whatever their numbering ----
+ *
+ * Merging must make the same solid of the same hull however its vertices and
+ * faces are numbered (qhull's order, or a tessellation's: poly_hull_surface), to
+ * the bit: so each face's area vector is summed from its least vertex
+ * (lexicographically) on, regions are seeded in an order of the faces that their
+ * areas and coordinates alone decide, and sums over faces and vertices run in
+ * such orders. */
+
+static int cmp_vec3(const vec3 *a, const vec3 *b)
 {
-    return polygon_area2(p->v, p->face_vert + p->f[f].first, p->f[f].count, NULL);
+    if (a->x != b->x) return a->x < b->x ? -1 : 1;
+    if (a->y != b->y) return a->y < b->y ? -1 : 1;
+    if (a->z != b->z) return a->z < b->z ? -1 : 1;
+    return 0;
 }
 
-/* The vertex furthest along dir, climbing edges from vertex v (on a convex
- * polyhedron a vertex no neighbour of which is further is furthest). */
-static int climb(const poly *p, int v, vec3 dir)
+static int cmp_vec3_any(const void *a, const void *b) { return cmp_vec3(a, b); }
+
+/* Where face f's cycle starts when read from its least vertex. */
+static int face_start(const poly *p, int f)
 {
-    for (;;) {
-        int best = v;
-        for (int j = p->vert_first[v]; j < p->vert_first[v + 1]; j++) {
-            const poly_edge *e = &p->e[p->vert_edge[j]];
-            int w = e->v[0] == v ? e->v[1] : e->v[0];
-            if (v3_dot(p->v[w], dir) > v3_dot(p->v[best], dir)) best = w;
-        }
-        if (best == v) return v;
-        v = best;
+    const int *fv = p->face_vert + p->f[f].first;
+    int k0 = 0;
+    for (int k = 1; k < p->f[f].count; k++)
+        if (cmp_vec3(&p->v[fv[k]], &p->v[fv[k0]]) < 0) k0 = k;
+    return k0;
+}
+
+/* Face f's area vector (polygon_area2) read from its least vertex on. */
+static vec3 face_area2(const poly *p, int f)
+{
+    const int *fv = p->face_vert + p->f[f].first;
+    int n = p->f[f].count, k0 = face_start(p, f);
+    vec3 c = v3(0, 0, 0);
+    for (int k = 0; k < n; k++) c = v3_add(c, p->v[fv[(k0 + k) % n]]);
+    c = v3_scale(c, 1.0 / n);
+    vec3 a = v3(0, 0, 0);
+    for (int k = 0; k < n; k++) {
+        vec3 u = v3_sub(p->v[fv[(k0 + k) % n]], c), w = v3_sub(p->v[fv[(k0 + k + 1) % n]], c);
+        a = v3_add(a, v3_cross(u, w));
     }
+    return a;
 }
 
 typedef struct {
+    const poly *p;
     double area;
-    int face;
-} face_area;
+    int face, start;
+} face_key;
 
-/* Largest area first; ties by index, so that merging is deterministic. */
+/* Largest area first; ties by the faces' corners from their least vertex on
+ * (then fewer corners first), so that the order is the geometry's. */
 static int by_area_desc(const void *a, const void *b)
 {
-    const face_area *x = a, *y = b;
+    const face_key *x = a, *y = b;
     if (x->area != y->area) return x->area < y->area ? 1 : -1;
-    return (x->face > y->face) - (x->face < y->face);
+    const poly *p = x->p;
+    int nx = p->f[x->face].count, ny = p->f[y->face].count;
+    const int *fx = p->face_vert + p->f[x->face].first, *fy = p->face_vert + p->f[y->face].first;
+    for (int k = 0; k < nx && k < ny; k++) {
+        int c = cmp_vec3(&p->v[fx[(x->start + k) % nx]], &p->v[fy[(y->start + k) % ny]]);
+        if (c != 0) return c;
+    }
+    return (nx > ny) - (nx < ny);
 }
 
-/* Groups p's faces into regions: from each face not yet grouped, largest first, the
- * faces connected to it whose normals lie within half_angle of its normal.  Writes
- * region[f] and returns the number of regions, or -1 when out of memory. */
-static int flat_regions(const poly *p, double half_angle, int *region)
+/* The faces in that order (into order[]), their area vectors into a2[]; 0, or -1
+ * when out of memory. */
+static int faces_in_order(const poly *p, vec3 *a2, int *order)
 {
-    face_area *order = malloc((size_t)p->nf * sizeof *order);
-    int *stack = malloc((size_t)p->nf * sizeof *stack);
-    int nreg = -1;
-    if (!order || !stack) goto done;
+    face_key *key = malloc((size_t)p->nf * sizeof *key);
+    if (!key) return -1;
     for (int f = 0; f < p->nf; f++) {
-        order[f] = (face_area){v3_len(face_area2(p, f)), f};
+        a2[f] = face_area2(p, f);
+        key[f] = (face_key){p, v3_len(a2[f]), f, face_start(p, f)};
+    }
+    qsort(key, (size_t)p->nf, sizeof *key, by_area_desc);
+    for (int i = 0; i < p->nf; i++) order[i] = key[i].face;
+    free(key);
+    return 0;
+}
+
+/* The mean of p's vertices, summed in the order of their coordinates. */
+static vec3 vertex_mean_sorted(const poly *p)
+{
+    vec3 *v = malloc((size_t)p->nv * sizeof *v);
+    if (!v) return vertex_mean(p);
+    memcpy(v, p->v, (size_t)p->nv * sizeof *v);
+    qsort(v, (size_t)p->nv, sizeof *v, cmp_vec3_any);
+    vec3 c = v3(0, 0, 0);
+    for (int i = 0; i < p->nv; i++) c = v3_add(c, v[i]);
+    free(v);
+    return v3_scale(c, 1.0 / p->nv);
+}
+
+/* Groups p's faces into regions: from each face not yet grouped, in order, the
+ * faces connected to it whose normals (a2, unit) lie within half_angle of its
+ * normal.  Writes region[f] and returns the number of regions, or -1 when out of
+ * memory. */
+static int flat_regions(const poly *p, const vec3 *a2, const int *order, double half_angle, int *region)
+{
+    int *stack = malloc((size_t)p->nf * sizeof *stack);
+    vec3 *n = malloc((size_t)p->nf * sizeof *n);
+    int nreg = -1;
+    if (!stack || !n) goto done;
+    for (int f = 0; f < p->nf; f++) {
+        n[f] = v3_norm(a2[f]);
         region[f] = -1;
     }
-    qsort(order, (size_t)p->nf, sizeof *order, by_area_desc);
     double cos_max = cos(half_angle);
     nreg = 0;
     for (int i = 0; i < p->nf; i++) {
-        int s = order[i].face, top = 0;
+        int s = order[i], top = 0;
         if (region[s] >= 0) continue;
         region[s] = nreg;
         stack[top++] = s;
@@ -603,7 +672,7 @@ static int flat_regions(const poly *p, double half_angle, int *region)
             for (int k = 0; k < F->count; k++) {
                 const poly_edge *e = &p->e[p->face_edge[F->first + k]];
                 int g = e->f[0] == f ? e->f[1] : e->f[0];
-                if (region[g] < 0 && v3_dot(p->f[g].n, p->f[s].n) >= cos_max) {
+                if (region[g] < 0 && v3_dot(n[g], n[s]) >= cos_max) {
                     region[g] = nreg;
                     stack[top++] = g;
                 }
@@ -612,23 +681,23 @@ static int flat_regions(const poly *p, double half_angle, int *region)
         nreg++;
     }
 done:
-    free(order);
     free(stack);
+    free(n);
     return nreg;
 }
 
-/* The plane of each region: the area-weighted normal, moved out to touch p (so that
- * it supports every point p contains).  A region of one face keeps that face's
- * normal. */
-static void region_planes(const poly *p, const int *region, int nreg, vec3 *n, double *d)
+/* The plane of each region: the area-weighted normal (summed in the faces'
+ * order), moved out to touch p (so that it supports every point p contains).  A
+ * region of one face keeps that face's normal. */
+static void region_planes(const poly *p, const vec3 *a2, const int *order, const int *region, int nreg,
+                          vec3 *n, double *d)
 {
     for (int r = 0; r < nreg; r++) n[r] = v3(0, 0, 0);
-    for (int f = 0; f < p->nf; f++) n[region[f]] = v3_add(n[region[f]], face_area2(p, f));
-    for (int r = 0; r < nreg; r++) n[r] = v3_norm(n[r]);
-    for (int r = 0; r < nreg; r++) d[r] = -INFINITY;
-    for (int f = 0; f < p->nf; f++) {
-        int r = region[f];
-        if (d[r] == -INFINITY) d[r] = v3_dot(n[r], p->v[climb(p, p->face_vert[p->f[f].first], n[r])]);
+    for (int i = 0; i < p->nf; i++) n[region[order[i]]] = v3_add(n[region[order[i]]], a2[order[i]]);
+    for (int r = 0; r < nreg; r++) {
+        n[r] = v3_norm(n[r]);
+        d[r] = -INFINITY;
+        for (int v = 0; v < p->nv; v++) d[r] = fmax(d[r], v3_dot(n[r], p->v[v]));
     }
 }
 
@@ -686,8 +755,11 @@ static int halfspace_vertices(const vec3 *n, const double *d, int m, vec3 c, vec
  * NULL with err.  p itself is left alone. */
 static poly *merge_flat(const poly *p, double angle, char *err, size_t errlen)
 {
-    int *region = malloc((size_t)p->nf * sizeof *region);
-    int nreg = region ? flat_regions(p, 0.5 * angle, region) : -1;
+    int *region = malloc((size_t)p->nf * sizeof *region), *order = malloc((size_t)p->nf * sizeof *order);
+    vec3 *a2 = malloc((size_t)p->nf * sizeof *a2);
+    int nreg = region && order && a2 && faces_in_order(p, a2, order) == 0
+                   ? flat_regions(p, a2, order, 0.5 * angle, region)
+                   : -1;
     vec3 *n = nreg > 0 ? malloc((size_t)nreg * sizeof *n) : NULL;
     double *d = nreg > 0 ? malloc((size_t)nreg * sizeof *d) : NULL;
     vec3 *verts = NULL;
@@ -695,25 +767,35 @@ static poly *merge_flat(const poly *p, double angle, char *err, size_t errlen)
     if (!n || !d) {
         errmsg_set(err, errlen, "out of memory");
     } else {
-        region_planes(p, region, nreg, n, d);
-        int nv = halfspace_vertices(n, d, nreg, vertex_mean(p), &verts, err, errlen);
+        region_planes(p, a2, order, region, nreg, n, d);
+        int nv = halfspace_vertices(n, d, nreg, vertex_mean_sorted(p), &verts, err, errlen);
         if (nv >= 4) q = hull_once(verts, nv, err, errlen);
         else if (nv >= 0) errmsg_set(err, errlen, "convex hull: merging left %d vertices", nv);
     }
     free(region);
+    free(order);
+    free(a2);
     free(n);
     free(d);
     free(verts);
     return q;
 }
 
-/* Whether some faces of p would merge at this angle. */
+/* Whether some faces of p would merge at this angle (their normals as
+ * flat_regions finds them). */
 static bool has_flat_region(const poly *p, double angle)
 {
     double cos_max = cos(0.5 * angle);
-    for (int e = 0; e < p->ne; e++)
-        if (v3_dot(p->f[p->e[e].f[0]].n, p->f[p->e[e].f[1]].n) >= cos_max) return true;
-    return false;
+    vec3 *n = malloc((size_t)p->nf * sizeof *n);
+    for (int f = 0; n && f < p->nf; f++) n[f] = v3_norm(face_area2(p, f));
+    bool flat = false;
+    for (int e = 0; e < p->ne && !flat; e++) {
+        int f = p->e[e].f[0], g = p->e[e].f[1];
+        vec3 a = n ? n[f] : v3_norm(face_area2(p, f)), b = n ? n[g] : v3_norm(face_area2(p, g));
+        flat = v3_dot(a, b) >= cos_max;
+    }
+    free(n);
+    return flat;
 }
 
 /* ---- public construction ---- */
@@ -733,24 +815,28 @@ static double cloud_size(const vec3 *pts, int n, double *coord)
     return fmax(d.x, fmax(d.y, d.z));
 }
 
-poly *poly_hull_merge(const vec3 *pts, int n, double angle, char *err, size_t errlen)
+/* poly_mass(p).volume, the same sum to the bit, without the moments. */
+static double poly_volume(const poly *p)
 {
-    if (n < 4) {
-        errmsg_set(err, errlen, "convex hull needs at least 4 points (got %d)", n);
-        return NULL;
+    vec3 r = vertex_mean(p);
+    double vol = 0;
+    for (int f = 0; f < p->nf; f++) {
+        const int *fv = p->face_vert + p->f[f].first;
+        vec3 a = v3_sub(p->v[fv[0]], r);
+        for (int k = 1; k + 1 < p->f[f].count; k++) {
+            vec3 b = v3_sub(p->v[fv[k]], r), c = v3_sub(p->v[fv[k + 1]], r);
+            vol += v3_dot(a, v3_cross(b, c)) / 6.0;
+        }
     }
-    double coord, size = cloud_size(pts, n, &coord);
-    if (isnan(size)) {
-        errmsg_set(err, errlen, "convex hull: a point is not finite");
-        return NULL;
-    }
-    if (!(size > 0)) {
-        errmsg_set(err, errlen, "convex hull: all %d points coincide", n);
-        return NULL;
-    }
-    poly *p = hull_once(pts, n, err, errlen);
-    if (!p) return NULL;
-    if (!(poly_mass(p).volume > 1e-12 * size * size * size)) {
+    return vol;
+}
+
+/* The checks and merging every hull p of points of this size (largest extent) and
+ * largest coordinate gets once built: solid, planar faces, nearly flat regions
+ * merged at angle.  Takes p; NULL with err. */
+static poly *hull_finish(poly *p, double size, double coord, double angle, char *err, size_t errlen)
+{
+    if (!(poly_volume(p) > 1e-12 * size * size * size)) {
         errmsg_set(err, errlen, "convex hull: the solid is too thin: its volume is under 1e-12 "
                 "of the cube around it");
         poly_free(p);
@@ -778,6 +864,83 @@ poly *poly_hull_merge(const vec3 *pts, int n, double angle, char *err, size_t er
         return NULL;
     }
     return p;
+}
+
+/* The points' size (cloud_size), or -1 with err when they cannot make a hull. */
+static double hull_size(const vec3 *pts, int n, double *coord, char *err, size_t errlen)
+{
+    if (n < 4) {
+        errmsg_set(err, errlen, "convex hull needs at least 4 points (got %d)", n);
+        return -1;
+    }
+    double size = cloud_size(pts, n, coord);
+    if (isnan(size)) {
+        errmsg_set(err, errlen, "convex hull: a point is not finite");
+        return -1;
+    }
+    if (!(size > 0)) {
+        errmsg_set(err, errlen, "convex hull: all %d points coincide", n);
+        return -1;
+    }
+    return size;
+}
+
+poly *poly_hull_merge(const vec3 *pts, int n, double angle, char *err, size_t errlen)
+{
+    double coord, size = hull_size(pts, n, &coord, err, errlen);
+    if (size < 0) return NULL;
+    poly *p = hull_once(pts, n, err, errlen);
+    return p ? hull_finish(p, size, coord, angle, err, errlen) : NULL;
+}
+
+/* Whether p is the convex hull of its vertices with every edge a fold of more than
+ * margin (each neighbour's other vertices that far below a face's plane), so that
+ * no two faces would merge to roundoff: every vertex on or below every face's
+ * plane (within tol). */
+static bool surface_is_hull(const poly *p, double tol, double margin)
+{
+    for (int e = 0; e < p->ne; e++)
+        for (int s = 0; s < 2; s++) {
+            const poly_face *F = &p->f[p->e[e].f[s]], *G = &p->f[p->e[e].f[1 - s]];
+            for (int k = 0; k < G->count; k++) {
+                int v = p->face_vert[G->first + k];
+                if (v == p->e[e].v[0] || v == p->e[e].v[1]) continue;
+                if (!(v3_dot(F->n, p->v[v]) - F->d < -margin)) return false;
+            }
+        }
+    for (int f = 0; f < p->nf; f++) {
+        const poly_face *F = &p->f[f];
+        for (int k = 0; k < F->count; k++)
+            if (!(fabs(v3_dot(F->n, p->v[p->face_vert[F->first + k]]) - F->d) <= tol)) return false;
+        for (int v = 0; v < p->nv; v++)
+            if (!(v3_dot(F->n, p->v[v]) - F->d <= tol)) return false;
+    }
+    return true;
+}
+
+poly *poly_hull_surface(const vec3 *pts, int n, int nf, const int *count, const int *fvert,
+                        double angle, char *err, size_t errlen)
+{
+    double coord, size = hull_size(pts, n, &coord, err, errlen);
+    if (size < 0) return NULL;
+    int nfv = 0;
+    for (int f = 0; f < nf; f++) nfv += count[f];
+    vec3 *hint = malloc((size_t)(nf > 0 ? nf : 1) * sizeof *hint);
+    char why[200];
+    poly *p = NULL;
+    if (hint && (long long)n * nf <= POLY_SURFACE_CHECKS) {
+        /* each face's own ccw normal is its hint: assembling keeps its turn */
+        for (int f = 0, at = 0; f < nf; at += count[f++])
+            hint[f] = polygon_area2(pts, fvert + at, count[f], NULL);
+        p = poly_assemble(n, pts, nf, count, fvert, hint, why, sizeof why);
+    }
+    free(hint);
+    double tol = PLANAR_REL * size + PLANAR_ULPS * DBL_EPSILON * coord;
+    if (!p || p->ne * 2 != nfv || !surface_is_hull(p, tol, POLY_SURFACE_FOLD * size)) {
+        poly_free(p);
+        return poly_hull_merge(pts, n, angle, err, errlen);
+    }
+    return hull_finish(p, size, coord, angle, err, errlen);
 }
 
 poly *poly_hull(const vec3 *pts, int n, char *err, size_t errlen)

@@ -73,6 +73,19 @@ poly *poly_hull(const vec3 *pts, int n, char *err, size_t errlen);
  * poly_hull falls back to should merging fail. */
 poly *poly_hull_merge(const vec3 *pts, int n, double angle, char *err, size_t errlen);
 
+/* poly_hull_merge(pts, n, angle) for points whose hull the caller knows: the nf
+ * face cycles (count[f] vertex indices each, one after another in fvert, ccw seen
+ * from outside) that close a surface over all n points.  Where that surface is
+ * checked to be their exact hull (every face planar to roundoff, every point on
+ * or below every face, every edge folded by far more than roundoff) it is taken as
+ * is, with no qhull run, and its nearly flat regions merged as poly_hull_merge
+ * merges them (which goes by the faces' geometry, not their numbering); else (and
+ * for more than a few thousand points, where the check would cost more than
+ * qhull) it is poly_hull_merge's.  The same solid either way, to the bit (where
+ * nothing merged, its vertices are in pts' order, not qhull's). */
+poly *poly_hull_surface(const vec3 *pts, int n, int nf, const int *count, const int *fvert,
+                        double angle, char *err, size_t errlen);
+
 /* The box of half-extents h (each > 0) about the origin, built directly: the
  * same vertices, edges and faces, in the same order, as poly_hull gives for its
  * eight corners (tests/test_geometry.c checks it to the bit), at no qhull run.

@@ -150,16 +150,61 @@ static int sq_count(const shape_params *p)
     return n > INT_MAX / 8 ? -1 : (int)n;
 }
 
+/* The powers each point's coordinates take of its ring's and its column's sines
+ * and cosines, found once per ring and per column (a point multiplies them as
+ * sq_point and sq_normal would: the same numbers, to the bit). */
+typedef struct {
+    double ce, se, so, co;     /* sq_angle's */
+    double pce, pse, pco, pso; /* spow of those at the surface's exponents */
+    double nce, nse, nco, nso; /* ... and at the normal's, 2 - exponent */
+} sq_power;
+
+/* Ring j's (eta) powers in r, column i's (omega) in c. */
+static void sq_powers(const shape_params *p, int j, int i, sq_power *r, sq_power *c)
+{
+    sq_angle a = sq_at(p, j, i);
+    if (r) {
+        r->ce = a.ce, r->se = a.se;
+        r->pce = spow(a.ce, p->exp1), r->pse = spow(a.se, p->exp1);
+        r->nce = spow(a.ce, 2 - p->exp1), r->nse = spow(a.se, 2 - p->exp1);
+    }
+    if (c) {
+        c->co = a.co, c->so = a.so;
+        c->pco = spow(a.co, p->exp2), c->pso = spow(a.so, p->exp2);
+        c->nco = spow(a.co, 2 - p->exp2), c->nso = spow(a.so, 2 - p->exp2);
+    }
+}
+
+static vec3 sq_point_of(const shape_params *p, const sq_power *r, const sq_power *c)
+{
+    return v3(p->a1 * r->pce * c->pco, p->a2 * r->pce * c->pso, p->a3 * r->pse);
+}
+
 int superquadric_points(const shape_params *p, vec3 *out, int max)
 {
     int n = sq_count(p), k = 0;
     if (n < 0) return -1;
+    sq_power *col = out ? malloc((size_t)p->ures * sizeof *col) : NULL;
+    if (out && !col) { /* (out of memory: point by point) */
+        if (k < max) out[k] = sq_point(p, sq_at(p, 0, 0));
+        k++;
+        for (int j = 1; j < p->vres; j++)
+            for (int i = 0; i < p->ures; i++, k++)
+                if (k < max) out[k] = sq_point(p, sq_at(p, j, i));
+        if (k < max) out[k] = sq_point(p, sq_at(p, p->vres, 0));
+        return n;
+    }
     if (out && k < max) out[k] = sq_point(p, sq_at(p, 0, 0));
     k++;
-    for (int j = 1; j < p->vres; j++)
+    for (int i = 0; col && i < p->ures; i++) sq_powers(p, 1, i, NULL, &col[i]);
+    for (int j = 1; j < p->vres; j++) {
+        sq_power ring;
+        if (out) sq_powers(p, j, 0, &ring, NULL);
         for (int i = 0; i < p->ures; i++, k++)
-            if (out && k < max) out[k] = sq_point(p, sq_at(p, j, i));
+            if (out && k < max) out[k] = sq_point_of(p, &ring, &col[i]);
+    }
     if (out && k < max) out[k] = sq_point(p, sq_at(p, p->vres, 0));
+    free(col);
     return n;
 }
 
@@ -209,18 +254,27 @@ static void sq_normals(const shape_params *p, mesh *m)
         vec3 n = v3_cross(v3_sub(b, a), v3_sub(c, a));
         for (int k = 0; k < 3; k++) m->nrm[m->tri[t][k]] = v3_add(m->nrm[m->tri[t][k]], n);
     }
+    sq_power *col = malloc((size_t)p->ures * sizeof *col), ring = {0};
+    for (int i = 0; col && i < p->ures; i++) sq_powers(p, 1, i, NULL, &col[i]);
     for (int v = 0; v < m->nv; v++) {
         vec3 n = v3(NAN, NAN, NAN);
         if (v == 0 || v == m->nv - 1) {
             if (p->exp1 < 2) n = v3(0, 0, v == 0 ? -1 : 1);
         } else {
             int j = 1 + (v - 1) / p->ures, i = (v - 1) % p->ures;
-            n = sq_normal(p, sq_at(p, j, i));
+            if (!col) {
+                n = sq_normal(p, sq_at(p, j, i));
+            } else {
+                if (i == 0) sq_powers(p, j, 0, &ring, NULL);
+                /* (sq_normal's products, from the powers found once) */
+                n = v3(ring.nce * col[i].nco / p->a1, ring.nce * col[i].nso / p->a2, ring.nse / p->a3);
+            }
         }
         if (!v3_finite(n) || !(v3_len(n) > 0)) n = m->nrm[v];
         if (!v3_finite(n) || !(v3_len(n) > 0)) n = m->pos[v];
         m->nrm[v] = v3_norm(n);
     }
+    free(col);
 }
 
 /* The tessellation as a smooth triangle mesh. */
@@ -798,6 +852,68 @@ long shape_off_hull(const shape *s)
     return off;
 }
 
+/* The faces of the tessellation's hull, as cycles ccw seen from outside: the caps'
+ * triangles about the poles, and each quad between two rings whole when its four
+ * corners are coplanar to roundoff, else split along the diagonal that folds out
+ * (the one whose two triangles leave the other corner below).  Returns the count,
+ * or -1 where a quad is neither clearly flat nor clearly folded (qhull decides). */
+static int sq_hull_faces(const shape_params *p, const vec3 *pos, int *count, int *fvert)
+{
+    int u = p->ures, top = p->vres - 1, north = u * top + 1, nf = 0, at = 0;
+    double size = fmax(p->a1, fmax(p->a2, p->a3));
+#define RING(j, i) (1 + ((j) - 1) * u + ((i) % u))
+#define FACE3(x, y, z) (fvert[at++] = (x), fvert[at++] = (y), fvert[at++] = (z), count[nf++] = 3)
+    for (int i = 0; i < u; i++) {
+        FACE3(0, RING(1, i + 1), RING(1, i));
+        FACE3(RING(top, i), RING(top, i + 1), north);
+    }
+    for (int j = 1; j < top; j++)
+        for (int i = 0; i < u; i++) {
+            int a = RING(j, i), b = RING(j, i + 1), c = RING(j + 1, i + 1), d = RING(j + 1, i);
+            vec3 n = v3_cross(v3_sub(pos[b], pos[a]), v3_sub(pos[c], pos[a]));
+            double ln = v3_len(n);
+            if (!(ln > 0)) return -1;
+            double h = v3_dot(n, v3_sub(pos[d], pos[a])) / ln; /* d above abc */
+            if (fabs(h) <= 1e-14 * size) {
+                fvert[at++] = a;
+                fvert[at++] = b;
+                fvert[at++] = c;
+                fvert[at++] = d;
+                count[nf++] = 4;
+            } else if (h < -1e-9 * size) {
+                FACE3(a, b, c);
+                FACE3(a, c, d);
+            } else if (h > 1e-9 * size) {
+                FACE3(a, b, d);
+                FACE3(b, c, d);
+            } else {
+                return -1;
+            }
+        }
+#undef FACE3
+#undef RING
+    return nf;
+}
+
+/* The superquadric's hull: from its tessellation where that is checked to be its
+ * hull (poly_hull_surface: exponents up to 2 put every point on it), else by qhull;
+ * the same solid either way. */
+static poly *sq_hull(const shape_params *p, const mesh *m, char *err, size_t errlen)
+{
+    int *count = malloc((size_t)m->nt * sizeof *count), *fvert = malloc((size_t)m->nt * 3 * sizeof *fvert);
+    poly *h = NULL;
+    if (!count || !fvert) {
+        errmsg_set(err, errlen, "out of memory");
+    } else {
+        int nf = sq_hull_faces(p, m->pos, count, fvert);
+        h = nf > 0 ? poly_hull_surface(m->pos, m->nv, nf, count, fvert, POLY_FLAT_ANGLE, err, errlen)
+                   : poly_hull(m->pos, m->nv, err, errlen);
+    }
+    free(count);
+    free(fvert);
+    return h;
+}
+
 static int build_superquadric(shape *s, char *err, size_t errlen)
 {
     if (sq_count(&s->p) < 0) {
@@ -811,7 +927,7 @@ static int build_superquadric(shape *s, char *err, size_t errlen)
         return -1;
     }
     char why[200];
-    s->hull = poly_hull(s->draw.pos, s->draw.nv, why, sizeof why);
+    s->hull = sq_hull(&s->p, &s->draw, why, sizeof why);
     if (!s->hull && strstr(why, "out of memory")) { /* not the shape's fault */
         errmsg_set(err, errlen, "superquadric: out of memory");
         return -1;

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include "contact.h"
+#include "envelope.h"
 #include "flight.h"
 #include "schedule.h"
 #include "step.h"
@@ -16,136 +17,82 @@
  * run (the objects pass within the contact distance without meeting). */
 #define TOI_MAX_QUERIES 100000
 
-/* Objects of at most this many vertices are bounded vertex by vertex as well
- * (envelope_time). */
-#define TOI_ENVELOPE_VERTICES 1024
-
-/* ... and only when the surfaces' bound advances less than this fraction of the
- * time left to search (a speed-up alone: both bounds are never late). */
+/* The points' bound (envelope.h) is looked for only when the surfaces' bound
+ * advances less than this fraction of the time left to search (a speed-up alone:
+ * both bounds are never late). */
 #define TOI_ENVELOPE_WHEN 0.05
 
-/* A height along the normal that changes at a constant rate: h0 + h1 t. */
-typedef struct {
-    double h0, h1;
-} line;
+/* A vertex of feature f of hull h (its closest feature: near its lowest point
+ * along the normal), or -1. */
+static int feature_vertex(const poly *h, closest_feature f)
+{
+    if (f.kind == CLOSEST_VERTEX && f.index >= 0 && f.index < h->nv) return f.index;
+    if (f.kind == CLOSEST_EDGE && f.index >= 0 && f.index < h->ne) return h->e[f.index].v[0];
+    if (f.kind == CLOSEST_FACE && f.index >= 0 && f.index < h->nf) return h->face_vert[h->f[f.index].first];
+    return -1;
+}
 
-/* The lines of o's points (moving as mo) along side * n, from world point p:
- * a ball's lowest point, or every vertex's; and *quad, the most their second
- * derivative can take off them over t^2 (the centre's acceleration along side * n
- * exactly, less a turn's w^2 R + |dw/dt| R, |dw/dt| <= w^2 for a free body; for a
- * held one, turning at a constant w about its pivot, w^2 R with R its reach).
- * Returns the count, or 0 when o has too many vertices. */
-static int lines_of(const body *o, const sched_move *mo, vec3 n, double side, vec3 p, line *out,
-                    double *quad)
+/* The points of o (moving as mo) along side * n, from world point p, as lines of
+ * time (envelope.h): a ball's lowest point, or every vertex's (walked on a large
+ * hull); and *quad, the most their second derivative can take off them over t^2
+ * (the centre's acceleration along side * n exactly, less a turn's w^2 R +
+ * |dw/dt| R, |dw/dt| <= w^2 for a free body; for a held one, turning at a constant
+ * w about its pivot, w^2 R with R its reach).  Returns 0,
+ * or -1 when o has too many vertices to read and no closest data to walk. */
+static int side_of(const body *o, const sched_move *mo, vec3 n, double side, vec3 p, closest_feature near,
+                   env_side *out, double *quad)
 {
     vec3 sn = v3_scale(n, side);
     vec3 v = mo->moves ? mo->v : v3(0, 0, 0), c = body_com(o);
     *quad = mo->moves ? 0.5 * v3_dot(mo->a, sn) - mo->rate * mo->rate * mo->reach : 0;
     if (o->sp.kind == SHAPE_SPHERE) {
+        *out = (env_side){.hull = NULL, .near = -1};
         if (mo->held) { /* its centre goes round the pivot */
-            out[0] = (line){v3_dot(v3_sub(c, p), sn) - o->sp.radius, v3_dot(o->v, sn)};
+            out->h0 = v3_dot(v3_sub(c, p), sn) - o->sp.radius;
+            out->h1 = v3_dot(o->v, sn);
             *quad = -mo->rate * mo->rate * v3_len(v3_sub(c, mo->c));
-            return 1;
+            return 0;
         }
-        out[0] = (line){v3_dot(v3_sub(c, p), sn) - o->sp.radius, v3_dot(v, sn)};
+        out->h0 = v3_dot(v3_sub(c, p), sn) - o->sp.radius;
+        out->h1 = v3_dot(v, sn);
         *quad = mo->moves ? 0.5 * v3_dot(mo->a, sn) : 0; /* it turns into itself */
-        return 1;
+        return 0;
     }
     const poly *h = o->shape.hull;
-    if (!h || h->nv > TOI_ENVELOPE_VERTICES) return 0;
+    if (!h || (h->nv > ENV_FLAT_VERTICES && !o->shape.feat)) return -1;
     vec3 w = mo->moves ? o->w : v3(0, 0, 0);
     if (mo->held) c = mo->c; /* its points turn about the pivot, which moves at v */
     /* a vertex at x = o->x + R y: its height (x - p).sn and its speed along sn,
      * (v + w x (x - c)).sn = v.sn + (x - c).(sn x w), are each a constant plus y
      * dotted with a direction of the body's own frame */
     vec3 sw = v3_cross(sn, w);
-    double h0 = v3_dot(v3_sub(o->x, p), sn), h1 = v3_dot(v, sn) + v3_dot(v3_sub(o->x, c), sw);
-    vec3 dh0 = q_unrotate(o->q, sn), dh1 = q_unrotate(o->q, sw);
-    for (int i = 0; i < h->nv; i++) out[i] = (line){h0 + v3_dot(h->v[i], dh0), h1 + v3_dot(h->v[i], dh1)};
-    return h->nv;
-}
-
-/* A piece of a lower envelope: line l from time t on. */
-typedef struct {
-    double t;
-    line l;
-} piece;
-
-/* The lower envelope of the n lines over [0, T]: its pieces, in time order. */
-static int envelope(const line *ln, int n, double T, piece *out)
-{
-    int cur = 0, m = 0;
-    for (int i = 1; i < n; i++)
-        if (ln[i].h0 < ln[cur].h0 || (ln[i].h0 == ln[cur].h0 && ln[i].h1 < ln[cur].h1)) cur = i;
-    double t = 0;
-    for (;;) {
-        out[m++] = (piece){t, ln[cur]};
-        int next = -1;
-        double tx = HUGE_VAL;
-        for (int i = 0; i < n; i++) {
-            if (!(ln[i].h1 < ln[cur].h1)) continue;
-            double x = (ln[i].h0 - ln[cur].h0) / (ln[cur].h1 - ln[i].h1);
-            if (x < t) x = t;
-            if (x < tx || (x == tx && ln[i].h1 < ln[next].h1)) {
-                tx = x;
-                next = i;
-            }
-        }
-        if (next < 0 || !(tx < T) || m == n) return m;
-        cur = next;
-        t = tx;
-    }
+    *out = (env_side){.h0 = v3_dot(v3_sub(o->x, p), sn),
+                      .h1 = v3_dot(v, sn) + v3_dot(v3_sub(o->x, c), sw),
+                      .dh0 = q_unrotate(o->q, sn),
+                      .dh1 = q_unrotate(o->q, sw),
+                      .hull = h,
+                      .feat = o->shape.feat,
+                      .near = feature_vertex(h, near)};
+    return 0;
 }
 
 /* The time, never late, before which a (moving as ma) and b (mb) cannot close
- * their gap along n (the unit normal from b to a) down to target: the lowest of
+ * their gap along r's normal (from b to a) down to target: the lowest of
  * a's points along n less the highest of b's, each point's height bounded by its
  * own rate now and the most it can accelerate.  Sharper than the surfaces' bound
  * as a whole (|w| R) when the points that meet close slowly, as a box settling
  * onto an edge does; valid whatever n is, and whatever the rounding of the
- * closest points it came from.  HUGE_VAL when not within T, -1 when either has
- * too many vertices. */
+ * closest points it came from (a walk starts from r's features).  HUGE_VAL when
+ * not within T, -1 when either has too many vertices and no closest data. */
 static double envelope_time(const body *a, const sched_move *ma, const body *b,
-                            const sched_move *mb, vec3 n, vec3 p, double target, double T)
+                            const sched_move *mb, const closest_result *r, double target, double T)
 {
-    static _Thread_local line la[TOI_ENVELOPE_VERTICES], lb[TOI_ENVELOPE_VERTICES];
-    static _Thread_local piece pa[TOI_ENVELOPE_VERTICES], pb[TOI_ENVELOPE_VERTICES];
+    env_side sa, sb;
     double qa, qb;
-    int na = lines_of(a, ma, n, 1, p, la, &qa), nb = lines_of(b, mb, n, -1, p, lb, &qb);
-    if (na == 0 || nb == 0) return -1;
-    int ka = envelope(la, na, T, pa), kb = envelope(lb, nb, T, pb);
-    double q = qa + qb, margin = tol_margin(a, b);
-    int i = 0, j = 0;
-    for (double t0 = 0; t0 < T;) {
-        double t1 = T;
-        if (i + 1 < ka) t1 = d_min(t1, pa[i + 1].t);
-        if (j + 1 < kb) t1 = d_min(t1, pb[j + 1].t);
-        /* f(t) = c0 + c1 t + q t^2 - target on [t0, t1] */
-        double c0 = pa[i].l.h0 + pb[j].l.h0 - target - margin, c1 = pa[i].l.h1 + pb[j].l.h1;
-        double f0 = c0 + c1 * t0 + q * t0 * t0;
-        if (!(f0 > 0)) return t0;
-        double r = HUGE_VAL;
-        if (q == 0) {
-            if (c1 < 0) r = -c0 / c1;
-        } else {
-            double r1, r2;
-            if (quad_roots(q, c1, c0, &r1, &r2)) {
-                if (r1 >= t0 && r1 < r) r = r1;
-                if (r2 >= t0 && r2 < r) r = r2;
-            }
-        }
-        if (r <= t1) {
-            /* never late: back off until it checks out */
-            double t = r * (1 - 1e-12);
-            for (double f = 1e-9; t > t0 && c0 + c1 * t + q * t * t <= 0; f *= 2)
-                t = f < 0.5 ? d_max(t0, t * (1 - f)) : t0;
-            return t;
-        }
-        t0 = t1;
-        if (i + 1 < ka && pa[i + 1].t <= t0) i++;
-        if (j + 1 < kb && pb[j + 1].t <= t0) j++;
-    }
-    return HUGE_VAL;
+    if (side_of(a, ma, r->normal, 1, r->pb, r->fa, &sa, &qa) < 0 ||
+        side_of(b, mb, r->normal, -1, r->pb, r->fb, &sb, &qb) < 0)
+        return -1;
+    return env_first_time(&sa, &sb, qa + qb, target, tol_margin(a, b), T, NULL);
 }
 
 /* How a (moving as ma) and b (mb), touching with closest result r, meet there: 1
@@ -224,7 +171,7 @@ static double advance(const body *a, const sched_move *ma, const body *b, const 
     /* the points' bound costs a pass over their vertices: only where the surfaces'
      * would crawl (a twentieth of what is left to search, or less) */
     if (dt < TOI_ENVELOPE_WHEN * T)
-        dt = d_max(dt, envelope_time(a, ma, b, mb, r->normal, r->pb, target, T));
+        dt = d_max(dt, envelope_time(a, ma, b, mb, r, target, T));
     return d_min(dt, dt_near);
 }
 
