@@ -236,10 +236,9 @@ static void no_creep(void **state)
 
 /* ---- balls ---- */
 
-/* A level floor (its top at z = 0) of friction mu and rolling resistance c, and
- * a ball of radius rad on it, with the same, moving at v0 along x with spin w0
- * about y. */
-static body *ball_on_floor(world *w, double mu, double c, double rad, double v0, double w0)
+/* A world under gravity with a level floor (its top at z = 0) of friction mu:
+ * the floor. */
+static body *floor_world(world *w, double mu)
 {
     world_init(w);
     w->set.force = (dir_amount){v3(0, 0, -1), G};
@@ -248,7 +247,15 @@ static body *ball_on_floor(world *w, double mu, double c, double rad, double v0,
     body *floor = add_static_box(w, "floor", v3(100, 100, 0.1));
     floor->x = v3(0, 0, -0.1);
     floor->friction = mu;
-    floor->rolling_friction = c;
+    return floor;
+}
+
+/* A level floor (its top at z = 0) of friction mu and rolling resistance c, and
+ * a ball of radius rad on it, with the same, moving at v0 along x with spin w0
+ * about y. */
+static body *ball_on_floor(world *w, double mu, double c, double rad, double v0, double w0)
+{
+    floor_world(w, mu)->rolling_friction = c;
     body *ball = add_ball(w, "ball", rad);
     ball->friction = mu;
     ball->rolling_friction = c;
@@ -652,26 +659,30 @@ static double quad_stop_time(const quad_face *q, double mu, double v0, double w0
     }
 }
 
-/* A floor with friction mu, and a flat body on it (placed by the caller). */
-static void floor_world(world *w, double mu)
+/* A floor of friction mu (floor_world) and a box of half-extents (b, b, hz)
+ * with the same lying flat on it at the origin, still. */
+static body *box_on_floor(world *w, double mu, double b, double hz)
 {
-    world_init(w);
-    w->set.force = (dir_amount){v3(0, 0, -1), G};
-    w->set.max_linear = 50;
-    w->set.max_angular = 1000;
-    body *floor = add_static_box(w, "floor", v3(100, 100, 0.1));
-    floor->x = v3(0, 0, -0.1);
-    floor->friction = mu;
+    floor_world(w, mu);
+    body *box = add_box(w, "box", v3(b, b, hz));
+    box->friction = mu;
+    box->elasticity = 0;
+    box->x = v3(0, 0, hz + 1e-9);
+    return box;
 }
 
 /* Runs w until b stops sliding and spinning, by frames of dt, no later than
  * t_max: the time of the frame in which it stopped, and true when its slide
- * and its spin stopped in that same frame (each nonzero before it). */
-static bool run_to_stop(world *w, const body *b, double dt, double t_max, double *t_stop)
+ * and its spin stopped in that same frame (each nonzero before it); *falls
+ * (when not NULL) false if its energy rose in some frame. */
+static bool run_to_stop(world *w, const body *b, double dt, double t_max, double *t_stop, bool *falls)
 {
+    double e0 = energy(b), last = e0;
     while (w->time < t_max) {
         bool moving = v3_len(b->v) > 0, spinning = v3_len(b->w) > 0;
         frame(w, dt);
+        if (falls) *falls = *falls && energy(b) <= last + 1e-12 * e0;
+        last = energy(b);
         bool m2 = v3_len(b->v) > 0, s2 = v3_len(b->w) > 0;
         if (!m2 || !s2) {
             *t_stop = w->time;
@@ -721,7 +732,7 @@ static void disc_stops_together(void **state)
         for (int j = 0; j < q.n; j++) reach = d_max(reach, hypot(pts[j][0], pts[j][1]));
         double ts = quad_stop_time(&q, mu, v0, w0, disc[0]->I_princ.z / disc[0]->mass, reach, ts_step(v0, mu));
         double t_stop = 0;
-        bool together = run_to_stop(&w[0], disc[0], 0.01, 2 * ts, &t_stop);
+        bool together = run_to_stop(&w[0], disc[0], 0.01, 2 * ts, &t_stop, NULL);
         print_message("disc a1 %.2f mu %.1f v0 %.1f w0 %.0f: stopped at %.2f (oracle %.4f), together %d\n", R, mu, v0,
                       w0, t_stop, ts, together);
         assert_true(together);
@@ -752,11 +763,7 @@ static void box_slides_and_spins(void **state)
         double b = cases[c][0], mu = cases[c][1], v0 = cases[c][2], w0 = cases[c][3], dir = cases[c][4];
         double hz = b / 50;
         world w;
-        floor_world(&w, mu);
-        body *box = add_box(&w, "box", v3(b, b, hz));
-        box->friction = mu;
-        box->elasticity = 0;
-        box->x = v3(1, 2, hz + 1e-9);
+        body *box = box_on_floor(&w, mu, b, hz);
         body_set_rotation(box, v3(0, 0, 1), dir);
         /* (the oracle goes from the box's own axes: along x at first) */
         box->v = v3(v0 * cos(dir), v0 * sin(dir), 0);
@@ -766,20 +773,8 @@ static void box_slides_and_spins(void **state)
         quad_face q = {pts, face_points(box, 24, pts, MAXQ)};
         body_set_rotation(box, v3(0, 0, 1), dir);
         double ts = quad_stop_time(&q, mu, v0, w0, box->I_princ.z / box->mass, b * sqrt(2), ts_step(v0, mu));
-        double last = e0, t_stop = 0;
-        bool together = false, falls = true;
-        while (w.time < 2 * ts) {
-            bool moving = v3_len(box->v) > 0, spinning = v3_len(box->w) > 0;
-            frame(&w, 0.01);
-            falls = falls && energy(box) <= last + 1e-12 * e0;
-            last = energy(box);
-            bool m2 = v3_len(box->v) > 0, s2 = v3_len(box->w) > 0;
-            if (!m2 || !s2) {
-                t_stop = w.time;
-                together = moving && spinning && !m2 && !s2;
-                break;
-            }
-        }
+        double t_stop = 0;
+        bool falls = true, together = run_to_stop(&w, box, 0.01, 2 * ts, &t_stop, &falls);
         print_message("box b %.2f mu %.2f: stopped at %.2f (oracle %.4f), together %d, heat %.12f (ke0 %.12f)\n", b,
                       mu, t_stop, ts, together, e0 - energy(box), ke0);
         assert_true(together);
@@ -805,27 +800,11 @@ static void tall_box_clipped_or_tips(void **state)
         double b = 0.1, hz = cases[c][0], mu = cases[c][1];
         bool tips = cases[c][2] != 0;
         world w;
-        floor_world(&w, mu);
-        body *box = add_box(&w, "box", v3(b, b, hz));
-        box->friction = mu;
-        box->elasticity = 0;
-        box->x = v3(0, 0, hz + 1e-9);
+        body *box = box_on_floor(&w, mu, b, hz);
         box->v = v3(tips ? 3 : 1.5, 0, 0);
         body_set_angular_vel(box, v3(0, 0, 8));
-        double e0 = energy(box), ke0 = body_energy(box), last = e0, t_stop = 0;
-        bool together = false, falls = true;
-        while (w.time < 2) {
-            bool moving = v3_len(box->v) > 0, spinning = v3_len(box->w) > 0;
-            frame(&w, 0.01);
-            falls = falls && energy(box) <= last + 1e-12 * e0;
-            last = energy(box);
-            bool m2 = v3_len(box->v) > 0, s2 = v3_len(box->w) > 0;
-            if (!tips && (!m2 || !s2)) {
-                t_stop = w.time;
-                together = moving && spinning && !m2 && !s2;
-                break;
-            }
-        }
+        double e0 = energy(box), ke0 = body_energy(box), t_stop = 0;
+        bool falls = true, together = run_to_stop(&w, box, 0.01, 2, &t_stop, &falls);
         double tilt = acos(d_min(1, q_rotate(box->q, v3(0, 0, 1)).z));
         print_message("h %.2f mu %.1f: tilt %.3g rad, stopped at %.2f, together %d\n", hz, mu, tilt, t_stop, together);
         if (tips) {
