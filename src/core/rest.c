@@ -150,8 +150,8 @@ static bool try_face(world *w, body *m, const body *s, int si, int face, vec3 n,
         const poly_face *F = &hf->f[local];
         for (int k = 0; k < F->count && inside; k++)
             inside = gap_to_edge(s, hf, F, k, n, body_com(&t), v, v3(0, 0, 0)).g0 > R;
-        bool alone = v3_len(v) == 0 && contact_face_arm(&t, n) > 0;
-        if (inside && wn != 0 && (alone || fabs(wn) * R > tol)) body_set_angular_vel(&t, v3_scale(n, wn));
+        if (inside && wn != 0 && (fabs(wn) * R > tol || (v3_len(v) == 0 && contact_face_arm(&t, n) > 0)))
+            body_set_angular_vel(&t, v3_scale(n, wn));
         else if (fabs(wn) * R > tol) return false;
     } else {
         if (fabs(v3_dot(t.w, n)) * R > tol) return false;
