@@ -538,7 +538,8 @@ static void slip_integrals_agree(void **state)
         double ctr[2] = {-v[1] / w, v[0] / w}; /* v + w J c = 0 */
         double s0[2] = {0, 0}, s1[2][2] = {{0, 0}, {0, 0}}, u0 = 0, u1[2] = {0, 0};
         for (int k = 0; k < 5; k++) {
-            double a[2] = {P[k].x - ctr[0], P[k].y - ctr[1]}, b[2] = {P[(k + 1) % 5].x - ctr[0], P[(k + 1) % 5].y - ctr[1]};
+            region_pt q = P[(k + 1) % 5];
+            double a[2] = {P[k].x - ctr[0], P[k].y - ctr[1]}, b[2] = {q.x - ctr[0], q.y - ctr[1]};
             double cr = a[0] * b[1] - a[1] * b[0];
             for (int pn = 0; pn < 12; pn++)
                 for (int j = 0; j < 16; j++) {
@@ -550,7 +551,8 @@ static void slip_integrals_agree(void **state)
                         sx /= sl, sy /= sl;
                         double xs = x * sy - y * sx;
                         s0[0] += wt * sx, s0[1] += wt * sy;
-                        s1[0][0] += wt * sx * x, s1[0][1] += wt * sx * y, s1[1][0] += wt * sy * x, s1[1][1] += wt * sy * y;
+                        s1[0][0] += wt * sx * x, s1[0][1] += wt * sx * y;
+                        s1[1][0] += wt * sy * x, s1[1][1] += wt * sy * y;
                         u0 += wt * xs;
                         u1[0] += wt * xs * x, u1[1] += wt * xs * y;
                     }

@@ -53,7 +53,8 @@ bool friction_ball(const body *b)
 static face_motion ball_slides(vec3 gt, double gn, double mu, double k, double r, vec3 n, vec3 sl,
                                double slip, double round)
 {
-    face_motion m = {.mode = MODE_SLIDE, .a = v3_mad(gt, sl, -mu * gn), .axis = v3_cross(n, sl), .dw = mu * gn / (k * r), .t_stop = HUGE_VAL};
+    face_motion m = {.mode = MODE_SLIDE, .a = v3_mad(gt, sl, -mu * gn), .axis = v3_cross(n, sl),
+                     .dw = mu * gn / (k * r), .t_stop = HUGE_VAL};
     double ds = v3_dot(gt, sl) - mu * gn * (1 + 1 / k);
     if (v3_len(v3_cross(gt, sl)) > round || (slip == 0 && ds < 0)) m.mode = MODE_GENERAL;
     else if (ds < 0) m.t_stop = slip / -ds;
