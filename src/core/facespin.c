@@ -24,6 +24,7 @@ bool face_spin_init(face_spin *fs, const body *b, vec3 n, double mu, double gn)
     friction_basis(n, &fs->e1, &fs->e2);
     fs->n = contact_face_outline(b, n, fs->e1, fs->e2, fs->p, FACESPIN_MAX, &fs->h);
     if (fs->n < 3 || !(fs->h > 0)) return false;
+    fs->moments = region_moments_of(fs->p, fs->n);
     fs->reach = 0;
     for (int k = 0; k < fs->n; k++) fs->reach = d_max(fs->reach, hypot(fs->p[k].x, fs->p[k].y));
     mat3 I = body_inertia_world(b);
@@ -61,7 +62,7 @@ static bool solve3(double A[3][3], const double r[3], double z[3])
 static bool balance(const face_spin *fs, const region_pt *P, int n, const double v[2], double w, double z[3],
                     region_slip *sl)
 {
-    region_moments m = region_moments_of(P, n);
+    region_moments m = P == fs->p ? fs->moments : region_moments_of(P, n);
     *sl = region_slip_of(P, n, v, w, fs->reach);
     double hm = fs->h * fs->mu;
     double A[3][3] = {{m.area, m.m1[0], m.m1[1]},
@@ -82,7 +83,7 @@ bool face_spin_accel(const face_spin *fs, double turn, const double v[2], double
     int n = fs->n;
     double z[3];
     region_slip sl;
-    double full = region_moments_of(fs->p, fs->n).area, tol = 1e-13 * fs->reach;
+    double full = fs->moments.area, tol = 1e-13 * fs->reach;
     bool done = false;
     for (int round = 0; round < CLIP_ROUNDS && !done; round++) {
         if (!balance(fs, cur, n, vb, w, z, &sl)) return false;
@@ -162,12 +163,14 @@ bool face_spin_step(const face_spin *fs, const double v[2], double w, double hma
     for (int i = 0; i < 5; i++)
         for (int j = 0; j < 6; j++) out->r[i][j] = i == 0 ? y0[j] : 0;
     out->h = 0;
-    out->more = false;
+    out->more = out->tips = false;
     if (u0 < FACESPIN_STOP) return true; /* (stopped) */
     if (!deriv(fs, y0, k1)) return false;
     /* no step goes past the stop: |v| + |w| R falls at mu g_n (1 + m R^2 / I)
-     * at most */
-    double h = u0 / (fs->mu * fs->gn * (1 + fs->mass * R * R / fs->in)), least = 1e-9 * h;
+     * at most, to zero in t_min at the least; the first trial is a sixth of
+     * that (about what 1e-9 allows, by the boxes and discs tried) */
+    double t_min = u0 / (fs->mu * fs->gn * (1 + fs->mass * R * R / fs->in)), least = 1e-9 * t_min;
+    double h = t_min / 6;
     if (hmax > 0) h = d_min(h, hmax);
     double k[7][6], y1[6], err[6];
     /* (a step that shrinks to nothing meets the edge of the pressures that
@@ -194,7 +197,7 @@ bool face_spin_step(const face_spin *fs, const double v[2], double w, double hma
             out->more = !(hypot(y1[3], y1[4]) + fabs(y1[5]) * R < FACESPIN_STOP);
             return true;
         }
-        h *= d_max(0.1, 0.9 * pow(e, -0.2));
+        h *= d_max(0.1, 0.8 * pow(e, -0.2));
     }
     return false;
 }

@@ -34,6 +34,7 @@
 typedef struct {
     region_pt p[FACESPIN_MAX]; /* its face, from under its centre of mass, */
     int n;                     /*   in the axes e1, e2, as it was at the start */
+    region_moments moments;    /*   and its moments */
     double reach, h;           /* its furthest corner, its centre's height */
     double mu, gn, mass, in;   /* friction, the pressing acceleration, m, I about n */
     vec3 nrm, e1, e2;

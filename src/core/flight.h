@@ -49,10 +49,11 @@ typedef enum { FLIGHT_STILL, FLIGHT_FREE, FLIGHT_SLIDE, FLIGHT_HELD, FLIGHT_ROLL
  * and its spin, y = (x, y, turn, vx, vy, w), at s in [0, 1] of the step r0 + s
  * (r1 + (1 - s) (r2 + s (r3 + (1 - s) r4))) (Dormand and Prince's dense
  * output).  more: it goes on after the step; else its slip and spin stop there
- * together (|v| + |w| R < 1e-9 m/s). */
+ * together (|v| + |w| R < 1e-9 m/s).  tips: no step could be taken (h 0: the
+ * pressure that balances it gives out at once), it tips. */
 typedef struct {
     double h, r[5][6];
-    bool more;
+    bool more, tips;
 } face_step;
 
 typedef struct {

@@ -61,9 +61,10 @@ static face_motion ball_slides(vec3 gt, double gn, double mu, double k, double r
     return m;
 }
 
-/* A box sliding and spinning on a level face (facespin.h): its mode and its
- * step, at most hmax long (<= 0: any; general where it tips within it); the
- * centre of pressure's lean as friction_face's. */
+/* A box sliding and spinning on a level face (facespin.h): its mode, and
+ * (hmax >= 0) its step, at most hmax long (0: any; where none can be taken,
+ * tips is set and t_stop is 0); the centre of pressure's lean as
+ * friction_face's. */
 static face_motion face_spins(const body *b, vec3 n, double mu, double gn, vec3 v, double hmax, vec3 *lean)
 {
     face_motion m = {.mode = MODE_GENERAL, .a = v3(0, 0, 0), .axis = n, .t_stop = HUGE_VAL};
@@ -75,12 +76,10 @@ static face_motion face_spins(const body *b, vec3 n, double mu, double gn, vec3 
     *lean = v3_scale(v3_add(v3_scale(fs.e1, a[0]), v3_scale(fs.e2, a[1])), -1 / gn);
     m.mode = MODE_SLIDE;
     m.spins = true;
-    /* (asked for its mode only, it must still be able to move on so) */
-    if (!face_spin_step(&fs, vp, w, d_max(0, hmax), &m.step)) {
-        m.mode = MODE_GENERAL;
-        return m;
-    }
-    m.t_stop = m.step.h;
+    if (hmax < 0) return m;
+    /* (a step that cannot be taken ends at once: it tips there) */
+    m.step.tips = !face_spin_step(&fs, vp, w, hmax, &m.step);
+    m.t_stop = m.step.tips ? 0 : m.step.h;
     m.a = v3(0, 0, 0);
     if (m.step.h > 0) {
         /* (the mean acceleration over the step: the parabola that the

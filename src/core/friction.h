@@ -120,9 +120,10 @@ void friction_restitute(const impulse_row *rows, int m, body *const *bs, const b
  *    about its centre of mass's foot (contact_face_arm: the pressure is then
  *    uniform), its spin slows at mu g_n m arm / I_n until it stops; sliding
  *    and spinning at once on a level face (or spinning on a face not so
- *    symmetric), it moves by friction over its face (facespin.h: spins set,
- *    and where hmax >= 0 the first step of its motion, at most hmax long, 0:
- *    any, t_stop its length; where no pressure balances it, it tips: general);
+ *    symmetric), it moves by friction over its face (facespin.h: spins set;
+ *    where hmax >= 0 the first step of its motion, at most hmax long (0:
+ *    any), t_stop its length, or where no step can be taken t_stop 0 and
+ *    step.tips; where no pressure balances it now, it tips: general);
  *  - a ball (I = k m r^2), slipping at s = v - r w x n: it slides at g_t - mu
  *    g_n s/|s|, its spin growing by mu g_n / (k r) about n x s/|s|, until its
  *    slip is zero (t_stop: ds/dt = g_t - mu g_n (1 + 1/k) s/|s|); not

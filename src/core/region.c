@@ -74,7 +74,7 @@ static fan_part fan_triangle(region_pt a, region_pt b)
     double d = fabs(cr) / len, nv[2] = {(a.x - ta * t[0]) / d, (a.y - ta * t[1]) / d};
     double tb = (b.x * t[0] + b.y * t[1]) / d;
     ta /= d;
-    double sa = hypot(1, ta), sb = hypot(1, tb), La = asinh(ta), Lb = asinh(tb);
+    double sa = sqrt(1 + ta * ta), sb = sqrt(1 + tb * tb), La = asinh(ta), Lb = asinh(tb);
     double sg = cr > 0 ? 1 : -1, d2 = sg * d * d / 2, d3 = sg * d * d * d / 3, d4 = sg * d * d * d * d / 4;
     double cc = Lb - La;                                  /* int sec^3 cos^2 = int sec^2 cos */
     double s1 = sb - sa;                                  /* int sec^2 sin */
@@ -137,7 +137,7 @@ region_slip region_slip_of(const region_pt *p, int n, const double v[2], double 
             for (int j = 0; j < 8; j++) {
                 double xi = GX[i], eta = GX[j], wt = GW[i] * GW[j] * xi * jac;
                 double x = p[0].x + xi * (ax + eta * (bx - ax)), y = p[0].y + xi * (ay + eta * (by - ay));
-                double sx = v[0] - w * y, sy = v[1] + w * x, sl = hypot(sx, sy);
+                double sx = v[0] - w * y, sy = v[1] + w * x, sl = sqrt(sx * sx + sy * sy);
                 sx /= sl, sy /= sl;
                 double xs = x * sy - y * sx;
                 r.s0[0] += wt * sx, r.s0[1] += wt * sy;

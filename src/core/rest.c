@@ -324,8 +324,14 @@ bool rest_face_stop(world *w, int i)
     body *m = w->bodies[i];
     const flight *f = &w->step.fl[i];
     if (!(f->t_stop < HUGE_VAL) || w->time < f->t0 + f->t_stop) return false;
-    /* a spinning one's step: it goes on from the next (retime_object) */
+    /* a spinning one's step: it goes on from the next (retime_object), or,
+     * where none could be taken, it tips: the clusters take it */
     if (f->kind == FLIGHT_SPIN && f->step.more) return true;
+    if (f->kind == FLIGHT_SPIN && f->step.tips) {
+        m->mode = MODE_GENERAL;
+        m->slide_on = -1;
+        return true;
+    }
     /* where the closed form ended, exactly: a box, or a rolling ball, still; a
      * sliding ball rolling */
     if (f->closed) {

@@ -62,7 +62,8 @@ double rest_slide_exit(const world *w, int i, double t);
  * state there (synced to it): makes that end exact (a box or a rolling ball
  * still, a sliding ball rolling) and gives it its mode anew (it sticks, rolls,
  * slides on, or goes to a cluster); at the end of a step of a slide and spin
- * that goes on (FLIGHT_SPIN), nothing (its next step starts there).  False,
+ * that goes on (FLIGHT_SPIN), nothing (its next step starts there), and where
+ * no step could be taken (it tips) it is general.  False,
  * and nothing changed, when its event is not that end. */
 bool rest_face_stop(world *w, int i);
 
