@@ -162,12 +162,22 @@ printf '%s\n' "$out" | grep -qx 'thrown.mode = slide' && printf '%s\n' "$out" | 
 awk '/^cube shoved$/ { s = 1 } s && /^slide_on = gentle$/ { a = 1 } s && a && /^mode = stick$/ { m = 1 } s && m && /^resting = on$/ { print "yes"; exit }' m.vroc | grep -q yes &&
     ok "save writes a stuck object's support, mode = stick and resting" ||
     notok "save writes a stuck object's support, mode = stick and resting" "$(grep -A12 '^cube shoved$' m.vroc | head -20)"
+# the thin box thrown spinning, mid slide and spin (friction over its face):
+# print and save show it sliding on the floor, spinning; read back at frames 1
+# and 3 (below) it goes on to the bit, and stops sliding and spinning at once
+out=$("$VROC" -b -q "$S/slopes.vroc" -c "run 2; print spinner.mode; print spinner.slide_on; save sp.vroc; run 8; print spinner.linear_vel; print spinner.angular_vel; print spinner.mode" 2>&1)
+awk '/^cube spinner$/ { s = 1 } s && /^slide_on = floor$/ { a = 1 } s && a && /^mode = slide$/ { print "yes"; exit }' sp.vroc | grep -q yes &&
+    printf '%s\n' "$out" | grep -qx 'spinner.mode = slide' && printf '%s\n' "$out" | grep -qx 'spinner.slide_on = floor' &&
+    printf '%s\n' "$out" | grep -qx 'spinner.linear_vel = (0, 0, 0)' && printf '%s\n' "$out" | grep -qx 'spinner.angular_vel = (0, 0, 0)' &&
+    printf '%s\n' "$out" | grep -qx 'spinner.mode = stick' &&
+    ok "a box sliding and spinning prints and saves as sliding on its support, and stops both at once" ||
+    notok "a box sliding and spinning prints and saves as sliding on its support, and stops both at once" "$out"
 for f in 1 3 12; do
     "$VROC" -b -q "$S/slopes.vroc" -c "run $f; save m$f.vroc; trace = m$f.a.csv; run 15; hash" > m$f.a.txt 2>&1
     "$VROC" -b -q m$f.vroc -c "trace = m$f.b.csv; run 15; hash" > m$f.b.txt 2>&1
     cmp -s m$f.a.csv m$f.b.csv && cmp -s m$f.a.txt m$f.b.txt &&
-        ok "slopes saved at frame $f (slide, roll, stick) goes on to the bit" ||
-        notok "slopes saved at frame $f (slide, roll, stick) goes on to the bit" "$(cat m$f.a.txt m$f.b.txt)"
+        ok "slopes saved at frame $f (slide, slide and spin, roll, stick) goes on to the bit" ||
+        notok "slopes saved at frame $f (slide, slide and spin, roll, stick) goes on to the bit" "$(cat m$f.a.txt m$f.b.txt)"
 done
 expect "mode = roll is a ball's" 1 "only a ball rolls" \
     "$VROC" -b -q -c "cube floor; mass = -1; cube c; translate = (0, 0, 2.000000001); slide_on = floor; slide_face = 5; mode = roll"

@@ -422,20 +422,32 @@ int contact_facing(const body *o, vec3 d)
     return best;
 }
 
-/* The integral of the distance from the origin over the triangle (0, a, b),
- * signed as the turn from a to b: in polar coordinates about the origin, with
- * psi measured from the foot of the perpendicular to the line ab (at distance
- * d), r runs to d / cos psi, and int int r r dr dpsi = d^3 / 3 int sec^3 psi
- * dpsi = d^3 / 6 [sec psi tan psi + ln(sec psi + tan psi)]. */
-static double arm_triangle(p2 a, p2 b)
+int contact_face_outline(const body *m, vec3 n, vec3 e1, vec3 e2, region_pt *out, int max, double *height)
 {
-    double ex = b.x - a.x, ey = b.y - a.y, len = hypot(ex, ey), cr = a.x * b.y - a.y * b.x;
-    if (!(len > 0) || cr == 0) return 0;
-    double d = fabs(cr) / len, tx = ex / len, ty = ey / len;
-    double ta = (a.x * tx + a.y * ty) / d, tb = (b.x * tx + b.y * ty) / d; /* tan psi */
-    double sa = hypot(1, ta), sb = hypot(1, tb);                           /* sec psi */
-    double f = (sb * tb + log(sb + tb)) - (sa * ta + log(sa + ta));
-    return copysign(d * d * d / 6 * f, cr);
+    int fi = contact_facing(m, v3_neg(n));
+    if (fi < 0 || body_compound(m)) return -1;
+    const poly *h = m->shape.hull;
+    const poly_face *F = &h->f[fi];
+    if (F->count < 3 || F->count > max || v3_dot(q_rotate(m->q, F->n), n) > -1 + SIM_PARALLEL) return -1;
+    vec3 c = body_com(m);
+    for (int k = 0; k < F->count; k++) {
+        vec3 x = v3_sub(v3_add(m->x, q_rotate(m->q, h->v[h->face_vert[F->first + k]])), c);
+        out[k] = (region_pt){v3_dot(x, e1), v3_dot(x, e2)};
+        if (k == 0) *height = -v3_dot(x, n);
+    }
+    /* (the hull's face turns counterclockwise about its own normal, -n) */
+    double area = 0;
+    for (int k = 0; k < F->count; k++) {
+        region_pt a = out[k], b = out[(k + 1) % F->count];
+        area += a.x * b.y - a.y * b.x;
+    }
+    if (area < 0)
+        for (int k = 0; k < F->count / 2; k++) {
+            region_pt x = out[k];
+            out[k] = out[F->count - 1 - k];
+            out[F->count - 1 - k] = x;
+        }
+    return area != 0 ? F->count : -1;
 }
 
 double contact_face_arm(const body *m, vec3 n)
@@ -467,7 +479,7 @@ double contact_face_arm(const body *m, vec3 n)
     for (int k = 0; k < F->count && symmetric; k++) {
         p2 a = pg[k], b = pg[(k + 1) % F->count];
         area += 0.5 * (a.x * b.y - a.y * b.x);
-        arm += arm_triangle(a, b);
+        arm += region_arm((region_pt){a.x, a.y}, (region_pt){b.x, b.y});
     }
     free_points(pg, local);
     return symmetric && area != 0 ? arm / area : -1;

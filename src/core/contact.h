@@ -14,6 +14,7 @@
 #include "body.h"
 #include "closest.h"
 #include "pieces.h"
+#include "region.h"
 
 /* The centre of the contact region of a and b, touching or nearly touching with
  * closest result r: the centroid of the overlap of a's and b's features that lie
@@ -100,6 +101,13 @@ bool contact_level(body *m, const body *s, int face, double max_tilt, double gap
  * -1 when that face is not flat against n, or not centrally symmetric about
  * that foot (a spin alone would then push it sideways). */
 double contact_face_arm(const body *m, vec3 n);
+
+/* m's face that lies flat against a face of normal n (within SIM_PARALLEL):
+ * its corners from m's centre of mass, in the plane's axes e1, e2 (e1 x e2 =
+ * n), counterclockwise about n, into out (room for max); *height the centre of
+ * mass's height over it.  Returns the corner count, or -1 when there is no
+ * such face (or more corners than max). */
+int contact_face_outline(const body *m, vec3 n, vec3 e1, vec3 e2, region_pt *out, int max, double *height);
 
 /* The face of polyhedron o whose outward normal is nearest world direction d, or
  * -1 for a sphere. */

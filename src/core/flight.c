@@ -10,6 +10,8 @@
  */
 #include "flight.h"
 
+#include "friction.h"
+
 #include <assert.h>
 #include <math.h>
 
@@ -100,6 +102,15 @@ void flight_start_face(flight *f, const body *b, flight_kind kind, double t0, co
     double h = d_max(0, d_min(until - t0, m->t_stop));
     f->t_stop = m->t_stop;
     f->closed = m->mode != MODE_GENERAL;
+    if (kind == FLIGHT_SLIDE && m->spins) {
+        /* one step of the slide and spin (facespin.h) */
+        f->kind = FLIGHT_SPIN;
+        f->step = m->step;
+        friction_basis(n, &f->e1, &f->e2);
+        double w0 = m->step.r[0][5], w1 = w0 + m->step.r[1][5];
+        f->rate = d_max(fabs(w0), fabs(w1)) + fabs(w1 - w0); /* (a bound on the dense output's) */
+        return;
+    }
     if (kind == FLIGHT_SLIDE) {
         /* (a box: not turning; a ball: about the axis, which its spin is along) */
         f->axis = m->axis;
@@ -115,6 +126,30 @@ void flight_start_face(flight *f, const body *b, flight_kind kind, double t0, co
     f->rate = d_max(v3_len(f->v0), v3_len(v3_mad(f->v0, m->a, h))) / f->radius;
 }
 
+/* The state of a sliding and spinning body's flight h after its start
+ * (flight.h, FLIGHT_SPIN). */
+static void spin_step_at(const flight *f, const body *shape_of, double h, body *out)
+{
+    const face_step *st = &f->step;
+    bool stopped = h >= f->t_stop;
+    double s = stopped || !(st->h > 0) ? (st->h > 0 ? 1 : 0) : h / st->h, y[6];
+    for (int i = 0; i < 6; i++)
+        y[i] = st->r[0][i] +
+               s * (st->r[1][i] + (1 - s) * (st->r[2][i] + s * (st->r[3][i] + (1 - s) * st->r[4][i])));
+    if (s == 1)
+        for (int i = 0; i < 6; i++) y[i] = st->r[0][i] + st->r[1][i]; /* (the step's end, exactly) */
+    vec3 c = v3_add(f->c0, v3_add(v3_scale(f->e1, y[0]), v3_scale(f->e2, y[1])));
+    out->q = y[2] != 0 ? q_normalize(q_mul(q_axis_angle(f->n, y[2]), f->q0)) : f->q0;
+    bool still = stopped && !st->more;
+    out->v = still ? v3(0, 0, 0) : v3_add(v3_scale(f->e1, y[3]), v3_scale(f->e2, y[4]));
+    out->w = still ? v3(0, 0, 0) : v3_scale(f->n, y[5]);
+    out->L = m3_mulv(body_inertia_world(out), out->w);
+    out->rot_given = false;
+    vec3 com = shape_of->shape.mass.com;
+    out->x = c;
+    if (com.x != 0 || com.y != 0 || com.z != 0) out->x = v3_sub(c, q_rotate(out->q, com));
+}
+
 void flight_at(const flight *f, const body *shape_of, double t, body *out)
 {
     double h = t - f->t0;
@@ -125,6 +160,10 @@ void flight_at(const flight *f, const body *shape_of, double t, body *out)
     }
     if (f->kind == FLIGHT_ROLL) {
         roll_at(f, shape_of, h, out);
+        return;
+    }
+    if (f->kind == FLIGHT_SPIN) {
+        spin_step_at(f, shape_of, h, out);
         return;
     }
     bool stopped = f->kind == FLIGHT_SLIDE && h >= f->t_stop;

@@ -20,6 +20,10 @@
  *    resistance give (friction_face), until its speed reaches zero at t_stop
  *    (an event), where it stays; it turns about n x u by the distance gone over
  *    its radius, at w = n x v / r (no slip).
+ *  - FLIGHT_SPIN: a flat body sliding and spinning on a level face with
+ *    friction over its face (facespin.h): one step of the integration of its
+ *    slide and spin, read from its dense output, until t_stop, the step's end
+ *    (an event: the next step starts there, or it stops).
  *  - FLIGHT_STILL: the body stays where it is (resting, static).
  *  - FLIGHT_HELD: held by the hand (hold.h), the body is fixed to a point, the
  *    pivot, that moves at a constant velocity, and turns about it at a constant
@@ -37,7 +41,20 @@
 #include "spin.h"
 #include "vmath.h"
 
-typedef enum { FLIGHT_STILL, FLIGHT_FREE, FLIGHT_SLIDE, FLIGHT_HELD, FLIGHT_ROLL } flight_kind;
+typedef enum { FLIGHT_STILL, FLIGHT_FREE, FLIGHT_SLIDE, FLIGHT_HELD, FLIGHT_ROLL, FLIGHT_SPIN } flight_kind;
+
+/* One step of a flat body sliding and spinning on a level face (facespin.h),
+ * h long: in the face's axes (e1, e2 = friction_basis of its normal), the
+ * displacement of its centre of mass, its turn about the normal, its velocity
+ * and its spin, y = (x, y, turn, vx, vy, w), at s in [0, 1] of the step r0 + s
+ * (r1 + (1 - s) (r2 + s (r3 + (1 - s) r4))) (Dormand and Prince's dense
+ * output).  more: it goes on after the step; else its slip and spin stop there
+ * together (|v| + |w| R < 1e-9 m/s).  tips: no step could be taken (h 0: the
+ * pressure that balances it gives out at once), it tips. */
+typedef struct {
+    double h, r[5][6];
+    bool more, tips;
+} face_step;
 
 typedef struct {
     flight_kind kind;
@@ -57,6 +74,8 @@ typedef struct {
                        *   (else its state asked for none, and t_stop is 0) */
     vec3 u;           /* ROLL: the line it rolls along, */
     double radius;    /*   and its radius */
+    face_step step;   /* SPIN: its step (t_stop its length), in the axes e1, e2 */
+    vec3 e1, e2;
     double rate;      /* no point of the body turns faster than rate (rad/s) */
     long id;          /* a number no other flight of this world has */
 } flight;
@@ -74,11 +93,14 @@ void flight_start(flight *f, const body *b, flight_kind kind, double t0, vec3 a,
  * closed form holds), the acceleration of its centre of mass, the fixed axis
  * it turns about and the constant rate of change of its spin about it
  * (SLIDE), and how long until its slip (SLIDE) or speed (ROLL) reaches zero
- * (HUGE_VAL: never). */
+ * (HUGE_VAL: never); or (spins) a step of its slide and spin, t_stop its
+ * length. */
 typedef struct {
     body_mode mode;
     vec3 a, axis;
     double dw, t_stop;
+    bool spins;     /* sliding and spinning at once: step holds its motion */
+    face_step step;
 } face_motion;
 
 /* Starts b's flight f of kind FLIGHT_SLIDE or FLIGHT_ROLL on a face of normal

@@ -22,6 +22,7 @@
 #include <string.h>
 
 #include "contact.h"
+#include "facespin.h"
 #include "tolerance.h"
 
 /* Stretches of a turning slip in one impact (each at most 1/64 of the impulse's
@@ -52,16 +53,46 @@ bool friction_ball(const body *b)
 static face_motion ball_slides(vec3 gt, double gn, double mu, double k, double r, vec3 n, vec3 sl,
                                double slip, double round)
 {
-    face_motion m = {MODE_SLIDE, v3_mad(gt, sl, -mu * gn), v3_cross(n, sl), mu * gn / (k * r), HUGE_VAL};
+    face_motion m = {.mode = MODE_SLIDE, .a = v3_mad(gt, sl, -mu * gn), .axis = v3_cross(n, sl),
+                     .dw = mu * gn / (k * r), .t_stop = HUGE_VAL};
     double ds = v3_dot(gt, sl) - mu * gn * (1 + 1 / k);
     if (v3_len(v3_cross(gt, sl)) > round || (slip == 0 && ds < 0)) m.mode = MODE_GENERAL;
     else if (ds < 0) m.t_stop = slip / -ds;
     return m;
 }
 
-face_motion friction_face(const body *b, const body *s, vec3 g, vec3 n, body_mode want, vec3 *lean)
+/* A box sliding and spinning on a level face (facespin.h): its mode, and
+ * (hmax >= 0) its step, at most hmax long (0: any; where none can be taken,
+ * tips is set and t_stop is 0); the centre of pressure's lean as
+ * friction_face's. */
+static face_motion face_spins(const body *b, vec3 n, double mu, double gn, vec3 v, double hmax, vec3 *lean)
 {
-    face_motion m = {MODE_GENERAL, v3(0, 0, 0), n, 0, HUGE_VAL};
+    face_motion m = {.mode = MODE_GENERAL, .a = v3(0, 0, 0), .axis = n, .t_stop = HUGE_VAL};
+    face_spin fs;
+    if (!face_spin_init(&fs, b, n, mu, gn)) return m;
+    double vp[2] = {v3_dot(v, fs.e1), v3_dot(v, fs.e2)}, w = v3_dot(b->w, n), a[2], dw;
+    if (!face_spin_accel(&fs, 0, vp, w, a, &dw)) return m; /* it tips */
+    /* the centre of pressure: h lean, lean = -F / N */
+    *lean = v3_scale(v3_add(v3_scale(fs.e1, a[0]), v3_scale(fs.e2, a[1])), -1 / gn);
+    m.mode = MODE_SLIDE;
+    m.spins = true;
+    if (hmax < 0) return m;
+    /* (a step that cannot be taken ends at once: it tips there) */
+    m.step.tips = !face_spin_step(&fs, vp, w, hmax, &m.step);
+    m.t_stop = m.step.tips ? 0 : m.step.h;
+    m.a = v3(0, 0, 0);
+    if (m.step.h > 0) {
+        /* (the mean acceleration over the step: the parabola that the
+         * schedule bounds its path by) */
+        double ax = m.step.r[1][3] / m.step.h, ay = m.step.r[1][4] / m.step.h;
+        m.a = v3_add(v3_scale(fs.e1, ax), v3_scale(fs.e2, ay));
+    }
+    return m;
+}
+
+face_motion friction_face(const body *b, const body *s, vec3 g, vec3 n, body_mode want, double hmax, vec3 *lean)
+{
+    face_motion m = {.mode = MODE_GENERAL, .a = v3(0, 0, 0), .axis = n, .t_stop = HUGE_VAL};
     double mu = friction_mu(b, s), c = friction_rolling(b, s), gn = -v3_dot(g, n);
     *lean = v3(0, 0, 0);
     if (!(mu > 0) || !(gn > 0) || !(b->mass > 0)) return m;
@@ -80,6 +111,9 @@ face_motion friction_face(const body *b, const body *s, vec3 g, vec3 n, body_mod
              * couple to mu g_n m arm, against the spin, until it stops */
             double arm = vl == 0 && gtl == 0 ? contact_face_arm(b, n) : -1;
             double in = v3_dot(n, m3_mulv(body_inertia_world(b), n));
+            /* else sliding and spinning at once (or spinning on a face not so
+             * symmetric), on a level face: friction over the face */
+            if (gtl == 0 && !(arm > 0)) return face_spins(b, n, mu, gn, v, hmax, lean);
             if (!(arm > 0) || !(in > 0)) return m;
             m.mode = MODE_SLIDE;
             m.dw = -copysign(mu * gn * b->mass * arm / in, wn);

@@ -118,8 +118,12 @@ void friction_restitute(const impulse_row *rows, int m, body *const *bs, const b
  *    must lie inside the region they touch on, or the box tips.  Spinning in
  *    place about n on a level face, on a face of its own centrally symmetric
  *    about its centre of mass's foot (contact_face_arm: the pressure is then
- *    uniform), its spin slows at mu g_n m arm / I_n until it stops; spinning
- *    and sliding at once has no closed form;
+ *    uniform), its spin slows at mu g_n m arm / I_n until it stops; sliding
+ *    and spinning at once on a level face (or spinning on a face not so
+ *    symmetric), it moves by friction over its face (facespin.h: spins set;
+ *    where hmax >= 0 the first step of its motion, at most hmax long (0:
+ *    any), t_stop its length, or where no step can be taken t_stop 0 and
+ *    step.tips; where no pressure balances it now, it tips: general);
  *  - a ball (I = k m r^2), slipping at s = v - r w x n: it slides at g_t - mu
  *    g_n s/|s|, its spin growing by mu g_n / (k r) about n x s/|s|, until its
  *    slip is zero (t_stop: ds/dt = g_t - mu g_n (1 + 1/k) s/|s|); not
@@ -130,7 +134,7 @@ void friction_restitute(const impulse_row *rows, int m, body *const *bs, const b
  * pair has no friction, there is no closed form (MODE_GENERAL).  want is the
  * mode asked for (MODE_SLIDE or MODE_ROLL: that mode's motion, t_stop 0 where
  * it ends at once), or MODE_FREE: the mode the state gives. */
-face_motion friction_face(const body *b, const body *s, vec3 g, vec3 n, body_mode want, vec3 *lean);
+face_motion friction_face(const body *b, const body *s, vec3 g, vec3 n, body_mode want, double hmax, vec3 *lean);
 
 /* True when b is a ball to friction_face: a sphere with its centre of mass at
  * its centre. */

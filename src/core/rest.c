@@ -141,15 +141,17 @@ static bool try_face(world *w, body *m, const body *s, int si, int face, vec3 n,
         if (v3_len(v3_mad(t.w, n, -wn)) * R > tol) return false;
         body_set_angular_vel(&t, v3(0, 0, 0));
         if (!contact_level(&t, s, face, REST_LEVEL_TILT, hover)) return false;
-        /* a spin about n is kept where it has a closed form (friction_face):
-         * at rest on a level face, on a face of its own that the support's
-         * holds wherever it turns (the circle its corners sweep inside) */
-        double arm = v3_len(v) == 0 && v3_len(gt) <= SIM_ACCEL_ROUND * (1 + R) ? contact_face_arm(&t, n) : -1;
-        bool inside = arm > 0;
+        /* a spin about n is kept on a level face, on a face of its own that
+         * the support's holds wherever it turns (the circle its corners sweep
+         * inside): in closed form at rest on a face centrally symmetric
+         * (friction_face), else by friction over the face (facespin.h), where
+         * it is above tol (below it, it is dropped, as before that form) */
+        bool inside = v3_len(gt) <= SIM_ACCEL_ROUND * (1 + R);
         const poly_face *F = &hf->f[local];
         for (int k = 0; k < F->count && inside; k++)
             inside = gap_to_edge(s, hf, F, k, n, body_com(&t), v, v3(0, 0, 0)).g0 > R;
-        if (inside && wn != 0) body_set_angular_vel(&t, v3_scale(n, wn));
+        if (inside && wn != 0 && (fabs(wn) * R > tol || (v3_len(v) == 0 && contact_face_arm(&t, n) > 0)))
+            body_set_angular_vel(&t, v3_scale(n, wn));
         else if (fabs(wn) * R > tol) return false;
     } else {
         if (fabs(v3_dot(t.w, n)) * R > tol) return false;
@@ -163,7 +165,7 @@ static bool try_face(world *w, body *m, const body *s, int si, int face, vec3 n,
     }
     t.rot_given = false;
     vec3 lean;
-    face_motion fm = friction_face(&t, s, g, n, MODE_FREE, &lean);
+    face_motion fm = friction_face(&t, s, g, n, MODE_FREE, -1, &lean);
     if (fm.mode == MODE_GENERAL) return false;
     if (!friction_ball(&t)) {
         /* the centre of pressure, h lean from under the centre of mass (h its
@@ -290,7 +292,11 @@ double rest_slide_exit(const world *w, int i, double t)
     const body *m = w->bodies[i];
     if (m->state != STATE_DYNAMIC || !body_mode_on_face(m->mode) || m->slide_on < 0) return HUGE_VAL;
     const flight *f = &w->step.fl[i];
-    if (f->kind != FLIGHT_SLIDE && f->kind != FLIGHT_ROLL) return HUGE_VAL;
+    if (f->kind != FLIGHT_SLIDE && f->kind != FLIGHT_ROLL && f->kind != FLIGHT_SPIN) return HUGE_VAL;
+    /* a spinning one's face stays on the support's while its centre of mass
+     * keeps its reach from the edges (try_face); its path is bounded by the
+     * parabola of its step's mean acceleration */
+    double keep = f->kind == FLIGHT_SPIN ? m->shape.r_out : 0;
     const body *s = w->bodies[m->slide_on];
     int face;
     const poly *h = shape_face(&s->shape, m->slide_face, &face);
@@ -306,6 +312,7 @@ double rest_slide_exit(const world *w, int i, double t)
     double best = HUGE_VAL;
     for (int k = 0; k < F->count; k++) {
         edge_gap g = gap_to_edge(s, h, F, k, n, c, v, a);
+        g.g0 -= keep;
         if (past_edge(g)) return t; /* over the edge already */
         best = d_min(best, first_below(d_max(g.g0, 0), g.g1, g.g2));
     }
@@ -317,6 +324,14 @@ bool rest_face_stop(world *w, int i)
     body *m = w->bodies[i];
     const flight *f = &w->step.fl[i];
     if (!(f->t_stop < HUGE_VAL) || w->time < f->t0 + f->t_stop) return false;
+    /* a spinning one's step: it goes on from the next (retime_object), or,
+     * where none could be taken, it tips: the clusters take it */
+    if (f->kind == FLIGHT_SPIN && f->step.more) return true;
+    if (f->kind == FLIGHT_SPIN && f->step.tips) {
+        m->mode = MODE_GENERAL;
+        m->slide_on = -1;
+        return true;
+    }
     /* where the closed form ended, exactly: a box, or a rolling ball, still; a
      * sliding ball rolling */
     if (f->closed) {
@@ -336,6 +351,9 @@ bool rest_slide_on(world *w, int i)
 {
     body *m = w->bodies[i];
     int from = m->slide_on;
+    /* (a spinning one leaves its face where its reach does: the clusters take
+     * it there) */
+    if (w->step.fl[i].kind == FLIGHT_SPIN) return false;
     const body *s = w->bodies[from];
     int local;
     const poly *h = shape_face(&s->shape, m->slide_face, &local);

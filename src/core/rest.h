@@ -17,7 +17,10 @@
  *    slipping), stuck, or rolling (a ball), each until its slip or its speed
  *    reaches zero, an exact event too (rest_face_stop), where it gets its mode
  *    anew; a box whose centre of pressure friction moves out of the region it
- *    stands on tips, and is general;
+ *    stands on tips, and is general; a box sliding and spinning at once on a
+ *    level face moves by friction over its face (facespin.h), a step of its
+ *    integration at a time, each step's end an event, until both stop
+ *    together;
  *  - general: anything else (tipping over an edge, pivoting on it, stacks and
  *    piles that move): its cluster (the objects pressed together with it) moves
  *    with the contact forces found as it goes (cluster.h).
@@ -58,8 +61,10 @@ double rest_slide_exit(const world *w, int i, double t);
  * slip or its speed reaching zero: flight.h's t_stop) at the world's time, its
  * state there (synced to it): makes that end exact (a box or a rolling ball
  * still, a sliding ball rolling) and gives it its mode anew (it sticks, rolls,
- * slides on, or goes to a cluster).  False, and nothing changed, when its
- * event is not that end. */
+ * slides on, or goes to a cluster); at the end of a step of a slide and spin
+ * that goes on (FLIGHT_SPIN), nothing (its next step starts there), and where
+ * no step could be taken (it tips) it is general.  False,
+ * and nothing changed, when its event is not that end. */
 bool rest_face_stop(world *w, int i);
 
 /* Sliding object i (its state at the instant its centre of mass leaves its face)

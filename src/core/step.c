@@ -158,8 +158,10 @@ void step_start(world *w, int i, double t)
             /* in closed form; where the state has none, its event comes at once
              * (rest_face_stop: its mode is found anew) */
             vec3 lean;
-            face_motion m = friction_face(b, s, world_accel(w), b->slide_n, b->mode, &lean);
-            if (m.mode == MODE_GENERAL) m = (face_motion){MODE_GENERAL, v3(0, 0, 0), b->slide_n, 0, 0};
+            double hmax = d_max(0, w->step.t_end - t);
+            face_motion m = friction_face(b, s, world_accel(w), b->slide_n, b->mode, hmax, &lean);
+            if (m.mode == MODE_GENERAL)
+                m = (face_motion){.mode = MODE_GENERAL, .a = v3(0, 0, 0), .axis = b->slide_n, .t_stop = 0};
             flight_kind k = b->mode == MODE_ROLL ? FLIGHT_ROLL : FLIGHT_SLIDE;
             flight_start_face(f, b, k, t, &m, b->slide_n, w->step.t_end, id);
             return;
