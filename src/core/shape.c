@@ -337,8 +337,13 @@ static int build_sphere(shape *s, char *err, size_t errlen)
     shape_params ball = s->p;
     ball.a1 = ball.a2 = ball.a3 = r;
     ball.exp1 = ball.exp2 = 1;
-    if (sq_count(&ball) < 0 || sq_mesh(&ball, &s->draw) < 0) {
+    if (sq_count(&ball) < 0) {
         errmsg_set(err, errlen, "sphere: resolution %d x %d is too large", s->p.ures,
+                s->p.vres);
+        return -1;
+    }
+    if (sq_mesh(&ball, &s->draw) < 0) {
+        errmsg_set(err, errlen, "sphere: out of memory at resolution %d x %d", s->p.ures,
                 s->p.vres);
         return -1;
     }
