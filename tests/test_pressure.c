@@ -348,15 +348,17 @@ static void grooves_rest(void **state)
 
 /* ---- the slot ---- */
 
-/* Half the slot's width: a ball's radius (0.05 m) and half of 1e-7 m. */
-#define SLOT_HALF (0.05 + 5e-8)
+/* The radius of the slot's balls (m): the slot is 1e-7 m wider than twice it. */
+static double g_slot_r = 0.05;
 
 /* A slot along y on a static floor whose top is at z = 0, between static sides
- * 1e-7 m further apart than a ball's diameter, closed at y = +-1.3 by static
- * ends (bench/crowd.awk's slot), with gravity; then `balls`, statements making
- * balls of radius 0.05 in it (issue 35's crowd). */
-static void slot(const char *balls)
+ * 1e-7 m further apart than the diameter of a ball of radius r, closed at
+ * y = +-1.3 by static ends (bench/crowd.awk's slot for r = 0.05), with gravity;
+ * then `balls`, statements making balls of radius r in it (issue 35's crowd). */
+static void slot(double r, const char *balls)
 {
+    g_slot_r = r;
+    double half = r + 5e-8;
     char *text = malloc(65536);
     assert_non_null(text);
     snprintf(text, 65536,
@@ -366,7 +368,7 @@ static void slot(const char *balls)
              "cube side-w; mass = -1; size = (0.05, 1.5, 1); translate = (%.17g, 0, 1)\n"
              "cube end-n; mass = -1; size = (0.05, 0.05, 1); translate = (0, 1.35, 1)\n"
              "cube end-s; mass = -1; size = (0.05, 0.05, 1); translate = (0, -1.35, 1)\n%s",
-             SLOT_HALF + 0.05, -SLOT_HALF - 0.05, balls);
+             half + 0.05, -half - 0.05, balls);
     assert_int_equal(run(text), CMD_OK);
     free(text);
 }
@@ -392,7 +394,7 @@ static int run_slot(const char *what, int frames)
         for (int i = 0; i < w->n; i++) {
             const body *o = w->bodies[i];
             vec3 c = body_com(o);
-            if (!body_is_static(o) && (fabs(c.x) > SLOT_HALF - 0.05 + 1e-6 || c.z < 0.05 - 1e-6))
+            if (!body_is_static(o) && (fabs(c.x) > 5e-8 + 1e-6 || c.z < g_slot_r - 1e-6))
                 fail_msg("%s, frame %d: '%s' out of the slot at (%.17g, %.17g, %.17g)", what, f, o->name,
                          c.x, c.y, c.z);
         }
@@ -405,27 +407,28 @@ static int run_slot(const char *what, int frames)
     return -1;
 }
 
-/* One ball of e = 0.5 dropped into the slot from height h (its bottom above
- * the floor's top), thrown across it at vx: it rattles between the sides 1e-7 m
- * apart, whose normals are horizontal, so its fall and bounces are a ball's on a
- * floor alone: it lands after t0 = sqrt(2 h / g), and its bounces, each e times
- * the one before, end at t0 (1 + 2 e / (1 - e)) (it rests then, or sooner, when
- * a bounce's speed falls below the rest speed).  It rests by then and a frame
- * more, answering every contact: no event guard, no problem unsolved, no pair
- * moved apart at a frame's end. */
+/* One ball of radius r and elasticity e dropped into the slot from height h
+ * (its bottom above the floor's top), thrown across it at vx: it rattles
+ * between the sides 1e-7 m apart, whose normals are horizontal, so its fall and
+ * bounces are a ball's on a floor alone: it lands after t0 = sqrt(2 h / g), and
+ * its bounces, each e times the one before, end at t0 (1 + 2 e / (1 - e)) (it
+ * rests then, or sooner, when a bounce's speed falls below the rest speed).  It
+ * rests by then and a frame more, answering every contact: no event guard, no
+ * problem unsolved, no pair moved apart at a frame's end. */
 static void ball_in_slot_rests(void **state)
 {
     (void)state;
-    const double vx[] = {0.5, -1.7, 3.1}, h[] = {0.35, 0.12, 0.6};
+    const double r[] = {0.05, 0.02, 0.1, 0.05}, e[] = {0.5, 0.3, 0.8, 0.5}, vx[] = {0.5, -1.7, 3.1, -0.2},
+                 h[] = {0.35, 0.12, 0.6, 0.05};
     for (size_t k = 0; k < sizeof vx / sizeof vx[0]; k++) {
-        char ball[256], what[64];
+        char ball[256], what[96];
         snprintf(ball, sizeof ball,
-                 "sphere b; radius = 0.05; elasticity = 0.5; translate = (0, %g, %.17g); velocity = (%g, 0, 0)\n",
-                 0.4 * (double)k - 0.5, 0.05 + h[k], vx[k]);
-        snprintf(what, sizeof what, "a ball from %g m at %g m/s across", h[k], vx[k]);
-        slot(ball);
+                 "sphere b; radius = %g; elasticity = %g; translate = (0, %g, %.17g); velocity = (%g, 0, 0)\n",
+                 r[k], e[k], 0.4 * (double)k - 0.5, r[k] + h[k], vx[k]);
+        snprintf(what, sizeof what, "a ball of %g m, e = %g, from %g m at %g m/s across", r[k], e[k], h[k], vx[k]);
+        slot(r[k], ball);
         world *w = &g_sh.w;
-        double e = 0.5, g = -world_accel(w).z, t_end = sqrt(2 * h[k] / g) * (1 + 2 * e / (1 - e));
+        double g = -world_accel(w).z, t_end = sqrt(2 * h[k] / g) * (1 + 2 * e[k] / (1 - e[k]));
         int last = (int)ceil(t_end / 0.1) + 1, rested = run_slot(what, last);
         if (rested < 0) fail_msg("%s: not at rest after %d frames (its bounces end at %.3f s)", what, last, t_end);
         assert_int_equal(w->st.guards, 0);
@@ -456,7 +459,7 @@ static void crowd_in_slot_rests(void **state)
                       "sphere b%d; radius = 0.05; elasticity = 0.5; translate = (0, %.17g, %.17g); "
                       "velocity = (%g, 0, 0)\n",
                       i, -1.25 + i * 0.1, 0.05 + 0.1 * (1 + i % 4) + 0.05, (i % 3 - 1) * 0.5);
-    slot(balls);
+    slot(0.05, balls);
     free(balls);
     world *w = &g_sh.w;
     int rested = run_slot("26 balls in a row", 100);
