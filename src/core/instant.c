@@ -95,13 +95,13 @@ static int instant_room(instant_work *I, int nc, int nr)
 {
     bool ok = true;
     if (nc > I->cap_c) {
-        long n = nc > 2 * I->cap_c ? nc : 2 * I->cap_c;
+        long n = grow_doubled(nc, I->cap_c);
         I->c = grow_resized(I->c, sizeof *I->c, n, &ok);
         I->wave = grow_resized(I->wave, sizeof *I->wave, n, &ok);
         if (ok) I->cap_c = (int)n;
     }
     if (ok && nr > I->cap_r) {
-        long n = nr > 2 * I->cap_r ? nr : 2 * I->cap_r;
+        long n = grow_doubled(nr, I->cap_r);
         I->row = grow_resized(I->row, sizeof *I->row, n, &ok);
         I->take = grow_resized(I->take, sizeof *I->take, n, &ok);
         I->of = grow_resized(I->of, sizeof *I->of, n, &ok);

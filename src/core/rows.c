@@ -39,8 +39,7 @@ int rows_room(row_work *rw, int rows, int pairs)
 {
     bool ok = true;
     if (rows > rw->cap) {
-        /* (doubling, so that a cluster growing by a point at a time costs few) */
-        long n = rows > 2 * rw->cap ? rows : 2 * rw->cap;
+        long n = grow_doubled(rows, rw->cap);
         rw->row = grow_resized(rw->row, sizeof *rw->row, n, &ok);
         rw->cp = grow_resized(rw->cp, sizeof *rw->cp, n, &ok);
         rw->gap = grow_resized(rw->gap, sizeof *rw->gap, n, &ok);
@@ -61,7 +60,7 @@ int rows_room(row_work *rw, int rows, int pairs)
         if (ok) rw->cap = (int)n;
     }
     if (ok && pairs > rw->cap_pairs) {
-        long n = pairs > 2 * rw->cap_pairs ? pairs : 2 * rw->cap_pairs;
+        long n = grow_doubled(pairs, rw->cap_pairs);
         rw->pr = grow_resized(rw->pr, sizeof *rw->pr, n, &ok);
         if (ok) rw->cap_pairs = (int)n;
     }
