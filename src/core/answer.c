@@ -21,6 +21,7 @@
 #include "pairs.h"
 #include "rest.h"
 #include "retime.h"
+#include "rows.h"
 #include "step.h"
 #include "tolerance.h"
 #include "world.h"
@@ -45,6 +46,8 @@ void answer_free(answer_scratch *s)
     free(s->seeds);
     free(s->lcp);
     free(s->fw);
+    if (s->rw) rows_free(s->rw);
+    free(s->rw);
     instant_free(s->instant);
     answer_init(s);
 }
@@ -52,9 +55,10 @@ void answer_free(answer_scratch *s)
 int answer_prepare(world *w, bool changed)
 {
     answer_scratch *s = &w->answer;
-    int rows = IMPULSE_MAX_ROWS > SIM_CLUSTER_ROWS ? IMPULSE_MAX_ROWS : SIM_CLUSTER_ROWS;
-    if (!s->lcp && !(s->lcp = malloc(lcp_work_size(rows)))) return -1;
+    if (!s->lcp && !(s->lcp = malloc(lcp_work_size(IMPULSE_MAX_ROWS)))) return -1;
     if (!s->fw && !(s->fw = malloc(sizeof *s->fw))) return -1;
+    if (!s->rw && !(s->rw = calloc(1, sizeof *s->rw))) return -1;
+    if (rows_room(s->rw, SIM_CLUSTER_ROWS, SIM_CLUSTER_ROWS) != 0) return -1;
     if (instant_prepare(&s->instant, w->n) != 0) return -1;
     if (w->n > s->cap) {
         bool ok = true;

@@ -22,6 +22,7 @@
 #include "lcp.h"
 
 typedef struct world world;
+typedef struct row_work row_work;
 
 /* The scratch the answering works in (answer.c, and the clusters and rest it
  * calls: cluster.c, rest.c), sized by answer_prepare when the step is prepared,
@@ -56,6 +57,8 @@ typedef struct {
     instant_seed *seeds; /* per object: the landings one cluster's step ends at */
     lcp_work *lcp;    /* room for the largest contact problem (lcp.h) */
     friction_work *fw; /* room for the largest one with friction (friction.h) */
+    row_work *rw;     /* a cluster's problems (rows.h): grown to the largest
+                       * cluster met, the only scratch a frame may grow */
     instant_work *instant; /* an instant's contacts and rows (instant.h) */
     int cap;          /* objects the arrays have room for */
 } answer_scratch;

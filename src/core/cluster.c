@@ -24,27 +24,45 @@
 /* A cluster's points: the rows of its impulses, the points they follow and
  * their gaps when gathered (in `rows`, over row, cp and gap); the closed ones
  * first (nclosed), which the kicks keep closed, then the open ones, which land
- * (cluster.h). */
+ * (cluster.h).  The arrays are the answer scratch's row_work (rows.h), grown to
+ * hold every point of the cluster (room). */
 typedef struct {
-    impulse_row row[SIM_CLUSTER_ROWS];
-    cpoint cp[SIM_CLUSTER_ROWS]; /* p and q renumbered as body indices */
-    double gap[SIM_CLUSTER_ROWS];
+    impulse_row *row;
+    cpoint *cp;                  /* p and q renumbered as body indices */
+    double *gap;
     row_list rows;
     int nclosed;
     bool rough;                  /* some point has friction: the kicks are 3 a
                                   * point, along the normal and two tangents
                                   * (friction.h), with rolling resistance */
     int np;                      /* the lasting contacts they come from */
-    pair *pr[SIM_CLUSTER_ROWS];
+    pair **pr;
 } points;
+
+/* Makes room for `rows` more points and `pairs` more pairs than pts holds, and
+ * points pts at the scratch anew (it may have moved).  False when out of memory:
+ * then a point that finds no room sets pts->rows.full, which the caller counts
+ * as a problem not answered (stats: unsolved), never silently. */
+static bool room(world *w, points *pts, int rows, int pairs)
+{
+    row_work *rw = w->answer.rw;
+    bool ok = rows_room(rw, pts->rows.n + rows, pts->np + pairs) == 0;
+    pts->row = pts->rows.row = rw->row;
+    pts->cp = pts->rows.cp = rw->cp;
+    pts->gap = pts->rows.gap = rw->gap;
+    pts->rows.cap = rw->cap;
+    pts->pr = rw->pr;
+    return ok;
+}
 
 /* The pressed points of the cluster's lasting contacts, its objects in the states
  * of w->bodies (each pair once). */
 static void gather(world *w, const int *list, int n, points *pts, double reach)
 {
-    pts->rows = (row_list){pts->row, pts->cp, pts->gap, 0, SIM_CLUSTER_ROWS, false};
+    pts->rows = (row_list){0};
     pts->np = pts->nclosed = 0;
     pts->rough = false;
+    room(w, pts, 0, 0);
     bool *in = w->answer.mark;
     for (int k = 0; k < n; k++) in[list[k]] = true;
     for (int k = 0; k < n; k++) {
@@ -55,11 +73,13 @@ static void gather(world *w, const int *list, int n, points *pts, double reach)
             const body *A = w->bodies[p->a], *B = w->bodies[p->b];
             closest_result r = pair_query(w, p, A, B);
             if (r.status == CLOSEST_INVALID) continue;
-            if (pts->np < SIM_CLUSTER_ROWS) pts->pr[pts->np++] = p;
+            room(w, pts, CONTACT_MAX_POINTS, 1);
+            if (pts->np < w->answer.rw->cap_pairs) pts->pr[pts->np++] = p;
             rows_add(&pts->rows, p, A, B, &r, d_max(tol_contact(A, B), reach), 0, w->bodies);
         }
     }
     for (int k = 0; k < n; k++) in[list[k]] = false;
+    if (pts->rows.full) w->st.unsolved++;
 }
 
 /* The contact distance of point cp's pair. */
@@ -211,12 +231,14 @@ static bool open_in(const points *pts, const pair *p, body *const *bs)
  * step's end (the objects' states there in bs) lie closer than the contact's
  * closed points allow (or than its landing gap, with none): the points there
  * (material points and features, so rows now) are added to pts; the closed ones
- * among them follow the closed points (their floors and gaps written), and their
- * count is returned. */
-static int deepest_rows(world *w, points *pts, body **bs, double *floor_gap, double *gap, double h)
+ * among them follow the closed points (their floors and gaps written in the
+ * scratch's floor_gap and gap_end, which may move with the room made), and
+ * their count is returned. */
+static int deepest_rows(world *w, points *pts, body **bs, double h)
 {
+    row_work *rw = w->answer.rw;
     int m = pts->nclosed, added = 0;
-    for (int c = 0; c < pts->np && pts->rows.n < SIM_CLUSTER_ROWS; c++) {
+    for (int c = 0; c < pts->np; c++) {
         pair *p = pts->pr[c];
         const body *A = bs[p->a], *B = bs[p->b];
         closest_result r = pair_query_peek(w, p, A, B, false);
@@ -234,21 +256,22 @@ static int deepest_rows(world *w, points *pts, body **bs, double *floor_gap, dou
         for (int k = 0; k < m; k++) {
             const cpoint *x = &pts->cp[k];
             if (of_pair(x, p)) {
-                least = any ? d_min(least, floor_gap[k]) : floor_gap[k];
+                least = any ? d_min(least, rw->floor_gap[k]) : rw->floor_gap[k];
                 any = true;
             }
         }
         if (r.distance >= least - tol) continue;
         /* their gaps now set their floors, and their gaps there what is left */
         int first = pts->rows.n;
+        if (!room(w, pts, CONTACT_MAX_POINTS, 0)) w->st.unsolved++;
         rows_add(&pts->rows, p, A, B, &r, tol_contact(A, B), 0, w->bodies);
         int before = pts->nclosed;
         sort_closed(w, pts, first);
         for (int k = before; k < pts->nclosed; k++) {
             const cpoint *x = &pts->cp[k];
             vec3 nn, at;
-            floor_gap[k] = floor_of(w, x, pts->gap[k], h);
-            gap[k] = cpoint_eval(x, bs[x->p], bs[x->q], &nn, &at) - floor_gap[k];
+            rw->floor_gap[k] = floor_of(w, x, pts->gap[k], h);
+            rw->gap_end[k] = cpoint_eval(x, bs[x->p], bs[x->q], &nn, &at) - rw->floor_gap[k];
         }
         added += pts->nclosed - before;
     }
@@ -317,54 +340,61 @@ static void note_landing(world *w, const points *pts, int k)
     if (!body_is_static(w->bodies[x->q])) w->answer.landing[x->q] = slot;
 }
 
-/* newton's kicks with friction at some point (lam: three a point): at each
- * closed point, its normal kick keeps its gap at the step's end as the
- * frictionless kicks do, and its tangential kick stops its slip at the step's
- * end, within its cone (friction.h), with rolling resistance beside. */
-static void newton_rough(world *w, const int *list, int n, points *pts, double *lam, double t,
-                         double h)
+/* newton's kicks with friction at some point (lam, the scratch's: three a
+ * point): at each closed point, its normal kick keeps its gap at the step's end
+ * as the frictionless kicks do, and its tangential kick stops its slip at the
+ * step's end, within its cone (friction.h), with rolling resistance beside.
+ * False, the kicks as they were, when the closed points come to more than the
+ * cone solve holds (FRICTION_MAX_POINTS): the caller answers them without
+ * friction. */
+static bool newton_rough(world *w, const int *list, int n, points *pts, double t, double h)
 {
     body **bs = w->answer.now;
     bool *mobile = w->answer.mark;
     friction_work *fw = w->answer.fw;
+    row_work *rw = w->answer.rw;
     int m = pts->nclosed;
-    double gap[SIM_CLUSTER_ROWS], floor_gap[SIM_CLUSTER_ROWS], slip[2 * SIM_CLUSTER_ROWS];
-    vec3 at[SIM_CLUSTER_ROWS];
-    for (int k = 0; k < m; k++) floor_gap[k] = floor_of(w, &pts->cp[k], pts->gap[k], h);
+    if (m > FRICTION_MAX_POINTS) return false;
+    for (int k = 0; k < m; k++) rw->floor_gap[k] = floor_of(w, &pts->cp[k], pts->gap[k], h);
     friction_rows(pts->row, m, fw->rows);
     impulse_matrix(fw->rows, 3 * m, bs, mobile, fw->A);
     bool roll = false;
     for (int k = 0; k < pts->rows.n; k++) roll = roll || pts->row[k].roll > 0;
     friction_flags f = {false, false, false};
+    bool fits = true;
     for (int it = 0; it < CLUSTER_NEWTON; it++) {
-        kick_flights(w, list, n, pts, m, lam, t);
+        kick_flights(w, list, n, pts, m, rw->lam, t);
         fly_kicked(w, list, n, t + h);
         bool done = !(roll && it == 0); /* (the couples act at solved impulses) */
         for (int k = 0; k < m; k++) {
             vec3 nn;
-            gap[k] = cpoint_eval(&pts->cp[k], bs[pts->cp[k].p], bs[pts->cp[k].q], &nn, &at[k]) -
-                     floor_gap[k];
-            double tol = 1e-3 * touch_at(w, &pts->cp[k]);
-            if ((lam[3 * k] > 0 && fabs(gap[k]) > tol) || gap[k] < -tol) done = false;
+            rw->gap_end[k] = cpoint_eval(&pts->cp[k], bs[pts->cp[k].p], bs[pts->cp[k].q], &nn, &rw->at[k]) -
+                             rw->floor_gap[k];
+            double tol = 1e-3 * touch_at(w, &pts->cp[k]), g = rw->gap_end[k];
+            if ((rw->lam[3 * k] > 0 && fabs(g) > tol) || g < -tol) done = false;
             /* its slip at the step's end, where it is then */
             for (int j = 0; j < 2; j++) {
                 impulse_row r = fw->rows[3 * k + 1 + j];
-                r.at = at[k];
-                slip[2 * k + j] = impulse_speed(&r, bs);
+                r.at = rw->at[k];
+                rw->slip[2 * k + j] = impulse_speed(&r, bs);
             }
         }
-        int added = done || it == CLUSTER_NEWTON - 1 ? deepest_rows(w, pts, bs, floor_gap, gap, h) : 0;
+        int added = done || it == CLUSTER_NEWTON - 1 ? deepest_rows(w, pts, bs, h) : 0;
         if (added > 0) {
-            for (int k = 3 * m; k < 3 * (m + added); k++) lam[k] = 0;
+            for (int k = 3 * m; k < 3 * (m + added); k++) rw->lam[k] = 0;
             for (int k = m; k < m + added; k++) {
                 vec3 nn;
-                cpoint_eval(&pts->cp[k], bs[pts->cp[k].p], bs[pts->cp[k].q], &nn, &at[k]);
-                slip[2 * k] = slip[2 * k + 1] = 0;
+                cpoint_eval(&pts->cp[k], bs[pts->cp[k].p], bs[pts->cp[k].q], &nn, &rw->at[k]);
+                rw->slip[2 * k] = rw->slip[2 * k + 1] = 0;
             }
         }
         for (int k = 0; k < n; k++) bs[list[k]] = w->bodies[list[k]];
         if (added > 0) {
             m += added;
+            if (m > FRICTION_MAX_POINTS) {
+                fits = false;
+                break;
+            }
             friction_rows(pts->row, m, fw->rows);
             impulse_matrix(fw->rows, 3 * m, bs, mobile, fw->A);
             done = false;
@@ -373,78 +403,80 @@ static void newton_rough(world *w, const int *list, int n, points *pts, double *
         /* Newton: gap / h + A (next - lam) >= 0 along the normals, the slips
          * + A (next - lam) along the tangents, over the cones */
         for (int k = 0; k < 3 * m; k++) {
-            double s = k % 3 == 0 ? gap[k / 3] / h : slip[2 * (k / 3) + k % 3 - 1];
-            for (int j = 0; j < 3 * m; j++) s -= fw->A[k * 3 * m + j] * lam[j];
+            double s = k % 3 == 0 ? rw->gap_end[k / 3] / h : rw->slip[2 * (k / 3) + k % 3 - 1];
+            for (int j = 0; j < 3 * m; j++) s -= fw->A[k * 3 * m + j] * rw->lam[j];
             fw->q[k] = s;
         }
         for (int k = 0; k < m; k++) fw->mu[k] = pts->row[k].mu;
-        for (int k = 0; k < 3 * m; k++) fw->z[k] = lam[k]; /* (from the last kicks) */
+        for (int k = 0; k < 3 * m; k++) fw->z[k] = rw->lam[k]; /* (from the last kicks) */
         int st = friction_cone_solve(m, fw->A, fw->q, fw->mu, fw->z, fw->w, &f.painleve);
         if (st < 0) {
             w->st.unsolved++; /* (the last kicks found stand) */
             break;
         }
         if (st > 0) f.unconverged = true;
-        for (int k = 0; k < 3 * m; k++) lam[k] = fw->z[k];
+        for (int k = 0; k < 3 * m; k++) rw->lam[k] = fw->z[k];
     }
     answer_count(w, f, list[0]);
+    return fits;
 }
 
-/* The kicks lam at the closed points of pts (more of them as deepest_rows finds
- * them, their kicks from 0) that keep them at their floors at the end of a step
- * of h from t, by Newton's method over the exact flights (cluster.h), from lam as
- * given (with friction: newton_rough). */
-static void newton(world *w, const int *list, int n, points *pts, double *lam, double t, double h)
+/* The kicks (the scratch's lam) at the closed points of pts (more of them as
+ * deepest_rows finds them, their kicks from 0) that keep them at their floors at
+ * the end of a step of h from t, by Newton's method over the exact flights
+ * (cluster.h), from lam as given (with friction: newton_rough; where its points
+ * are more than the cone solve holds, along the normals alone, from then on). */
+static void newton(world *w, const int *list, int n, points *pts, double t, double h)
 {
+    row_work *rw = w->answer.rw;
     if (pts->rough) {
-        newton_rough(w, list, n, pts, lam, t, h);
-        return;
+        if (newton_rough(w, list, n, pts, t, h)) return;
+        for (int k = 0; k < pts->nclosed; k++) rw->lam[k] = rw->lam[3 * k];
+        pts->rough = false;
     }
     body **bs = w->answer.now;
     bool *mobile = w->answer.mark;
     int m = pts->nclosed;
-    double A[SIM_CLUSTER_ROWS * SIM_CLUSTER_ROWS], q[SIM_CLUSTER_ROWS], next[SIM_CLUSTER_ROWS],
-        wv[SIM_CLUSTER_ROWS], gap[SIM_CLUSTER_ROWS], floor_gap[SIM_CLUSTER_ROWS];
-    impulse_matrix(pts->row, m, bs, mobile, A);
-    for (int k = 0; k < m * m; k++) A[k] *= h;
-    for (int k = 0; k < m; k++) floor_gap[k] = floor_of(w, &pts->cp[k], pts->gap[k], h);
+    impulse_matrix(pts->row, m, bs, mobile, rw->A);
+    for (int k = 0; k < m * m; k++) rw->A[k] *= h;
+    for (int k = 0; k < m; k++) rw->floor_gap[k] = floor_of(w, &pts->cp[k], pts->gap[k], h);
     for (int it = 0; it < CLUSTER_NEWTON; it++) {
         /* the gaps at the step's end after kicks lam: each object's copy kicked,
          * flown freely */
-        kick_flights(w, list, n, pts, m, lam, t);
+        kick_flights(w, list, n, pts, m, rw->lam, t);
         fly_kicked(w, list, n, t + h);
         bool done = true;
         for (int k = 0; k < m; k++) {
             vec3 nn, at;
-            gap[k] = cpoint_eval(&pts->cp[k], bs[pts->cp[k].p], bs[pts->cp[k].q], &nn, &at) -
-                     floor_gap[k];
-            double tol = 1e-3 * touch_at(w, &pts->cp[k]);
-            if ((lam[k] > 0 && fabs(gap[k]) > tol) || gap[k] < -tol) done = false;
+            rw->gap_end[k] = cpoint_eval(&pts->cp[k], bs[pts->cp[k].p], bs[pts->cp[k].q], &nn, &at) -
+                             rw->floor_gap[k];
+            double tol = 1e-3 * touch_at(w, &pts->cp[k]), g = rw->gap_end[k];
+            if ((rw->lam[k] > 0 && fabs(g) > tol) || g < -tol) done = false;
         }
         /* the points followed may miss where the objects meet at the step's end (a
          * curved side rolling over an edge brings its next facet): each contact's
          * own closest points there, when they are closer than its points allow,
          * are followed too (or land, when they are open now) */
-        int added = done || it == CLUSTER_NEWTON - 1 ? deepest_rows(w, pts, bs, floor_gap, gap, h) : 0;
+        int added = done || it == CLUSTER_NEWTON - 1 ? deepest_rows(w, pts, bs, h) : 0;
         for (int k = 0; k < n; k++) bs[list[k]] = w->bodies[list[k]];
         if (added > 0) {
-            for (int k = m; k < m + added; k++) lam[k] = 0;
+            for (int k = m; k < m + added; k++) rw->lam[k] = 0;
             m += added;
-            impulse_matrix(pts->row, m, bs, mobile, A);
-            for (int k = 0; k < m * m; k++) A[k] *= h;
+            impulse_matrix(pts->row, m, bs, mobile, rw->A);
+            for (int k = 0; k < m * m; k++) rw->A[k] *= h;
             done = false;
         }
         if (done || m == 0) break;
         /* Newton: gaps + h A (next - lam) >= 0, complementary to next >= 0 */
         for (int k = 0; k < m; k++) {
-            q[k] = gap[k];
-            for (int j = 0; j < m; j++) q[k] -= A[k * m + j] * lam[j];
+            rw->q[k] = rw->gap_end[k];
+            for (int j = 0; j < m; j++) rw->q[k] -= rw->A[k * m + j] * rw->lam[j];
         }
-        if (lcp_solve(m, A, q, next, wv, w->answer.lcp) != 0) {
+        if (lcp_solve(m, rw->A, rw->q, rw->next, rw->wv, rw->lcp) != 0) {
             w->st.unsolved++; /* (the last kicks found stand) */
             break;
         }
-        for (int k = 0; k < m; k++) lam[k] = next[k];
+        for (int k = 0; k < m; k++) rw->lam[k] = rw->next[k];
     }
 }
 
@@ -465,21 +497,21 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end)
     pts.rough = friction_any(pts.row, pts.rows.n);
     bool *mobile = w->answer.mark;
     for (int k = 0; k < n; k++) mobile[list[k]] = true;
-    double lam[3 * SIM_CLUSTER_ROWS];
-    for (int k = 0; k < 3 * pts.nclosed; k++) lam[k] = 0;
-    newton(w, list, n, &pts, lam, t, h);
+    row_work *rw = w->answer.rw;
+    for (int k = 0; k < 3 * pts.nclosed; k++) rw->lam[k] = 0;
+    newton(w, list, n, &pts, t, h);
     /* an open point that lands within the step ends it there (answer.h), with the
      * kicks found again for the shorter step, so that no closed point is below
      * its floor there; with them it lands by the step's end, or a hair after
      * (then early in the next step) */
     int which;
     for (int again = 0; again < 3; again++) {
-        double land = landing_time(w, list, n, &pts, lam, t, h, &which);
+        double land = landing_time(w, list, n, &pts, rw->lam, t, h, &which);
         if (which < 0) break;
         bool found_again = land < t + h;
         h = land - t;
         if (again > 0 && !found_again) break;
-        newton(w, list, n, &pts, lam, t, h);
+        newton(w, list, n, &pts, t, h);
     }
     if (which >= 0) note_landing(w, &pts, which);
     /* the kicks, and what they gave each object (answer.h: an instant within
@@ -489,7 +521,7 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end)
         const body *b = w->bodies[list[k]];
         rec[list[k]] = (kick_record){t, h, b->v, b->L};
     }
-    apply_kicks(w, &pts, pts.nclosed, w->answer.now, lam);
+    apply_kicks(w, &pts, pts.nclosed, w->answer.now, rw->lam);
     for (int k = 0; k < n; k++) {
         const body *b = w->bodies[list[k]];
         kick_record *r = &rec[list[k]];
@@ -508,18 +540,22 @@ void cluster_settle(world *w, const int *list, int n)
     bool *mobile = w->answer.mark;
     /* the touching points, and those the steps keep closed: they stop
      * approaching (not a landing one, whose approach is a collision) */
-    impulse_row rows[SIM_CLUSTER_ROWS];
-    double u[SIM_CLUSTER_ROWS], lam[SIM_CLUSTER_ROWS];
+    row_work *rw = w->answer.rw;
+    impulse_row *rows = rw->sub;
     int m = 0;
     for (int k = 0; k < pts.rows.n; k++)
         if (pts.gap[k] <= touch_at(w, &pts.cp[k]) || kept(w, &pts, k)) rows[m++] = pts.row[k];
     for (int k = 0; k < n; k++) mobile[list[k]] = true;
-    for (int k = 0; k < m; k++) u[k] = impulse_speed(&rows[k], bs);
-    if (m > 0 && friction_any(rows, m)) {
+    for (int k = 0; k < m; k++) rw->u[k] = impulse_speed(&rows[k], bs);
+    /* (with more points than the cone solve holds, along the normals alone, as
+     * the steps' kicks are then) */
+    if (m > 0 && m <= FRICTION_MAX_POINTS && friction_any(rows, m)) {
         friction_flags f = {false, false, false};
-        if (friction_compress(rows, m, bs, mobile, u, lam, w->answer.fw, &f) != 0) w->st.unsolved++;
+        if (friction_compress(rows, m, bs, mobile, rw->u, rw->lam, w->answer.fw, &f) != 0)
+            w->st.unsolved++;
         answer_count(w, f, list[0]);
-    } else if (m > 0 && impulse_solve(rows, m, bs, mobile, u, lam, w->answer.lcp) != 0) {
+    } else if (m > 0 &&
+               impulse_solve_in(rows, m, bs, mobile, rw->u, rw->lam, rw->lcp, rw->A, rw->q, rw->wv) != 0) {
         w->st.unsolved++;
     }
     for (int k = 0; k < n; k++) mobile[list[k]] = false;

@@ -20,6 +20,14 @@ static inline void *grow_for_one(void *items, int n, int *cap, size_t elem, int 
     return moved;
 }
 
+/* The room to grow an array of room cap to, for need items (need > cap): twice
+ * cap at least, so that what grows an item at a time (a crowd's contact points)
+ * moves its arrays few times. */
+static inline long grow_doubled(long need, long cap)
+{
+    return need > 2 * cap ? need : 2 * cap;
+}
+
 /* The array p resized to n elements (at least one) of elem bytes: the moved
  * array, or p itself with *ok set false when that fails. */
 static inline void *grow_resized(void *p, size_t elem, long n, bool *ok)

@@ -84,30 +84,44 @@ void impulse_apply(const impulse_row *rows, int n, body *const *bs, const bool *
 }
 
 /* The frictionless problem of impulse_solve set up and solved into lambda (not
- * least-norm, not applied): 0, or -1.  A is left in A. */
+ * least-norm, not applied): 0, or -1.  A (n x n), q and w are the caller's room;
+ * A is left in A. */
 static int normal_lcp(const impulse_row *rows, int n, body *const *bs, const bool *mobile,
-                      const double *u_before, double *lambda, lcp_work *work, double *A, double *q)
+                      const double *u_before, double *lambda, lcp_work *work, double *A, double *q,
+                      double *w)
 {
-    if (n <= 0 || n > IMPULSE_MAX_ROWS) return -1;
-    double w[IMPULSE_MAX_ROWS];
+    if (n <= 0) return -1;
     impulse_matrix(rows, n, bs, mobile, A);
     for (int k = 0; k < n; k++) q[k] = (1 + rows[k].e) * u_before[k];
     return lcp_solve(n, A, q, lambda, w, work) != 0 ? -1 : 0;
 }
 
+int impulse_solve_in(const impulse_row *rows, int n, body *const *bs, const bool *mobile,
+                     const double *u_before, double *lambda, lcp_work *work, double *A, double *q,
+                     double *w)
+{
+    if (normal_lcp(rows, n, bs, mobile, u_before, lambda, work, A, q, w) != 0) return -1;
+    /* (beyond IMPULSE_MAX_ROWS, a crowd's hundreds of rows, the least-norm
+     * sweeps would cost more than all the rest of its step; the motion is the
+     * same without them, lcp.h, only the split among dependent rows is not) */
+    if (n <= IMPULSE_MAX_ROWS) lcp_least_norm(n, A, q, lambda, work);
+    impulse_apply(rows, n, bs, mobile, lambda);
+    return 0;
+}
+
 int impulse_solve(const impulse_row *rows, int n, body *const *bs, const bool *mobile,
                   const double *u_before, double *lambda, lcp_work *work)
 {
-    double A[IMPULSE_MAX_ROWS * IMPULSE_MAX_ROWS], q[IMPULSE_MAX_ROWS];
-    if (normal_lcp(rows, n, bs, mobile, u_before, lambda, work, A, q) != 0) return -1;
-    lcp_least_norm(n, A, q, lambda, work);
-    impulse_apply(rows, n, bs, mobile, lambda);
-    return 0;
+    double A[IMPULSE_MAX_ROWS * IMPULSE_MAX_ROWS], q[IMPULSE_MAX_ROWS], w[IMPULSE_MAX_ROWS];
+    if (n > IMPULSE_MAX_ROWS) return -1;
+    return impulse_solve_in(rows, n, bs, mobile, u_before, lambda, work, A, q, w);
 }
 
 int impulse_solvable(const impulse_row *rows, int n, body *const *bs, const bool *mobile,
                      const double *u_before, lcp_work *work)
 {
-    double A[IMPULSE_MAX_ROWS * IMPULSE_MAX_ROWS], q[IMPULSE_MAX_ROWS], lambda[IMPULSE_MAX_ROWS];
-    return normal_lcp(rows, n, bs, mobile, u_before, lambda, work, A, q);
+    double A[IMPULSE_MAX_ROWS * IMPULSE_MAX_ROWS], q[IMPULSE_MAX_ROWS], lambda[IMPULSE_MAX_ROWS],
+        w[IMPULSE_MAX_ROWS];
+    if (n > IMPULSE_MAX_ROWS) return -1;
+    return normal_lcp(rows, n, bs, mobile, u_before, lambda, work, A, q, w);
 }

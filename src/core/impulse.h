@@ -54,6 +54,14 @@ void impulse_apply(const impulse_row *rows, int n, body *const *bs, const bool *
 int impulse_solve(const impulse_row *rows, int n, body *const *bs, const bool *mobile,
                   const double *u_before, double *lambda, lcp_work *work);
 
+/* impulse_solve for any n, in the caller's room: A (n x n), q and w (n each),
+ * work lcp_work_size(n) bytes (a cluster's rows, rows.h).  Beyond
+ * IMPULSE_MAX_ROWS rows lambda is one answer of many where rows are dependent
+ * (not least-norm): the same motion, for callers that read only that. */
+int impulse_solve_in(const impulse_row *rows, int n, body *const *bs, const bool *mobile,
+                     const double *u_before, double *lambda, lcp_work *work, double *A, double *q,
+                     double *w);
+
 /* Whether impulse_solve's frictionless problem has an answer (0) or not (-1),
  * nothing applied: a held object that pushes what cannot give way leaves none
  * (squeeze.h), and a cone solve, which always returns its best, cannot tell. */

@@ -28,8 +28,9 @@
 #include "tolerance.h"
 #include "world.h"
 
-/* Contacts, and rows of their points, that one instant may hold; a contact that
- * finds no room is left out of it (a pile of hundreds struck at once). */
+/* Contacts, and rows of their points, that one instant has room for from the
+ * start; a larger one (a crowd of hundreds struck at once) grows the room
+ * (instant_room), so that no contact is left out. */
 #define INSTANT_MAX_CONTACTS 64
 #define INSTANT_MAX_ROWS (4 * IMPULSE_MAX_ROWS)
 /* Waves an instant may take for each of its contacts before one last solve with
@@ -65,16 +66,16 @@ typedef enum {
 } solve_kind;
 
 struct instant_work {
-    contact c[INSTANT_MAX_CONTACTS];
-    int nc, nseeds;
-    impulse_row row[INSTANT_MAX_ROWS];
-    int nr;
+    contact *c;
+    int nc, nseeds, cap_c;
+    impulse_row *row;
+    int nr, cap_r;
     /* one solve: its rows, the contact of each, their normal speeds before (as
-     * the problem takes them) and after, their impulses */
-    impulse_row take[IMPULSE_MAX_ROWS];
-    int of[IMPULSE_MAX_ROWS], m;
-    double u[IMPULSE_MAX_ROWS], closing[IMPULSE_MAX_ROWS], lambda[IMPULSE_MAX_ROWS];
-    bool wave[INSTANT_MAX_CONTACTS];  /* the contacts a solve takes */
+     * the problem takes them) and after, their impulses (room for cap_r) */
+    impulse_row *take;
+    int *of, m;
+    double *u, *closing, *lambda;
+    bool *wave;     /* the contacts a solve takes (room for cap_c) */
     bool *joined;   /* per object: brought to the instant (in `objects`) */
     bool *opened;   /* per object: its contacts gathered */
     int *objects;   /* the objects joined, in the order they joined */
@@ -88,10 +89,35 @@ struct instant_work {
     int nbacks;
 };
 
+/* Makes room for at least nc contacts and nr rows, keeping what I holds: 0, or
+ * -1 when out of memory (the room as it was). */
+static int instant_room(instant_work *I, int nc, int nr)
+{
+    bool ok = true;
+    if (nc > I->cap_c) {
+        long n = grow_doubled(nc, I->cap_c);
+        I->c = grow_resized(I->c, sizeof *I->c, n, &ok);
+        I->wave = grow_resized(I->wave, sizeof *I->wave, n, &ok);
+        if (ok) I->cap_c = (int)n;
+    }
+    if (ok && nr > I->cap_r) {
+        long n = grow_doubled(nr, I->cap_r);
+        I->row = grow_resized(I->row, sizeof *I->row, n, &ok);
+        I->take = grow_resized(I->take, sizeof *I->take, n, &ok);
+        I->of = grow_resized(I->of, sizeof *I->of, n, &ok);
+        I->u = grow_resized(I->u, sizeof *I->u, n, &ok);
+        I->closing = grow_resized(I->closing, sizeof *I->closing, n, &ok);
+        I->lambda = grow_resized(I->lambda, sizeof *I->lambda, n, &ok);
+        if (ok) I->cap_r = (int)n;
+    }
+    return ok ? 0 : -1;
+}
+
 int instant_prepare(instant_work **iw, int n)
 {
     if (!*iw && !(*iw = calloc(1, sizeof **iw))) return -1;
     instant_work *I = *iw;
+    if (instant_room(I, INSTANT_MAX_CONTACTS, INSTANT_MAX_ROWS) != 0) return -1;
     if (n <= I->cap) return 0;
     bool ok = true;
     I->joined = grow_resized(I->joined, sizeof *I->joined, n, &ok);
@@ -111,6 +137,14 @@ void instant_free(instant_work *iw)
     free(iw->opened);
     free(iw->objects);
     free(iw->backs);
+    free(iw->c);
+    free(iw->wave);
+    free(iw->row);
+    free(iw->take);
+    free(iw->of);
+    free(iw->u);
+    free(iw->closing);
+    free(iw->lambda);
     free(iw);
 }
 
@@ -195,12 +229,17 @@ static void add_contact(world *w, instant_work *I, long slot, const closest_resu
                         closest_cache hit)
 {
     pair *p = &w->pairs.p[slot];
-    if (I->nc == INSTANT_MAX_CONTACTS || r->status == CLOSEST_INVALID) return;
+    if (r->status == CLOSEST_INVALID) return;
+    /* (room for it: where memory runs out it is left out, counted) */
+    if (instant_room(I, I->nc + 1, I->nr + CONTACT_MAX_POINTS) != 0) {
+        w->st.unsolved++;
+        return;
+    }
     const body *A = w->bodies[p->a], *B = w->bodies[p->b];
     /* (a crowded object's contacts do not bounce: guard.h) */
     bool crowd = guard_crowded(&w->guard, p->a) || guard_crowded(&w->guard, p->b);
     double e = crowd ? 0 : d_min(A->elasticity, B->elasticity);
-    row_list rl = {I->row + I->nr, NULL, NULL, 0, INSTANT_MAX_ROWS - I->nr, false};
+    row_list rl = {I->row + I->nr, NULL, NULL, 0, I->cap_r - I->nr, false};
     int n = rows_add(&rl, p, A, B, r, tol_region(A, B, r->distance), e, w->bodies);
     if (n == 0) return;
     contact *c = &I->c[I->nc++];
@@ -296,8 +335,7 @@ static int solve_rough(world *w, instant_work *I, int m, const bool *mob, bool h
 
 /* The contacts marked in I->wave solved together as `kind` says, their impulses
  * applied to the mobile objects and added to the contacts: 0, or -1 when there
- * are too many rows or no answer (nothing applied).  The contacts are taken
- * either way. */
+ * is no answer (nothing applied).  The contacts are taken either way. */
 static int solve(world *w, instant_work *I, solve_kind kind)
 {
     int m = I->m = 0;
@@ -308,7 +346,6 @@ static int solve(world *w, instant_work *I, solve_kind kind)
         c->taken = true;
         held = held || c->held;
         for (int r = c->first; r < c->first + c->n; r++) {
-            if (m == IMPULSE_MAX_ROWS) return -1;
             impulse_row *row = &I->take[m];
             *row = I->row[r];
             double u = impulse_speed(row, w->bodies);
@@ -329,9 +366,19 @@ static int solve(world *w, instant_work *I, solve_kind kind)
     /* (with friction, the same-instant waves' compression and restitution; the
      * speed limits' last solve stays frictionless, as it only stops what would
      * approach again) */
-    int ok = kind != SOLVE_LIMITS && friction_any(I->take, m)
-                 ? solve_rough(w, I, m, mob, held)
-                 : impulse_solve(I->take, m, w->bodies, mob, I->u, I->lambda, w->answer.lcp);
+    /* (beyond the cone solve's points, a crowd's, along the normals alone; beyond
+     * IMPULSE_MAX_ROWS in the clusters' scratch, rows.h) */
+    int ok;
+    if (kind != SOLVE_LIMITS && m <= FRICTION_MAX_POINTS && friction_any(I->take, m)) {
+        ok = solve_rough(w, I, m, mob, held);
+    } else if (m <= IMPULSE_MAX_ROWS) {
+        ok = impulse_solve(I->take, m, w->bodies, mob, I->u, I->lambda, w->answer.lcp);
+    } else {
+        row_work *rw = w->answer.rw;
+        ok = rows_room(rw, m, 0) != 0 ? -1
+                                       : impulse_solve_in(I->take, m, w->bodies, mob, I->u, I->lambda, rw->lcp,
+                                                          rw->A, rw->q, rw->wv);
+    }
     for (int k = 0; k < I->nobj; k++) mob[I->objects[k]] = false;
     if (ok != 0) return -1;
     for (int r = 0; r < m; r++) {

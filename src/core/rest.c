@@ -417,8 +417,8 @@ bool rest_balanced(world *w, const int *list, int n)
      * the supports push: what is left is its acceleration */
     body **bs = w->answer.now;
     bool *mobile = w->answer.mark;
-    impulse_row rows[SIM_CLUSTER_ROWS] = {{0}};
-    row_list rl = {rows, NULL, NULL, 0, SIM_CLUSTER_ROWS, false};
+    row_work *rw = w->answer.rw;
+    row_list rl = {rw->sub, NULL, NULL, 0, rw->cap, false};
     bool ok = true;
     for (int k = 0; k < n; k++) {
         int i = list[k];
@@ -437,19 +437,26 @@ bool rest_balanced(world *w, const int *list, int n)
             closest_result r = pair_query(w, p, A, B);
             double depth = friction_mu(A, B) > 0 ? d_max(tol_contact(A, B), REST_SUPPORT_DEPTH * tol_size(A, B))
                                                  : tol_contact(A, B);
+            /* (room for every point: a crowd's balance has hundreds) */
+            ok = rows_room(rw, rl.n + CONTACT_MAX_POINTS, 0) == 0;
+            rl.row = rw->sub;
+            rl.cap = rw->cap;
             rows_add(&rl, p, A, B, &r, depth, 0, w->bodies);
-            ok = !rl.full;
+            ok = ok && !rl.full;
         }
     }
     int nr = rl.n;
-    double lambda[SIM_CLUSTER_ROWS] = {0}, u[SIM_CLUSTER_ROWS] = {0};
+    impulse_row *rows = rw->sub;
+    double *lambda = rw->lam, *u = rw->u;
     for (int k = 0; k < nr; k++) u[k] = impulse_speed(&rows[k], bs);
     /* what rolling resistance holds: where every point sticks, and the objects
      * would only roll or tip about them, a couple of c r N holds an object
      * whose centre of mass is off its support by up to about c r, which leaves
      * it accelerating at up to about c g (c the least at its points) */
     double held = 0;
-    if (ok && nr > 0 && friction_any(rows, nr)) {
+    /* (with more points than the cone solve holds, balanced without friction,
+     * which asks more of the supports) */
+    if (ok && nr > 0 && nr <= FRICTION_MAX_POINTS && friction_any(rows, nr)) {
         friction_flags f = {false, false, false};
         ok = friction_compress(rows, nr, bs, mobile, u, lambda, w->answer.fw, &f) == 0;
         held = HUGE_VAL;
@@ -460,7 +467,7 @@ bool rest_balanced(world *w, const int *list, int n)
         }
         if (!(held < HUGE_VAL)) held = 0;
     } else if (ok && nr > 0) {
-        ok = impulse_solve(rows, nr, bs, mobile, u, lambda, w->answer.lcp) == 0;
+        ok = impulse_solve_in(rows, nr, bs, mobile, u, lambda, rw->lcp, rw->A, rw->q, rw->wv) == 0;
     }
     for (int k = 0; k < n && ok; k++) {
         const body *c = bs[list[k]];

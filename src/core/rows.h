@@ -4,7 +4,11 @@
  * Written once for every caller that answers contacts: a collision and the
  * lasting contacts answered with it (answer.c), a cluster's kicks (cluster.c) and
  * the balance of objects at rest (rest.c).  Rows are gathered into a row_list, a
- * caller's arrays with their room, so that none is allocated.
+ * caller's arrays with their room.  A cluster's problems, which have as many rows
+ * as its contacts have points (a hundred balls in a slot: hundreds), work in a
+ * row_work, grown to the largest cluster met (rows_room) and kept, so that a
+ * contact is never left out for want of room and a frame allocates only when a
+ * cluster is larger than any before.
  */
 #ifndef VROC_ROWS_H
 #define VROC_ROWS_H
@@ -35,5 +39,28 @@ typedef struct {
  * found no room sets l->full. */
 int rows_add(row_list *l, const pair *p, const body *a, const body *b, const closest_result *r,
              double tol, double e, body *const *bs);
+
+/* The scratch of a cluster's contact problems (answer_scratch; cluster.c,
+ * rest.c), each array with room for cap rows (lam for three a row, slip two, A
+ * cap x cap) and pr for cap_pairs pairs. */
+typedef struct row_work {
+    int cap, cap_pairs;
+    impulse_row *row;  /* a cluster's points' rows (cluster.c's points), */
+    cpoint *cp;        /*   their points, */
+    double *gap;       /*   their gaps when gathered */
+    impulse_row *sub;  /* some of them: the rows one problem solves */
+    double *A, *q, *next, *wv, *u, *gap_end, *floor_gap, *lam, *slip;
+    vec3 *at;
+    pair **pr;         /* the lasting contacts the points come from */
+    lcp_work *lcp;     /* lcp_work_size(cap) bytes */
+} row_work;
+
+/* Makes room in rw for at least rows rows and pairs pairs, keeping what the
+ * arrays hold (A excepted: its rows are laid out by its size).  Returns 0, or -1
+ * when out of memory (rw as it was). */
+int rows_room(row_work *rw, int rows, int pairs);
+
+/* Frees rw's arrays (rw itself is the caller's), leaving it empty. */
+void rows_free(row_work *rw);
 
 #endif

@@ -162,7 +162,8 @@ static inline double tol_accel(const body *a, const body *b)
  * SIM_CLUSTER_MOVE (m) in one. */
 #define SIM_CLUSTER_STEP 2e-3
 #define SIM_CLUSTER_MOVE 1e-3
-/* Rows of contact one cluster may hold (the corners of its contact regions). */
+/* Rows of contact (the corners of its contact regions) a cluster's scratch has
+ * room for from the start; a larger cluster grows it (rows.h). */
 #define SIM_CLUSTER_ROWS 64
 
 /* Events one internal step may answer before the event guard's last resort stops
