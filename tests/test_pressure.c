@@ -223,7 +223,7 @@ static int run_box(int seed, int frames)
  * warns at most once.  Among seeds 1 to 200, 78, 97 and 178 ran away (a
  * hundred thousand events in a step) before their crowds were answered with no
  * bounce (guard.h); since a cluster's steps stop their closed points none
- * does, and 55, 63 and 65 have crowds. */
+ * does, and 11 and 12 have crowds. */
 static void closed_boxes_keep_their_floor(void **state)
 {
     (void)state;
@@ -251,19 +251,21 @@ static void closed_boxes_keep_their_floor(void **state)
     assert_true(ran >= last * 9 / 10);
 }
 
-/* The guard's last resort, made cheap: seed 55's box, one of whose objects takes
- * part in a thousand events in a step of frame 4, with no crowd rule and a
+/* The guard's last resort, made cheap: seed 11's box, one of whose objects takes
+ * part in a thousand events in a step of frame 13, with no crowd rule and a
  * step's events limited to 2000: the objects stop where they are, the warning
- * names them once, stats counts it, and nothing falls through the floor.  (Seed
- * 78's, whose events ran away at t = 1.2 s, runs away no more since a cluster's
- * steps stop their closed points: cluster.h.) */
+ * names them once, stats counts it, and nothing falls through the floor.  (The
+ * seed is whichever box crowds early: seed 55's did until the random
+ * superquadrics' hulls came from their tessellation, numbered otherwise, and
+ * seed 78's, whose events ran away at t = 1.2 s, runs away no more since a
+ * cluster's steps stop their closed points: cluster.h.) */
 static void last_resort_keeps_the_floor(void **state)
 {
     (void)state;
-    assert_true(closed_box(55));
+    assert_true(closed_box(11));
     g_sh.w.guard.crowd_events = 1L << 40;
     g_sh.w.guard.max_events = 2000;
-    int warned = run_box(55, 10);
+    int warned = run_box(11, 14);
     assert_true(g_sh.w.st.guards > 0);
     assert_int_equal(warned, 1);
     assert_int_equal(g_sh.w.st.overflows, 0);

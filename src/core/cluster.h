@@ -35,8 +35,8 @@ typedef struct world world;
  * its objects (answer_scratch.landing). */
 double cluster_kick(world *w, const int *list, int n, double t, double t_end);
 
-/* The last kicks of the step (the objects' states at its end): the points the
- * steps keep closed, and touching ones, no longer approach (RATTLE's second
+/* The last kicks of the step (the objects' states at its end): the frictionless
+ * points the steps keep closed, and touching ones, no longer approach (RATTLE's second
  * kick, on every closed point: one left approaching, as a point kept at the hover
  * gap above the contact distance was, carries into the next step the speed the
  * force gave it over this one, and the kicks made energy of it, a pile's
