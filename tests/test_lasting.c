@@ -632,13 +632,16 @@ static int face_points(const body *b, int k, double (*pts)[3], int max)
 static double ts_step(double v0, double mu) { return v0 / (300 * mu * G); }
 
 /* The oracle's motion by fixed steps dt of the classical RK4 in (vx, vy, turn,
- * w) from (v0, 0) and w0, I the moment about the vertical over m: until |v| +
- * |w| R would fall past zero within the next step: the stop time, where the
- * last step's fall carried on reaches zero. */
-static double quad_stop_time(const quad_face *q, double mu, double v0, double w0, double I, double R, double dt)
+ * w) from v0 (its face's axes: the box's own at first) and w0, pressed at gn,
+ * pulled along the face at gt (friction's force mu gn m over the face), I the
+ * moment about the normal over m: until |v| + |w| R would fall past zero
+ * within the next step: the stop time, where the last step's fall carried on
+ * reaches zero; monotone: that |v| + |w| R must fall at every step. */
+static double quad_stop(const quad_face *q, double mu, double gn, const double gt[2], const double v0[2], double w0,
+                        double I, double R, double dt, bool monotone)
 {
-    double y[4] = {v0, 0, 0, w0}, t = 0;
-    for (;;) {
+    double y[4] = {v0[0], v0[1], 0, w0}, t = 0;
+    for (int steps = 0; steps < 100000; steps++) {
         double k[4][4], z[4];
         for (int st = 0; st < 4; st++) {
             double c = st == 0 ? 0 : st == 3 ? 1 : 0.5;
@@ -646,19 +649,27 @@ static double quad_stop_time(const quad_face *q, double mu, double v0, double w0
             /* the velocity in the body's axes, the force back in the world's */
             double cs = cos(z[2]), sn = sin(z[2]), vb[2] = {cs * z[0] + sn * z[1], -sn * z[0] + cs * z[1]}, F[2], T;
             quad_friction(q, mu, vb, z[3], F, &T);
-            k[st][0] = G * (cs * F[0] - sn * F[1]);
-            k[st][1] = G * (sn * F[0] + cs * F[1]);
+            k[st][0] = gn * (cs * F[0] - sn * F[1]) + gt[0];
+            k[st][1] = gn * (sn * F[0] + cs * F[1]) + gt[1];
             k[st][2] = z[3];
-            k[st][3] = G * T / I;
+            k[st][3] = gn * T / I;
         }
         double next[4];
         for (int i = 0; i < 4; i++) next[i] = y[i] + dt / 6 * (k[0][i] + 2 * k[1][i] + 2 * k[2][i] + k[3][i]);
         double u = hypot(y[0], y[1]) + fabs(y[3]) * R, un = hypot(next[0], next[1]) + fabs(next[3]) * R;
-        if (!(un < u) || next[0] * y[0] + next[1] * y[1] < 0 || next[3] * y[3] < 0) return t + dt / 2;
+        if (monotone && (!(un < u) || next[0] * y[0] + next[1] * y[1] < 0 || next[3] * y[3] < 0)) return t + dt / 2;
         if (un <= u - un) return t + dt + dt * un / (u - un); /* (the next step would pass the stop) */
         memcpy(y, next, sizeof y);
         t += dt;
     }
+    return HUGE_VAL;
+}
+
+/* quad_stop on a level floor, from (v0, 0) */
+static double quad_stop_time(const quad_face *q, double mu, double v0, double w0, double I, double R, double dt)
+{
+    double gt[2] = {0, 0}, v[2] = {v0, 0};
+    return quad_stop(q, mu, G, gt, v, w0, I, R, dt, true);
 }
 
 /* A floor of friction mu (floor_world) and a box of half-extents (b, b, hz)
@@ -820,6 +831,86 @@ static void tall_box_clipped_or_tips(void **state)
     }
 }
 
+/* A thin square box (mu h < b / 3) sliding and spinning flat on an incline
+ * (ramp_world) launched up, down, across or aslant the slope.  Where tan th <
+ * mu its slide and spin stop together, within 1% of the stop time of a uniform
+ * pressure over its face pressed at g cos th and pulled down the slope at g
+ * sin th (quad_stop, by RK4), and it sticks there; its energy never rises and
+ * the heat (what it lost) is its kinetic energy and the potential energy of
+ * its drop along the slope.  Where tan th > mu its spin dies, and it then
+ * slides straight down at g (sin th - mu cos th). */
+static void box_spins_on_incline(void **state)
+{
+    (void)state;
+    const double pi = acos(-1);
+    double cases[][6] = {
+        /* th, mu, v0, w0, direction (from up the slope, towards +y), b */
+        {0.2, 0.5, 1.0, 8, 0, 0.1},        {0.3, 0.6, 1.2, 10, pi, 0.1}, {0.35, 0.5, 0.8, 20, pi / 2, 0.05},
+        {0.2, 0.4, 1.0, 6, 2.3, 0.15},     {0.5, 0.54, 0.5, 8, pi / 2, 0.1}, {0.62, 0.7, 0.4, 10, pi / 3, 0.1},
+    };
+    enum { MAXQ = 2 * 24 * 24 };
+    static double pts[MAXQ][3];
+    for (int c = 0; c < 6; c++) {
+        double th = cases[c][0], mu = cases[c][1], v0 = cases[c][2], w0 = cases[c][3], dir = cases[c][4];
+        double b = cases[c][5], hz = b / 50;
+        bool sticks = tan(th) < mu;
+        ramp_world r;
+        ramp_init(&r, th, mu);
+        body *box = ramp_box(&r, "box", b, hz, sticks ? 0 : 3.5, 0);
+        /* (its face's points in its own axes: up the slope x, across y) */
+        quat q = box->q;
+        body_set_rotation(box, v3(0, 0, 1), 0);
+        quad_face qf = {pts, face_points(box, 24, pts, MAXQ)};
+        box->q = q;
+        box->rot_given = false;
+        box->v = v3_add(v3_scale(r.d, v0 * cos(dir)), v3(0, v0 * sin(dir), 0));
+        body_set_angular_vel(box, v3_scale(r.n, w0));
+        double e0 = energy(box), ke0 = body_energy(box), s0 = along(&r, box);
+        if (sticks) {
+            double gt[2] = {-G * sin(th), 0}, v[2] = {v0 * cos(dir), v0 * sin(dir)};
+            double ts = quad_stop(&qf, mu, G * cos(th), gt, v, w0, box->I_princ.z / box->mass, b * sqrt(2),
+                                  ts_step(v0, mu), false);
+            double t_stop = 0;
+            bool falls = true, together = run_to_stop(&r.w, box, 0.01, 2 * ts, &t_stop, &falls);
+            double drop = box->mass * G * sin(th) * (s0 - along(&r, box)), heat = e0 - energy(box);
+            print_message("th %.2f mu %.2f dir %.2f: stopped at %.2f (oracle %.4f), together %d, heat %.9f "
+                          "(ke0 + drop %.9f)\n",
+                          th, mu, dir, t_stop, ts, together, heat, ke0 + drop);
+            assert_true(together && falls);
+            assert_true(t_stop >= 0.99 * ts && t_stop <= 1.01 * ts + 0.01);
+            assert_rel(heat, ke0 + drop, 1e-6);
+            /* it sticks: static friction holds it there */
+            double at = along(&r, box);
+            frames(&r.w, 50, 0.01);
+            assert_true(stuck(box));
+            assert_true(fabs(along(&r, box) - at) < 1e-9);
+            assert_true(v3_len(v3_sub(q_rotate(box->q, v3(0, 0, 1)), r.n)) < 1e-9);
+        } else {
+            /* its spin dies (and its drift across), then it slides down */
+            double last = e0;
+            bool falls = true;
+            while (r.w.time < 6 && !(v3_len(box->w) == 0 && box->mode == MODE_SLIDE)) {
+                frame(&r.w, 0.01);
+                falls = falls && energy(box) <= last + 1e-12 * e0;
+                last = energy(box);
+            }
+            assert_true(falls);
+            assert_true(v3_len(box->w) == 0 && box->mode == MODE_SLIDE);
+            double t1 = r.w.time;
+            vec3 v1 = box->v;
+            frames(&r.w, 20, 0.01);
+            vec3 acc = v3_scale(v3_sub(box->v, v1), 1 / (r.w.time - t1));
+            double want = G * (sin(th) - mu * cos(th));
+            print_message("th %.2f mu %.2f: spin gone at %.2f, then %.9f down the slope (want %.9f), across %.3g\n", th,
+                          mu, t1, -v3_dot(acc, r.d), want, v3_len(v3_mad(acc, r.d, -v3_dot(acc, r.d))));
+            assert_rel(-v3_dot(acc, r.d), want, 1e-6);
+            assert_true(v3_len(v3_mad(acc, r.d, -v3_dot(acc, r.d))) < 1e-6 * want);
+            assert_true(box->mode == MODE_SLIDE && v3_len(box->w) == 0);
+        }
+        world_free(&r.w);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -837,6 +928,7 @@ int main(void)
         cmocka_unit_test(disc_stops_together),
         cmocka_unit_test(box_slides_and_spins),
         cmocka_unit_test(tall_box_clipped_or_tips),
+        cmocka_unit_test(box_spins_on_incline),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,4 +1,4 @@
-/* facespin.c: a flat body sliding and spinning on a level face (facespin.h).
+/* facespin.c: a flat body sliding and spinning on a face (facespin.h).
  *
  * The balance of pressure p = p0 + k . x over a region P is linear in (p0, k)
  * once P is fixed: with the moments of P (region_moments) and the integrals of
@@ -18,7 +18,7 @@
 /* Rounds of the clipped pressure at most */
 #define CLIP_ROUNDS 60
 
-bool face_spin_init(face_spin *fs, const body *b, vec3 n, double mu, double gn)
+bool face_spin_init(face_spin *fs, const body *b, vec3 n, double mu, double gn, vec3 gt)
 {
     fs->nrm = n;
     friction_basis(n, &fs->e1, &fs->e2);
@@ -33,6 +33,8 @@ bool face_spin_init(face_spin *fs, const body *b, vec3 n, double mu, double gn)
     fs->mu = mu;
     fs->gn = gn;
     fs->mass = b->mass;
+    fs->gt[0] = v3_dot(gt, fs->e1);
+    fs->gt[1] = v3_dot(gt, fs->e2);
     /* n a principal axis: I n along n (to the rounding of a tessellation's
      * mass properties: the couple a spin w would need to keep it so, w^2 |I n
      * x n|, is then below 1e-5 of I w^2) */
@@ -106,11 +108,25 @@ bool face_spin_accel(const face_spin *fs, double turn, const double v[2], double
     return isfinite(a[0]) && isfinite(a[1]) && isfinite(*dw);
 }
 
-/* y' for y = (x, y, turn, vx, vy, w) */
+/* y' for y = (x, y, turn, vx, vy, w): friction's and gravity's along the face */
 static bool deriv(const face_spin *fs, const double y[6], double f[6])
 {
     f[0] = y[3], f[1] = y[4], f[2] = y[5];
-    return face_spin_accel(fs, y[2], y + 3, y[5], f + 3, f + 5);
+    if (!face_spin_accel(fs, y[2], y + 3, y[5], f + 3, f + 5)) return false;
+    f[3] += fs->gt[0];
+    f[4] += fs->gt[1];
+    return true;
+}
+
+/* Where its integration ends at velocity v, spin w: where static friction
+ * holds it (|gt| <= mu g_n), its slip and spin stopped together; else its spin
+ * and its drift across the slope gone (it slides on down in closed form) */
+static bool spin_done(const face_spin *fs, const double v[2], double w)
+{
+    double g = hypot(fs->gt[0], fs->gt[1]);
+    if (g <= fs->mu * fs->gn) return hypot(v[0], v[1]) + fabs(w) * fs->reach < FACESPIN_STOP;
+    double across = fabs(v[0] * fs->gt[1] - v[1] * fs->gt[0]) / g;
+    return fabs(w) * fs->reach < FACESPIN_STOP && across < FACESPIN_STOP;
 }
 
 /* Dormand and Prince's RK5(4)7M (Hairer, Norsett and Wanner, "Solving Ordinary
@@ -164,12 +180,14 @@ bool face_spin_step(const face_spin *fs, const double v[2], double w, double hma
         for (int j = 0; j < 6; j++) out->r[i][j] = i == 0 ? y0[j] : 0;
     out->h = 0;
     out->more = out->tips = false;
-    if (u0 < FACESPIN_STOP) return true; /* (stopped) */
+    out->slides = hypot(fs->gt[0], fs->gt[1]) > fs->mu * fs->gn;
+    if (spin_done(fs, v, w)) return true; /* (stopped, or sliding on) */
     if (!deriv(fs, y0, k1)) return false;
     /* no step goes past the stop: |v| + |w| R falls at mu g_n (1 + m R^2 / I)
-     * at most, to zero in t_min at the least; the first trial is a sixth of
-     * that (about what 1e-9 allows, by the boxes and discs tried) */
-    double t_min = u0 / (fs->mu * fs->gn * (1 + fs->mass * R * R / fs->in)), least = 1e-9 * t_min;
+     * + |gt| at most, to zero in t_min at the least; the first trial is a
+     * sixth of that (about what 1e-9 allows, by the boxes and discs tried) */
+    double fall = fs->mu * fs->gn * (1 + fs->mass * R * R / fs->in) + hypot(fs->gt[0], fs->gt[1]);
+    double t_min = u0 / fall, least = 1e-9 * t_min;
     double h = t_min / 6;
     if (hmax > 0) h = d_min(h, hmax);
     double k[7][6], y1[6], err[6];
@@ -194,7 +212,7 @@ bool face_spin_step(const face_spin *fs, const double v[2], double w, double hma
                 out->r[4][i] = h * (D1 * k[0][i] + D3 * k[2][i] + D4 * k[3][i] + D5 * k[4][i] + D6 * k[5][i] +
                                     D7 * k[6][i]);
             }
-            out->more = !(hypot(y1[3], y1[4]) + fabs(y1[5]) * R < FACESPIN_STOP);
+            out->more = !spin_done(fs, y1 + 3, y1[5]);
             return true;
         }
         h *= d_max(0.1, 0.8 * pow(e, -0.2));

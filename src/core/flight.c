@@ -140,7 +140,7 @@ static void spin_step_at(const flight *f, const body *shape_of, double h, body *
         for (int i = 0; i < 6; i++) y[i] = st->r[0][i] + st->r[1][i]; /* (the step's end, exactly) */
     vec3 c = v3_add(f->c0, v3_add(v3_scale(f->e1, y[0]), v3_scale(f->e2, y[1])));
     out->q = y[2] != 0 ? q_normalize(q_mul(q_axis_angle(f->n, y[2]), f->q0)) : f->q0;
-    bool still = stopped && !st->more;
+    bool still = stopped && !st->more && !st->slides;
     out->v = still ? v3(0, 0, 0) : v3_add(v3_scale(f->e1, y[3]), v3_scale(f->e2, y[4]));
     out->w = still ? v3(0, 0, 0) : v3_scale(f->n, y[5]);
     out->L = m3_mulv(body_inertia_world(out), out->w);

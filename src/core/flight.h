@@ -20,10 +20,11 @@
  *    resistance give (friction_face), until its speed reaches zero at t_stop
  *    (an event), where it stays; it turns about n x u by the distance gone over
  *    its radius, at w = n x v / r (no slip).
- *  - FLIGHT_SPIN: a flat body sliding and spinning on a level face with
+ *  - FLIGHT_SPIN: a flat body sliding and spinning on a face (level or not) with
  *    friction over its face (facespin.h): one step of the integration of its
  *    slide and spin, read from its dense output, until t_stop, the step's end
- *    (an event: the next step starts there, or it stops).
+ *    (an event: the next step starts there, or it stops, or on a steep slope
+ *    it slides on down in closed form).
  *  - FLIGHT_STILL: the body stays where it is (resting, static).
  *  - FLIGHT_HELD: held by the hand (hold.h), the body is fixed to a point, the
  *    pivot, that moves at a constant velocity, and turns about it at a constant
@@ -49,11 +50,13 @@ typedef enum { FLIGHT_STILL, FLIGHT_FREE, FLIGHT_SLIDE, FLIGHT_HELD, FLIGHT_ROLL
  * and its spin, y = (x, y, turn, vx, vy, w), at s in [0, 1] of the step r0 + s
  * (r1 + (1 - s) (r2 + s (r3 + (1 - s) r4))) (Dormand and Prince's dense
  * output).  more: it goes on after the step; else its slip and spin stop there
- * together (|v| + |w| R < 1e-9 m/s).  tips: no step could be taken (h 0: the
- * pressure that balances it gives out at once), it tips. */
+ * together (|v| + |w| R < 1e-9 m/s), or (slides: on a slope steeper than
+ * friction holds) its spin and drift across the slope are gone there, and it
+ * slides on down.  tips: no step could be taken (h 0: the pressure that
+ * balances it gives out at once), it tips. */
 typedef struct {
     double h, r[5][6];
-    bool more, tips;
+    bool more, tips, slides;
 } face_step;
 
 typedef struct {

@@ -61,18 +61,20 @@ static face_motion ball_slides(vec3 gt, double gn, double mu, double k, double r
     return m;
 }
 
-/* A box sliding and spinning on a level face (facespin.h): its mode, and
+/* A box sliding and spinning on a face (facespin.h), pulled along it at gt: its mode, and
  * (hmax >= 0) its step, at most hmax long (0: any; where none can be taken,
  * tips is set and t_stop is 0); the centre of pressure's lean as
  * friction_face's. */
-static face_motion face_spins(const body *b, vec3 n, double mu, double gn, vec3 v, double hmax, vec3 *lean)
+static face_motion face_spins(const body *b, vec3 n, double mu, double gn, vec3 gt, vec3 v, double hmax,
+                              vec3 *lean)
 {
     face_motion m = {.mode = MODE_GENERAL, .a = v3(0, 0, 0), .axis = n, .t_stop = HUGE_VAL};
     face_spin fs;
-    if (!face_spin_init(&fs, b, n, mu, gn)) return m;
+    if (!face_spin_init(&fs, b, n, mu, gn, gt)) return m;
     double vp[2] = {v3_dot(v, fs.e1), v3_dot(v, fs.e2)}, w = v3_dot(b->w, n), a[2], dw;
     if (!face_spin_accel(&fs, 0, vp, w, a, &dw)) return m; /* it tips */
-    /* the centre of pressure: h lean, lean = -F / N */
+    /* the centre of pressure: h lean, lean = -F / N (F friction's alone:
+     * gravity acts at the centre of mass) */
     *lean = v3_scale(v3_add(v3_scale(fs.e1, a[0]), v3_scale(fs.e2, a[1])), -1 / gn);
     m.mode = MODE_SLIDE;
     m.spins = true;
@@ -112,8 +114,8 @@ face_motion friction_face(const body *b, const body *s, vec3 g, vec3 n, body_mod
             double arm = vl == 0 && gtl == 0 ? contact_face_arm(b, n) : -1;
             double in = v3_dot(n, m3_mulv(body_inertia_world(b), n));
             /* else sliding and spinning at once (or spinning on a face not so
-             * symmetric), on a level face: friction over the face */
-            if (gtl == 0 && !(arm > 0)) return face_spins(b, n, mu, gn, v, hmax, lean);
+             * symmetric, or on a slope): friction over the face */
+            if (!(arm > 0)) return face_spins(b, n, mu, gn, gt, v, hmax, lean);
             if (!(arm > 0) || !(in > 0)) return m;
             m.mode = MODE_SLIDE;
             m.dw = -copysign(mu * gn * b->mass * arm / in, wn);

@@ -141,16 +141,17 @@ static bool try_face(world *w, body *m, const body *s, int si, int face, vec3 n,
         if (v3_len(v3_mad(t.w, n, -wn)) * R > tol) return false;
         body_set_angular_vel(&t, v3(0, 0, 0));
         if (!contact_level(&t, s, face, REST_LEVEL_TILT, hover)) return false;
-        /* a spin about n is kept on a level face, on a face of its own that
-         * the support's holds wherever it turns (the circle its corners sweep
-         * inside): in closed form at rest on a face centrally symmetric
-         * (friction_face), else by friction over the face (facespin.h), where
-         * it is above tol (below it, it is dropped, as before that form) */
-        bool inside = v3_len(gt) <= SIM_ACCEL_ROUND * (1 + R);
+        /* a spin about n is kept on a face of its own that the support's
+         * holds wherever it turns (the circle its corners sweep inside): in
+         * closed form at rest on a face centrally symmetric on a level face
+         * (friction_face), else by friction over the face (facespin.h, level
+         * or inclined), where it is above tol (below it, it is dropped, as
+         * before that form) */
+        bool inside = true, level = v3_len(gt) <= SIM_ACCEL_ROUND * (1 + R);
         const poly_face *F = &hf->f[local];
         for (int k = 0; k < F->count && inside; k++)
             inside = gap_to_edge(s, hf, F, k, n, body_com(&t), v, v3(0, 0, 0)).g0 > R;
-        if (inside && wn != 0 && (fabs(wn) * R > tol || (v3_len(v) == 0 && contact_face_arm(&t, n) > 0)))
+        if (inside && wn != 0 && (fabs(wn) * R > tol || (level && v3_len(v) == 0 && contact_face_arm(&t, n) > 0)))
             body_set_angular_vel(&t, v3_scale(n, wn));
         else if (fabs(wn) * R > tol) return false;
     } else {
@@ -327,6 +328,14 @@ bool rest_face_stop(world *w, int i)
     /* a spinning one's step: it goes on from the next (retime_object), or,
      * where none could be taken, it tips: the clusters take it */
     if (f->kind == FLIGHT_SPIN && f->step.more) return true;
+    /* on a slope steeper than friction holds, its spin gone (below 1e-9 m/s
+     * at its reach): dropped, it slides on down in closed form */
+    if (f->kind == FLIGHT_SPIN && f->step.slides && !f->step.tips) {
+        body_set_angular_vel(m, v3(0, 0, 0));
+        m->rot_given = false;
+        rest_classify(w, &i, 1);
+        return true;
+    }
     if (f->kind == FLIGHT_SPIN && f->step.tips) {
         m->mode = MODE_GENERAL;
         m->slide_on = -1;
