@@ -57,16 +57,23 @@ struct window {
     SDL_Rect dst;       /* where it is on the window */
 };
 
+/* The value of the environment variable name, or NULL where it is unset or empty. */
+static const char *env_named(const char *name)
+{
+    const char *v = getenv(name);
+    return v && *v ? v : NULL;
+}
+
 bool window_display_named(void)
 {
-    const char *x = getenv("DISPLAY"), *wl = getenv("WAYLAND_DISPLAY");
-    return (x && *x) || (wl && *wl);
+    return env_named("DISPLAY") || env_named("WAYLAND_DISPLAY");
 }
 
 int window_open(window **win, const char *title, int width, int height, char *err, size_t errlen)
 {
     *win = NULL;
-    if (!window_display_named()) {
+    const char *x = env_named("DISPLAY"), *wl = env_named("WAYLAND_DISPLAY");
+    if (!x && !wl) {
         snprintf(err, errlen, "no display to open a window on (neither DISPLAY nor WAYLAND_DISPLAY is set)");
         return -1;
     }
@@ -83,16 +90,15 @@ int window_open(window **win, const char *title, int width, int height, char *er
      * answers, and the window would open nowhere without a word.  So SDL tries
      * the servers the environment names, and no other.  A driver the user names
      * in SDL_VIDEODRIVER is still theirs. */
-    const char *named = getenv("SDL_VIDEODRIVER");
-    const char *x = getenv("DISPLAY"), *wl = getenv("WAYLAND_DISPLAY");
-    bool on_x = x && *x, on_wl = wl && *wl, ours = !named || !*named;
-    if (ours) sdl.SDL_SetHint(SDL_HINT_VIDEODRIVER, on_x && on_wl ? "x11,wayland" : on_x ? "x11" : "wayland");
+    const char *named = env_named("SDL_VIDEODRIVER");
+    if (!named) sdl.SDL_SetHint(SDL_HINT_VIDEODRIVER, x && wl ? "x11,wayland" : x ? "x11" : "wayland");
     if (sdl.SDL_Init(SDL_INIT_VIDEO) != 0) {
-        if (ours)
-            snprintf(err, errlen, "cannot open a window: no %s server answers on %s%s%s",
-                     on_x && on_wl ? "X11 or Wayland" : on_x ? "X11" : "Wayland",
-                     on_x ? "DISPLAY=" : "WAYLAND_DISPLAY=", on_x ? x : wl,
-                     on_x && on_wl ? " or WAYLAND_DISPLAY" : "");
+        if (!named && x)
+            snprintf(err, errlen, "cannot open a window: no %s server answers on DISPLAY=%s%s",
+                     wl ? "X11 or Wayland" : "X11", x, wl ? " or WAYLAND_DISPLAY" : "");
+        else if (!named)
+            snprintf(err, errlen, "cannot open a window: no Wayland server answers on WAYLAND_DISPLAY=%s",
+                     wl);
         else
             snprintf(err, errlen, "cannot open a window on the display: %s", sdl.SDL_GetError());
         sdl.SDL_Quit();
