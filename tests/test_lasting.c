@@ -10,7 +10,9 @@
  * stops dead; rolling with resistance c it stops after 7 v / (5 c g), having
  * gone (7/10) v^2 / (c g).  A ball on an incline rolls at (5/7) g sin th where
  * mu >= (2/7) tan th, and slides otherwise, spinning up at 5 mu g cos th / (2
- * r).  A box at rest on an incline tips iff tan th > b / h; launched on a level
+ * r).  Against a side wall too (a cluster, not a closed form), one left still
+ * is held by rolling resistance c iff tan th <= c.  A box at rest on an incline
+ * tips iff tan th > b / h; launched on a level
  * floor it stays flat iff mu h < b; sliding flat it goes straight; a cube
  * spinning flat slows at (sqrt 2 + ln(1 + sqrt 2)) mu g / s; one sliding across
  * the seam of two coplanar tiles stops where one face would stop it.  Sliding
@@ -360,6 +362,54 @@ static void ball_on_incline(void **state)
             assert_int_equal(ball->mode, MODE_SLIDE);
             assert_rel(gone, a * t * t / 2, 1e-6);
             assert_rel(v3_dot(ball->w, axis), spin * t, 1e-6);
+        }
+        world_free(&r.w);
+    }
+}
+
+/* Against a side wall as well (a static face along the slope, square to the
+ * ramp, which gravity does not press: the ball is in two lasting contacts, and
+ * its cluster's balance decides its rest), a ball left still on an incline
+ * with rolling resistance c (friction enough to stick) is held iff tan th <= c:
+ * about its point on the ramp, gravity's moment m g r sin th against the couple
+ * of at most c r N = c r m g cos th.  Held, it rests where it was left; not
+ * held, it rolls down (at (5/7) g (sin th - c cos th)) and does not rest. */
+static void ball_held_by_rolling_resistance(void **state)
+{
+    (void)state;
+    const double c = 0.1, rad = 0.1, ratios[] = {0.5, 0.7, 0.8, 2};
+    for (int k = 0; k < 4; k++) {
+        double th = atan(ratios[k] * c);
+        ramp_world r;
+        ramp_init(&r, th, 0.5);
+        r.ramp->rolling_friction = c;
+        body *wall = add_static_box(&r.w, "wall", v3(5, 0.1, 2));
+        wall->x = v3(0, -rad - 0.1 - 1e-9, 0);
+        wall->friction = 0.5;
+        wall->rolling_friction = c;
+        body *ball = add_ball(&r.w, "ball", rad);
+        ball->friction = 0.5;
+        ball->rolling_friction = c;
+        ball->elasticity = 0;
+        ball->x = v3_add(v3_scale(r.d, 3), v3_scale(r.n, rad + 1e-9));
+        double s0 = along(&r, ball);
+        frame(&r.w, 0.1);
+        double first = s0 - along(&r, ball);
+        bool general = ball->mode == MODE_GENERAL;
+        frames(&r.w, 9, 0.1);
+        double gone = s0 - along(&r, ball), t = r.w.time;
+        double a = 5.0 / 7.0 * G * (sin(th) - c * cos(th));
+        print_message("tan th = %.1f c: state %d, gone %.3g m after 0.1 s, %.3g m after 1 s (rolling: %.3g m)\n",
+                      ratios[k], ball->state, first, gone, a * t * t / 2);
+        if (ratios[k] <= 1) {
+            /* (the cluster's steps let it creep within the first frame, by
+             * about 1e-4 m: see issue 35's piles note) */
+            assert_int_equal(ball->state, STATE_RESTING);
+            assert_true(fabs(first) < 1e-3 && gone == first);
+        } else {
+            assert_true(general);
+            assert_int_equal(ball->state, STATE_DYNAMIC);
+            assert_true(gone > 0.5 * a * t * t / 2);
         }
         world_free(&r.w);
     }
@@ -920,6 +970,7 @@ int main(void)
         cmocka_unit_test(ball_slides_then_rolls),
         cmocka_unit_test(ball_rolls_to_a_stop),
         cmocka_unit_test(ball_on_incline),
+        cmocka_unit_test(ball_held_by_rolling_resistance),
         cmocka_unit_test(box_tips_on_incline_iff),
         cmocka_unit_test(box_launched_on_floor),
         cmocka_unit_test(cube_spins_down),

@@ -420,6 +420,79 @@ bool rest_slide_on(world *w, int i)
  * points in contact only, as before. */
 #define REST_SUPPORT_DEPTH 1e-3
 
+/* Pushes of a balance, at most: rolling resistance's couples and the supports'
+ * pushes taking turns (rest_balanced).  Each leaves of a rolling ball's
+ * turning about 5/7, so that 100 bring it below the rounding of the force's
+ * second. */
+#define REST_ROLL_ROUNDS 100
+
+/* The supports push the copies of rest_balanced (w->answer.now) at the nr points
+ * of rows, with friction when rough (the cone solve's impulses in
+ * w->answer.fw->z), or along the normals: false when that has no answer. */
+static bool push(world *w, const impulse_row *rows, int nr, bool rough)
+{
+    body **bs = w->answer.now;
+    row_work *rw = w->answer.rw;
+    for (int k = 0; k < nr; k++) rw->u[k] = impulse_speed(&rows[k], bs);
+    if (rough) {
+        friction_flags f = {false, false, false};
+        return friction_compress(rows, nr, bs, w->answer.mark, rw->u, rw->lam, w->answer.fw, &f) == 0;
+    }
+    return impulse_solve_in(rows, nr, bs, w->answer.mark, rw->u, rw->lam, rw->lcp, rw->A, rw->q, rw->wv) == 0;
+}
+
+/* True when copy c is left still by its supports' push: moving and turning at
+ * no more than the rounding of the force's second. */
+static bool still(const body *c)
+{
+    double scale = 1 + c->shape.r_out;
+    return v3_len(c->v) + v3_len(c->w) * c->shape.r_out <= 1e3 * SIM_ACCEL_ROUND * scale;
+}
+
+/* The copies of the n objects of list (w->answer.balanced, referenced from
+ * w->answer.now), each moving as the force alone would make it in a second, and
+ * turning as the couples M (three an object of list; NULL: none) would. */
+static void push_copies(world *w, const int *list, int n, const double *M)
+{
+    for (int k = 0; k < n; k++) {
+        int i = list[k];
+        body *c = &w->answer.balanced[i];
+        *c = *w->bodies[i];
+        c->v = world_accel(w);
+        c->L = M ? v3(M[3 * k], M[3 * k + 1], M[3 * k + 2]) : v3(0, 0, 0);
+        body_update_w(c);
+        w->answer.now[i] = c;
+    }
+}
+
+/* Rolling resistance's couples M (three an object of list) after a push that
+ * left the copies turning: each object's less what it is left turning (its
+ * copy's angular momentum after the second), so as to stop that, but to no more
+ * in size than c r N summed over its points that stick (friction_roll's law,
+ * friction.h), N and sticking from the push's impulses (fw->z at the nr points
+ * of rows).  True when some couple changed. */
+static bool roll_couples(world *w, const int *list, int n, const impulse_row *rows, int nr, double *M)
+{
+    const double *z = w->answer.fw->z;
+    bool changed = false;
+    for (int k = 0; k < n; k++) {
+        int i = list[k];
+        vec3 m0 = v3(M[3 * k], M[3 * k + 1], M[3 * k + 2]);
+        vec3 m = v3_sub(m0, w->answer.now[i]->L);
+        double can = 0;
+        for (int j = 0; j < nr; j++) {
+            const double *zj = &z[3 * j];
+            if ((rows[j].p != i && rows[j].q != i) || !(zj[0] > 0)) continue;
+            if (!(hypot(zj[1], zj[2]) < rows[j].mu * zj[0] * (1 - 1e-9))) continue;
+            can += rows[j].roll * v3_dist(rows[j].at, body_com(w->bodies[i])) * zj[0];
+        }
+        if (v3_len(m) > can) m = v3_scale(m, can / v3_len(m));
+        changed = changed || v3_dist(m, m0) > 0;
+        M[3 * k] = m.x, M[3 * k + 1] = m.y, M[3 * k + 2] = m.z;
+    }
+    return changed;
+}
+
 bool rest_balanced(world *w, const int *list, int n)
 {
     /* each object's copy moves as the force alone would make it in a second, and
@@ -429,15 +502,8 @@ bool rest_balanced(world *w, const int *list, int n)
     row_work *rw = w->answer.rw;
     row_list rl = {rw->sub, NULL, NULL, 0, rw->cap, false};
     bool ok = true;
-    for (int k = 0; k < n; k++) {
-        int i = list[k];
-        body *c = &w->answer.balanced[i];
-        *c = *w->bodies[i];
-        c->v = world_accel(w);
-        c->L = c->w = v3(0, 0, 0);
-        bs[i] = c;
-        mobile[i] = true;
-    }
+    push_copies(w, list, n, NULL);
+    for (int k = 0; k < n; k++) mobile[list[k]] = true;
     for (int k = 0; k < n && ok; k++) {
         int i = list[k];
         FOR_TOUCHING(w, i, p, o) {
@@ -456,38 +522,38 @@ bool rest_balanced(world *w, const int *list, int n)
     }
     int nr = rl.n;
     impulse_row *rows = rw->sub;
-    double *lambda = rw->lam, *u = rw->u;
-    for (int k = 0; k < nr; k++) u[k] = impulse_speed(&rows[k], bs);
-    /* what rolling resistance holds: where every point sticks, and the objects
-     * would only roll or tip about them, a couple of c r N holds an object
-     * whose centre of mass is off its support by up to about c r, which leaves
-     * it accelerating at up to about c g (c the least at its points) */
-    double held = 0;
     /* (with more points than the cone solve holds, balanced without friction,
      * which asks more of the supports) */
-    if (ok && nr > 0 && nr <= FRICTION_MAX_POINTS && friction_any(rows, nr)) {
-        friction_flags f = {false, false, false};
-        ok = friction_compress(rows, nr, bs, mobile, u, lambda, w->answer.fw, &f) == 0;
-        held = HUGE_VAL;
-        for (int k = 0; k < nr && ok; k++) {
-            const double *z = &w->answer.fw->z[3 * k];
-            bool sticks = z[0] > 0 && hypot(z[1], z[2]) < rows[k].mu * z[0] * (1 - 1e-9);
-            held = sticks || !(z[0] > 0) ? d_min(held, rows[k].roll * v3_len(world_accel(w))) : 0;
+    bool rough = nr > 0 && nr <= FRICTION_MAX_POINTS && friction_any(rows, nr);
+    ok = ok && nr > 0 && push(w, rows, nr, rough);
+    /* Those the push leaves turning may yet be held by rolling resistance: a
+     * couple of up to c r N at each point that sticks (friction.h).  A couple
+     * that stops an object's turning about its centre of mass leaves it
+     * sliding over its stuck points, which the supports turn again (a ball:
+     * 5/7 of it): so each object's couple grows by what it is left turning and
+     * the supports push again, until all are still (held: a ball on a slope
+     * where tan th <= c, its couple m g r sin th) or a couple reaches what
+     * its points resist and they still move.  The couples are kept in rw->A
+     * (three an object; A is cap x cap, and the cone solve holds no more
+     * than 64 points). */
+    bool held = ok;
+    for (int k = 0; k < n && held; k++) held = still(bs[list[k]]);
+    if (ok && !held && rough && 3 * n <= rw->cap * rw->cap) {
+        double *M = rw->A;
+        for (int k = 0; k < 3 * n; k++) M[k] = 0;
+        for (int round = 0; round < REST_ROLL_ROUNDS && ok && !held; round++) {
+            if (!roll_couples(w, list, n, rows, nr, M)) break;
+            push_copies(w, list, n, M);
+            ok = push(w, rows, nr, rough);
+            held = ok;
+            for (int k = 0; k < n && held; k++) held = still(bs[list[k]]);
         }
-        if (!(held < HUGE_VAL)) held = 0;
-    } else if (ok && nr > 0) {
-        ok = impulse_solve_in(rows, nr, bs, mobile, u, lambda, rw->lcp, rw->A, rw->q, rw->wv) == 0;
-    }
-    for (int k = 0; k < n && ok; k++) {
-        const body *c = bs[list[k]];
-        double scale = 1 + c->shape.r_out;
-        if (v3_len(c->v) + v3_len(c->w) * c->shape.r_out > 1e3 * SIM_ACCEL_ROUND * scale + held) ok = false;
     }
     for (int k = 0; k < n; k++) {
         bs[list[k]] = w->bodies[list[k]];
         mobile[list[k]] = false;
     }
-    return ok;
+    return ok && held;
 }
 
 /* The speed of b's fastest point, near enough: |v| + |w| R. */
