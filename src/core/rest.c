@@ -421,9 +421,9 @@ bool rest_slide_on(world *w, int i)
 #define REST_SUPPORT_DEPTH 1e-3
 
 /* Pushes of a balance, at most: rolling resistance's couples and the supports'
- * pushes taking turns (rest_balanced).  Each leaves of a rolling ball's
- * turning about 5/7, so that 100 bring it below the rounding of the force's
- * second. */
+ * pushes taking turns (rest_balanced); a ball on one point is held after one,
+ * and objects pressed on several, whose couples are only near what they need,
+ * after a few more. */
 #define REST_ROLL_ROUNDS 100
 
 /* The supports push the copies of rest_balanced (w->answer.now) at the nr points
@@ -467,26 +467,37 @@ static void push_copies(world *w, const int *list, int n, const double *M)
 
 /* Rolling resistance's couples M (three an object of list) after a push that
  * left the copies turning: each object's less what it is left turning (its
- * copy's angular momentum after the second), so as to stop that, but to no more
- * in size than c r N summed over its points that stick (friction_roll's law,
- * friction.h), N and sticking from the push's impulses (fw->z at the nr points
- * of rows).  True when some couple changed. */
+ * copy's angular momentum after the second), so as to stop that.  True when
+ * some couple changed and each is within what its points resist: c r N summed
+ * over those that stick (friction_roll's law, friction.h), N and sticking from
+ * the push's impulses (fw->z at the nr points of rows).  (The couples only
+ * grow towards what holds: one that must pass that holds nothing.) */
 static bool roll_couples(world *w, const int *list, int n, const impulse_row *rows, int nr, double *M)
 {
     const double *z = w->answer.fw->z;
     bool changed = false;
     for (int k = 0; k < n; k++) {
         int i = list[k];
-        vec3 m0 = v3(M[3 * k], M[3 * k + 1], M[3 * k + 2]);
-        vec3 m = v3_sub(m0, w->answer.now[i]->L);
-        double can = 0;
+        const body *b = w->bodies[i];
+        vec3 m0 = v3(M[3 * k], M[3 * k + 1], M[3 * k + 2]), left = w->answer.now[i]->L;
+        double len = v3_len(left);
+        if (!(len > 0)) continue;
+        vec3 dir = v3_scale(left, 1 / len);
+        double inertia = v3_dot(m3_mulv(body_inertia_world(b), dir), dir), can = 0, over = HUGE_VAL;
         for (int j = 0; j < nr; j++) {
             const double *zj = &z[3 * j];
             if ((rows[j].p != i && rows[j].q != i) || !(zj[0] > 0)) continue;
             if (!(hypot(zj[1], zj[2]) < rows[j].mu * zj[0] * (1 - 1e-9))) continue;
-            can += rows[j].roll * v3_dist(rows[j].at, body_com(w->bodies[i])) * zj[0];
+            can += rows[j].roll * v3_dist(rows[j].at, body_com(b)) * zj[0];
+            vec3 arm = v3_cross(dir, v3_sub(body_com(b), rows[j].at));
+            over = d_min(over, 1 + b->mass * v3_len2(arm) / inertia);
         }
-        if (v3_len(m) > can) m = v3_scale(m, can / v3_len(m));
+        /* turning about a stuck point, it answers a couple as its inertia
+         * about that point, not about its centre of mass: so much more is
+         * needed to stop it (a ball: 7/2 times; the least of its points',
+         * so as not to overshoot) */
+        vec3 m = v3_mad(m0, left, -(over < HUGE_VAL ? over : 1));
+        if (v3_len(m) > can) return false;
         changed = changed || v3_dist(m, m0) > 0;
         M[3 * k] = m.x, M[3 * k + 1] = m.y, M[3 * k + 2] = m.z;
     }
@@ -532,8 +543,8 @@ bool rest_balanced(world *w, const int *list, int n)
      * sliding over its stuck points, which the supports turn again (a ball:
      * 5/7 of it): so each object's couple grows by what it is left turning and
      * the supports push again, until all are still (held: a ball on a slope
-     * where tan th <= c, its couple m g r sin th) or a couple reaches what
-     * its points resist and they still move.  The couples are kept in rw->A
+     * where tan th <= c, its couple m g r sin th) or a couple must pass what
+     * its points resist.  The couples are kept in rw->A
      * (three an object; A is cap x cap, and the cone solve holds no more
      * than 64 points). */
     bool held = ok;
