@@ -544,9 +544,8 @@ bool rest_balanced(world *w, const int *list, int n)
      * 5/7 of it): so each object's couple grows by what it is left turning and
      * the supports push again, until all are still (held: a ball on a slope
      * where tan th <= c, its couple m g r sin th) or a couple must pass what
-     * its points resist.  The couples are kept in rw->A
-     * (three an object; A is cap x cap, and the cone solve holds no more
-     * than 64 points). */
+     * its points resist.  The couples are kept in rw->A (three an object; A
+     * is cap x cap). */
     bool held = ok;
     for (int k = 0; k < n && held; k++) held = still(bs[list[k]]);
     if (ok && !held && rough && 3 * n <= rw->cap * rw->cap) {

@@ -76,7 +76,9 @@ bool rest_face_stop(world *w, int i);
 bool rest_slide_on(world *w, int i);
 
 /* True when the supports of the n objects of list (at rest, or nearly) hold them
- * against the force: the contact forces can balance it, pushing only. */
+ * against the force: the contact forces can balance it, pushing only, with
+ * rolling resistance's couples (up to c r N at each point that sticks) where
+ * the objects would otherwise roll or tip. */
 bool rest_balanced(world *w, const int *list, int n);
 
 /* The frame rule: objects held by their supports and slower than SIM_REST_SPEED
