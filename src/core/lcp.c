@@ -96,6 +96,7 @@ typedef struct {
     /* sparse (n > DENSE_MAX), in the workspace's room the least-norm answer
      * uses otherwise: */
     bool sparse;
+    double *inv;         /* by position: 1 / L's diagonal */
     int *first;          /* by position: L's row holds 0 before this column */
     int *nzs, *nzc;      /* A's nonzeros: row i's columns nzc[nzs[i] .. nzs[i+1]) */
     int *pair;           /* scratch of 2 n: (position, index) of one row's terms */
@@ -135,8 +136,10 @@ static void state_init(lcp_state *s, int n, const double *A, const double *q, do
     s->skip = i + 3 * m;
     s->sparse = n > DENSE_MAX;
     if (s->sparse) {
-        /* m^2 + 4 m + 1 ints in the 2 m^2 doubles after the pivoting's */
-        int *f = (int *)(void *)(d + m * m + 6 * m);
+        /* m doubles and m^2 + 4 m + 1 ints in the 2 m^2 doubles after the
+         * pivoting's */
+        s->inv = d + m * m + 6 * m;
+        int *f = (int *)(void *)(s->inv + m);
         s->first = f;
         s->nzs = f + m;
         s->pair = s->nzs + m + 1;
@@ -199,7 +202,8 @@ static double row_dot(const lcp_state *s, int j, const double *x)
 }
 
 /* y = L^-1 b over the k positions (y may be b).  Sparse, each row's sum starts at
- * its first nonzero, or at b's (y is 0 before it): the same sums but for zeros. */
+ * its first nonzero, or at b's (y is 0 before it), and the diagonal's division is
+ * a product (the rows are short: it was a third of their time). */
 static void solve_lower(const lcp_state *s, const double *b, double *y)
 {
     int b0 = 0;
@@ -208,19 +212,21 @@ static void solve_lower(const lcp_state *s, const double *b, double *y)
     for (int r = 0; r < s->k; r++) {
         const double *Lr = s->L + (size_t)r * s->n;
         int lo = s->sparse ? (s->first[r] > b0 ? s->first[r] : b0) : 0;
-        y[r] = (b[r] - (lo < r ? dot(Lr + lo, y + lo, r - lo) : 0)) / Lr[r];
+        double v = b[r] - (lo < r ? dot(Lr + lo, y + lo, r - lo) : 0);
+        y[r] = s->sparse ? v * s->inv[r] : v / Lr[r];
     }
 }
 
 /* x = L^-T y over the k positions (x may be y).  Sparse, by rows of L from the
- * last, each over its nonzeros (the same answer, summed in another order). */
+ * last, each over its nonzeros (the same answer, summed in another order; the
+ * division a product, as in solve_lower). */
 static void solve_upper(const lcp_state *s, const double *y, double *x)
 {
     if (s->sparse) {
         for (int r = 0; r < s->k; r++) x[r] = y[r];
         for (int r = s->k - 1; r >= 0; r--) {
             const double *Lr = s->L + (size_t)r * s->n;
-            double xr = x[r] /= Lr[r];
+            double xr = x[r] *= s->inv[r];
             for (int c = s->first[r]; c < r; c++) x[c] -= Lr[c] * xr;
         }
         return;
@@ -252,6 +258,7 @@ static void clamp(lcp_state *s, int j, const double *y, double sj)
         int f = 0;
         while (f < s->k && y[f] == 0) f++;
         s->first[s->k] = f;
+        s->inv[s->k] = 1 / Lk[s->k];
     }
     s->at[s->k] = j;
     s->pos[j] = s->k;
@@ -287,8 +294,9 @@ static void rotate_sparse(lcp_state *s, int p, int m, double *x)
         head[at] = t;
     }
     for (int i = 0; i < m; i++) {
-        double c, sn;
-        rotation(s->L + (size_t)(p + i) * n + p + i, x[i], &c, &sn);
+        double c, sn, *diag = s->L + (size_t)(p + i) * n + p + i;
+        rotation(diag, x[i], &c, &sn);
+        s->inv[p + i] = 1 / *diag;
         for (int t = head[i], after; t >= 0; t = after) {
             after = next[t];
             next[t] = live;
@@ -330,6 +338,7 @@ static void unclamp(lcp_state *s, int p)
         if (s->sparse) {
             f = s->first[r] > p ? s->first[r] - 1 : s->first[r];
             s->first[r - 1] = f;
+            s->inv[r - 1] = s->inv[r];
         }
         for (int c = f; c < p; c++) dst[c] = src[c];
         for (int c = f > p ? f : p; c < r; c++) dst[c] = src[c + 1];
@@ -703,19 +712,22 @@ static int solve(int n, const double *A, const double *q, double *z, double *w, 
 /* The contacts taken in index order until the answer holds: 0, or -1. */
 static int pivot(lcp_state *s)
 {
-    int n = s->n, r = 1;
-    double *w = s->w;
+    int n = s->n, r = 1, d = 0;
+    double *w = s->w, zs = z_size(s);
     while (r == 1) {
-        int d = 0;
+        /* (the contacts before the last taken are seen: but after verify) */
         while (d < n && s->set[d] != UNSEEN) d++;
         if (d == n) {
             r = verify(s);
-        } else if (w[d] >= -tol_w(s, d, z_size(s))) {
+            d = 0;
+            zs = z_size(s);
+        } else if (w[d] >= -tol_w(s, d, zs)) {
             s->set[d] = IN_NC;
         } else if (drive(s, d) < 0) {
             r = -1;
         } else {
             settle(s, 0);
+            zs = z_size(s);
         }
         if (s->pivots > 100 + 20L * n) r = -1;
     }
