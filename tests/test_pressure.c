@@ -375,17 +375,22 @@ static void slot(double r, const char *balls)
     free(text);
 }
 
+/* The rise of the energy from one frame to the next that run_slot allows,
+ * relative to it. */
+static double g_slot_rise = 1e-9;
+
 /* Runs the slot's world frame by frame for at most `frames`: at every frame's
  * end no pair overlaps by more than 1e-6 m, no ball is out of the slot (its
  * centre within the sides' room, above the floor's top by its radius less
  * 1e-6 m), and the energy (kinetic, and potential from the floor's top) never
- * rises from one frame to the next by more than 1e-9 of itself: contacts
- * without friction do no work, and collisions with e < 1 only lose energy.
- * Returns the frame at whose end everything rests (-1: never). */
+ * rises from one frame to the next by more than g_slot_rise of itself: contacts
+ * without friction do no work, and collisions with e < 1 only lose energy (to
+ * 1e-9 but for the crowd of 100).  Returns the frame at whose end everything
+ * rests (-1: never). */
 static int run_slot(const char *what, int frames)
 {
     world *w = &g_sh.w;
-    double before = energy_above(w, 0);
+    double before = energy_above(w, 0), most = 0;
     for (int f = 1; f <= frames; f++) {
         assert_int_equal(run("run 1"), CMD_OK);
         int a = -1, b = -1;
@@ -401,10 +406,14 @@ static int run_slot(const char *what, int frames)
                          c.x, c.y, c.z);
         }
         double now = energy_above(w, 0);
-        if (now > before + 1e-9 * before)
+        most = fmax(most, (now - before) / before);
+        if (now > before + g_slot_rise * before)
             fail_msg("%s, frame %d: energy rose from %.17g to %.17g J", what, f, before, now);
         before = now;
-        if (all_rest(w)) return f;
+        if (all_rest(w)) {
+            print_message("%s: the energy rose by at most %.3g of itself in a frame\n", what, most);
+            return f;
+        }
     }
     return -1;
 }
@@ -439,6 +448,8 @@ static void ball_in_slot_rests(void **state)
     }
 }
 
+static void slot_crowd_rests(const char *what);
+
 /* Crowds in the slot, every ball of e = 0.5 and at rest within 10 s: a row of
  * 26 balls filling it end to end (centres 0.1 m apart, touching their
  * neighbours and the ends), dropped from 0.15 to 0.45 m by turns and thrown
@@ -448,8 +459,8 @@ static void ball_in_slot_rests(void **state)
  * checks, nothing was moved apart at a frame's end (with points left out the
  * balls sank into each other and hundreds were), no event guard, no problem
  * unsolved, and once at rest the pair checks per simulated second are under
- * 1% of those before.  (A hundred balls in four layers, bench/crowd.awk's
- * slot, rest too but cost minutes: make bench has them.) */
+ * 1% of those before (slot_crowd_rests; the hundred of bench/crowd.awk:
+ * hundred_in_slot_rest). */
 static void crowd_in_slot_rests(void **state)
 {
     (void)state;
@@ -463,19 +474,65 @@ static void crowd_in_slot_rests(void **state)
                       i, -1.25 + i * 0.1, 0.05 + 0.1 * (1 + i % 4) + 0.05, (i % 3 - 1) * 0.5);
     slot(0.05, balls);
     free(balls);
+    slot_crowd_rests("26 balls in a row");
+}
+
+/* The crowd of the slot's world (run_slot's checks at every frame) rests within
+ * 10 s, stays at rest 2 s more at under 1% of the pair checks per simulated
+ * second before, and every point was answered: nothing moved apart at a frame's
+ * end, no event guard, no problem unsolved. */
+static void slot_crowd_rests(const char *what)
+{
     world *w = &g_sh.w;
-    int rested = run_slot("26 balls in a row", 100);
-    if (rested < 0) fail_msg("26 balls in a row: not at rest after 10 s");
+    int rested = run_slot(what, 100);
+    if (rested < 0) fail_msg("%s: not at rest after 10 s", what);
     long before = w->st.pair_checks;
     assert_int_equal(run("run 20"), CMD_OK);
     assert_true(all_rest(w));
     double rate_before = before / (rested * 0.1), rate_after = (w->st.pair_checks - before) / 2.0;
-    print_message("slot, 26 balls in a row: at rest after %d frames; %.0f pair checks/s before, %.0f after\n",
-                  rested, rate_before, rate_after);
+    print_message("slot, %s: at rest after %d frames; %.0f pair checks/s before, %.0f after\n", what, rested,
+                  rate_before, rate_after);
     assert_true(rate_after < 0.01 * rate_before);
     assert_int_equal(w->st.guards, 0);
     assert_int_equal(w->st.unsolved, 0);
     assert_int_equal(w->st.separations, 0);
+}
+
+/* Issue 35's crowd: 100 balls of e = 0.5 in the slot (bench/crowd.awk's), four
+ * layers of 25 dropped from 0.1 to 0.55 m, each layer's balls 0.103 m apart
+ * and thrown across at -0.5, 0 and 0.5 m/s by turns; they land on each other
+ * and press into one cluster of some 400 contact points (both sides', the
+ * floor's, their neighbours' in and across the layers), solved at every step
+ * of the cluster (lcp.c's crowds).  Normal build only. */
+static void hundred_in_slot_rest(void **state)
+{
+    (void)state;
+#ifdef UNDER_SANITIZERS
+    /* (some 5 minutes there; the sanitizers' crowd past a dense solve is the
+     * row of 26, crowd_in_slot_rests.  Fewer balls do not make a smaller
+     * test of this: two layers of 25 leave room along the slot, where
+     * frictionless balls slide on for more than 10 s) */
+    skip();
+#endif
+    const int layers = 4;
+    char *balls = malloc(16384), what[64];
+    assert_non_null(balls);
+    int n = 0;
+    for (int k = 0, i = 0; k < layers; k++)
+        for (int j = 0; j < 25; j++, i++)
+            n += snprintf(balls + n, 16384 - (size_t)n,
+                          "sphere b%d; radius = 0.05; elasticity = 0.5; translate = (0, %.17g, %.17g); "
+                          "velocity = (%g, 0, 0)\n",
+                          i, -1.25 + j * 0.103 + (k % 2) * 0.01, 0.1 + k * 0.15, (j % 3 - 1) * 0.5);
+    slot(0.05, balls);
+    free(balls);
+    snprintf(what, sizeof what, "%d balls in %d layers", 25 * layers, layers);
+    /* (a pressed crowd's cluster steps may raise its energy by some 1e-9 of
+     * it in a frame while it creeps, and 1.2e-6 once as it settles: the piles'
+     * residue, issue 35's item 3, not this test's; a rise of 1e-5 fails) */
+    g_slot_rise = 1e-5;
+    slot_crowd_rests(what);
+    g_slot_rise = 1e-9;
 }
 
 int main(void)
@@ -483,6 +540,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(ball_in_slot_rests),
         cmocka_unit_test(crowd_in_slot_rests),
+        cmocka_unit_test(hundred_in_slot_rest),
         cmocka_unit_test(grooves_rest),
         cmocka_unit_test(closed_boxes_keep_their_floor),
         cmocka_unit_test(last_resort_keeps_the_floor),
