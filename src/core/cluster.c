@@ -473,7 +473,7 @@ static void newton(world *w, const int *list, int n, points *pts, double t, doub
             for (int j = 0; j < m; j++) rw->q[k] -= rw->A[k * m + j] * rw->lam[j];
         }
         /* (a crowd's hundreds of points: from the last kicks' clamped points,
-         * which the next kicks mostly share, so that its pivots are few) */
+         * which the next kicks mostly share, for fewer pivots) */
         int st;
         if (m > IMPULSE_MAX_ROWS) {
             for (int k = 0; k < m; k++) rw->next[k] = rw->lam[k];

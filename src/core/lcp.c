@@ -51,15 +51,15 @@
  *
  * Crowds.  Beyond DENSE_MAX contacts (a crowd's cluster: a hundred balls in a
  * slot make 400) A is sparse, for a contact's row touches only the contacts of
- * its two bodies, and so, nearly, is the factor: a row of L is 0 before the first
- * contact clamped that shares a body with it, or with one clamped between.  The
- * sums over C then run over A's nonzeros alone (row_dot), each row of L from its
- * first nonzero (first), the rank-one update of unclamp over the rows that
- * change, and L^-T by rows; the answer is held to the same checks.  Up to
- * DENSE_MAX every sum is the dense one, to the bit.  A crowd's steps solve
- * problems that differ little from the last (Newton's steps over the same rows):
- * lcp_solve_warm starts from the last answer's clamped set (warm), and is left
- * with a few pivots instead of one or more a contact.
+ * its two bodies, and so, mostly, is the factor of A_CC: a row of L is 0 before
+ * the first clamped contact it is coupled to (through shared bodies, directly or
+ * by the rows between).  The sums over C then run over A's nonzeros alone
+ * (row_dot), each row of L from its first nonzero (first), the rank-one update
+ * of unclamp over the rows that change, and L^-T by rows; the answer is held to
+ * the same checks.  Up to DENSE_MAX every sum is the dense one, to the bit.  A
+ * crowd's Newton steps solve problems that differ little from the last:
+ * lcp_solve_warm starts from the last answer's clamped set (warm); on the slot
+ * that takes some half the pivots of a cold start.
  */
 #include "lcp.h"
 
@@ -601,7 +601,8 @@ static int verify(lcp_state *s)
         double v = s->q[i], tw = tol_w(s, i, zs);
         if (s->sparse) {
             /* (w_of's sum but for the zeros' terms) */
-            for (int e = s->nzs[i]; e < s->nzs[i + 1]; e++) v += s->A[(size_t)i * n + s->nzc[e]] * s->z[s->nzc[e]];
+            for (int e = s->nzs[i]; e < s->nzs[i + 1]; e++)
+                v += s->A[(size_t)i * n + s->nzc[e]] * s->z[s->nzc[e]];
         } else {
             v = w_of(s->A + (size_t)i * n, s->q[i], s->z, n);
         }
@@ -691,7 +692,8 @@ static int solve(int n, const double *A, const double *q, double *z, double *w, 
         ok = ok && isfinite(q[i]) && A[(size_t)i * n + i] >= 0;
         if (!s.sparse)
             for (int j = 0; j < n; j++) ok = ok && isfinite(A[(size_t)i * n + j]);
-        s.dw[i] = warmed && z[i] > 0 ? z[i] : 0; /* (the guess, till the pivots' first use) */
+        /* (the guess, in dw till the pivots' first use) */
+        s.dw[i] = warmed && isfinite(z[i]) && z[i] > 0 ? z[i] : 0;
         z[i] = 0;
         w[i] = q[i];
         s.root[i] = sqrt(fmax(A[(size_t)i * n + i], 0));

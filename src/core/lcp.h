@@ -55,9 +55,10 @@ int lcp_solve(int n, const double *A, const double *q, double *z, double *w, lcp
 
 /* lcp_solve from a guess: z on entry is one, as the answer of a problem like
  * this one just solved (the same A, q moved a little).  The contacts with
- * z_i > 0 are clamped first (z_C solved from w_C = 0, those whose forces come out
- * below 0 let go, as long as any does) and the pivoting goes on from there, so
- * that a good guess leaves a few pivots to make instead of one or more a contact.
+ * z_i > 0 (finite) are clamped first, z goes from the guess towards
+ * -A_CC^-1 q_C, letting go of the forces that would fall below 0 on the way, and
+ * the pivoting goes on from there, so that a good guess leaves fewer pivots to
+ * make than one or more a contact.
  * The answer is held to the same conditions as lcp_solve's and returned alike;
  * where the answer is not unique (z, not w) it may be another one. */
 int lcp_solve_warm(int n, const double *A, const double *q, double *z, double *w, lcp_work *work);
