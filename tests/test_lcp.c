@@ -591,6 +591,127 @@ static void pyramid_of_balls(void **state)
     free(wk);
 }
 
+/* ---- crowds: more contacts than a dense solve (sparse, from a guess) ---- */
+
+/* Balls of radius 0.05 in a slot as wide as one (its sides at x = +-0.05, its
+ * floor at z = 0), `layers` rows of `per` balls, each row offset half a ball from
+ * the one below and resting on it (centres 0.1 apart), their masses over two
+ * decades: every ball's contacts with both sides, the bottom row's with the
+ * floor, each ball's with its neighbours in its row and the two above it
+ * (issue 35's crowd).  Returns the contacts' count. */
+static int slot_crowd(int layers, int per, tbody *bs, tcontact *cs)
+{
+    const double r = 0.05, rise = sqrt(3) / 2 * 2 * r;
+    int n = 0;
+    for (int k = 0; k < layers; k++)
+        for (int j = 0; j < per; j++) {
+            int b = k * per + j;
+            double m = pow(10, uniform() - 0.5), I = 0.4 * m * r * r;
+            bs[b] = (tbody){v3(0, j * 2 * r + (k % 2) * r, r + k * rise), m, v3(I, I, I)};
+            vec3 x = bs[b].x;
+            cs[n++] = (tcontact){b, -1, v3(r, x.y, x.z), v3(-1, 0, 0)};
+            cs[n++] = (tcontact){b, -1, v3(-r, x.y, x.z), v3(1, 0, 0)};
+            if (k == 0) cs[n++] = (tcontact){b, -1, v3(0, x.y, 0), v3(0, 0, 1)};
+            if (j > 0) {
+                vec3 d = v3_sub(x, bs[b - 1].x);
+                cs[n++] = (tcontact){b, b - 1, v3_mad(bs[b - 1].x, d, 0.5), v3_scale(d, 1 / v3_len(d))};
+            }
+            if (k > 0) /* the one or two below, half a ball either way */
+                for (int o = -1; o <= 0; o++) {
+                    int jb = j + o + (k % 2);
+                    if (jb < 0 || jb >= per) continue;
+                    const tbody *u = &bs[(k - 1) * per + jb];
+                    vec3 d = v3_sub(x, u->x);
+                    cs[n++] = (tcontact){b, (k - 1) * per + jb, v3_mad(u->x, d, 0.5), v3_scale(d, 1 / v3_len(d))};
+                }
+        }
+    return n;
+}
+
+/* contact_problem's A over the bodies of each pair of contacts alone (the others
+ * give nothing): the crowd's hundreds. */
+static void crowd_problem(const tbody *bs, const tcontact *cs, int n, double *A, double *q)
+{
+    for (int i = 0; i < n; i++) {
+        q[i] = -G * cs[i].n.z * (cs[i].a >= 0) + G * cs[i].n.z * (cs[i].b >= 0);
+        for (int j = 0; j < n; j++) {
+            double v = 0;
+            const int mine[2] = {cs[i].a, cs[i].b};
+            for (int e = 0; e < 2; e++) {
+                vec3 li, ai, lj, aj;
+                if (mine[e] < 0 || !row_part(bs, &cs[i], mine[e], &li, &ai) ||
+                    !row_part(bs, &cs[j], mine[e], &lj, &aj))
+                    continue;
+                vec3 I = bs[mine[e]].inertia;
+                v += v3_dot(li, lj) / bs[mine[e]].m + ai.x * aj.x / I.x + ai.y * aj.y / I.y + ai.z * aj.z / I.z;
+            }
+            A[i * n + j] = v;
+        }
+    }
+    for (int i = 0; i < n; i++) /* (exactly symmetric) */
+        for (int j = 0; j < i; j++) A[i * n + j] = A[j * n + i];
+}
+
+/* A crowd of 3 rows of 26 balls and one of 4 rows of 26 in the slot (some 300 and
+ * 400 contacts, far past the dense solve's 64; rank deficient, for the sides
+ * push each ball both ways along x): answered under gravity, and with q around
+ * known answers w comes back (w is unique), from no guess, from the last
+ * answer for a q moved a little (the crowd's next Newton step), from a guess of
+ * every contact and from a random one: each answer held to lcp.h's promise
+ * (check_answer: z >= 0, w = A z + q to the bit, complementary). */
+static void crowds_are_solved_sparse_and_warm(void **state)
+{
+    (void)state;
+    for (int layers = 3; layers <= 4; layers++) {
+        int per = 26, nb = layers * per;
+        tbody *bs = malloc(sizeof *bs * (size_t)nb);
+        tcontact *cs = malloc(sizeof *cs * (size_t)nb * 6);
+        assert_non_null(bs);
+        assert_non_null(cs);
+        int n = slot_crowd(layers, per, bs, cs);
+        size_t m = (size_t)n;
+        double *A = malloc(sizeof *A * m * m), *v = malloc(sizeof *v * m * 6);
+        lcp_work *wk = work_for(n);
+        assert_non_null(A);
+        assert_non_null(v);
+        double *q = v, *z = v + m, *w = v + 2 * m, *z0 = v + 3 * m, *w0 = v + 4 * m, *zl = v + 5 * m;
+        crowd_problem(bs, cs, n, A, q);
+        assert_int_equal(lcp_solve(n, A, q, z, w, wk), 0);
+        check_answer(n, A, q, z, w);
+        double worst = 0, werr = 0;
+        for (int t = 0; t < 4; t++) {
+            around_answer(n, A, z0, w0, q);
+            for (int g = 0; g < 4; g++) {
+                if (g == 1) {
+                    /* the answer moved by 1e-3 of itself, and q with it (a q
+                     * moved at random may ask the sides for the impossible) */
+                    for (int i = 0; i < n; i++) {
+                        z0[i] *= 1 + 1e-3 * gaussian();
+                        w0[i] *= 1 + 1e-3 * gaussian();
+                    }
+                    for (int i = 0; i < n; i++) q[i] = w0[i] - Az(n, A, z0, i);
+                }
+                /* the guess: none; the last answer; every contact; a random half */
+                for (int i = 0; i < n; i++)
+                    z[i] = g == 1 ? zl[i] : g == 2 ? 1 : g == 3 ? (uniform() < 0.5) * uniform() : 0;
+                int r = g == 0 ? lcp_solve(n, A, q, z, w, wk) : lcp_solve_warm(n, A, q, z, w, wk);
+                assert_int_equal(r, 0);
+                worst = fmax(worst, check_answer(n, A, q, z, w));
+                if (g == 0) memcpy(zl, z, sizeof *z * m);
+                for (int i = 0; i < n; i++) werr = fmax(werr, fabs(w[i] - w0[i]) / w_scale(n, A, q, z, i));
+            }
+        }
+        print_message("slot of %d rows of %d balls, %d contacts: complementarity within %.3g, w within "
+                      "%.3g of the known\n", layers, per, n, worst, werr);
+        assert_true(n > 250 && werr < 1e-10);
+        free(wk);
+        free(A);
+        free(v);
+        free(bs);
+        free(cs);
+    }
+}
+
 /* ---- edge cases ---- */
 
 static void apart_contacts_need_no_force(void **state)
@@ -1016,6 +1137,7 @@ int main(void)
         cmocka_unit_test(least_norm_answers_agree_with_brute_force),
         cmocka_unit_test(least_norm_answers_ignore_the_order),
         cmocka_unit_test(least_norm_shares_a_face_evenly),
+        cmocka_unit_test(crowds_are_solved_sparse_and_warm),
         cmocka_unit_test(timing),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

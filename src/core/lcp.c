@@ -48,6 +48,18 @@
  * steps of refinement, clamped forces a rounding below 0 become 0, and a free w
  * below the tolerance, or a clamped force far below 0, sends its contact back to
  * be taken again (about one random problem in a thousand).
+ *
+ * Crowds.  Beyond DENSE_MAX contacts (a crowd's cluster: a hundred balls in a
+ * slot make 400) A is sparse, for a contact's row touches only the contacts of
+ * its two bodies, and so, mostly, is the factor of A_CC: a row of L is 0 before
+ * the first clamped contact it is coupled to (through shared bodies, directly or
+ * by the rows between).  The sums over C then run over A's nonzeros alone
+ * (row_dot), each row of L from its first nonzero (first), the rank-one update
+ * of unclamp over the rows that change, and L^-T by rows; the answer is held to
+ * the same checks.  Up to DENSE_MAX every sum is the dense one, to the bit.  A
+ * crowd's Newton steps solve problems that differ little from the last:
+ * lcp_solve_warm starts from the last answer's clamped set (warm); on the slot
+ * that takes some half the pivots of a cold start.
  */
 #include "lcp.h"
 
@@ -58,6 +70,10 @@
 #define PIVOT_TOL 1e-11
 /* A rate at most this times the direction's size (both scaled) is rounding. */
 #define RATE_TOL 1e-11
+
+/* Problems of more contacts than this are solved sparsely (below); those of up to
+ * it exactly as before, to the bit. */
+#define DENSE_MAX 64
 
 enum { UNSEEN, IN_C, IN_NC };
 
@@ -77,6 +93,13 @@ typedef struct {
     int *at;             /* by position: the contact */
     int *pos;            /* by index: position in C, or -1 */
     int *skip;           /* by index: a free w whose fall is rounding, this pivot */
+    /* sparse (n > DENSE_MAX), in the workspace's room the least-norm answer
+     * uses otherwise: */
+    bool sparse;
+    double *inv;         /* by position: 1 / L's diagonal */
+    int *first;          /* by position: L's row holds 0 before this column */
+    int *nzs, *nzc;      /* A's nonzeros: row i's columns nzc[nzs[i] .. nzs[i+1]) */
+    int *pair;           /* scratch of 2 n: (position, index) of one row's terms */
 } lcp_state;
 
 /* Doubles of the workspace: the pivoting's m^2 + 6 m, and lcp_least_norm's
@@ -111,6 +134,17 @@ static void state_init(lcp_state *s, int n, const double *A, const double *q, do
     s->at = i + m;
     s->pos = i + 2 * m;
     s->skip = i + 3 * m;
+    s->sparse = n > DENSE_MAX;
+    if (s->sparse) {
+        /* m doubles and m^2 + 4 m + 1 ints in the 2 m^2 doubles after the
+         * pivoting's */
+        s->inv = d + m * m + 6 * m;
+        int *f = (int *)(void *)(s->inv + m);
+        s->first = f;
+        s->nzs = f + m;
+        s->pair = s->nzs + m + 1;
+        s->nzc = s->pair + 2 * m;
+    }
     for (int j = 0; j < n; j++) {
         s->set[j] = UNSEEN;
         s->pos[j] = -1;
@@ -142,18 +176,61 @@ static double dot_at(const lcp_state *s, const double *row, const double *x)
     return v;
 }
 
-/* y = L^-1 b over the k positions (y may be b). */
+/* Row j of A times x over C (x by position): the sum over the positions p of
+ * A_j,at[p] x[p], in the order of p.  Sparse, over row j's nonzeros alone, put in
+ * the order of their positions: the same sum but for the zeros' terms. */
+static double row_dot(const lcp_state *s, int j, const double *x)
+{
+    const double *Aj = s->A + (size_t)j * s->n;
+    if (!s->sparse) return dot_at(s, Aj, x);
+    int m = 0, *pr = s->pair;
+    for (int e = s->nzs[j]; e < s->nzs[j + 1]; e++) {
+        int c = s->nzc[e], p = s->pos[c];
+        if (p < 0) continue;
+        /* (insertion by position: a row's nonzeros are its contacts' bodies' few) */
+        int t = m++;
+        for (; t > 0 && pr[2 * (t - 1)] > p; t--) {
+            pr[2 * t] = pr[2 * (t - 1)];
+            pr[2 * t + 1] = pr[2 * (t - 1) + 1];
+        }
+        pr[2 * t] = p;
+        pr[2 * t + 1] = c;
+    }
+    double v = 0;
+    for (int t = 0; t < m; t++) v += Aj[pr[2 * t + 1]] * x[pr[2 * t]];
+    return v;
+}
+
+/* y = L^-1 b over the k positions (y may be b).  Sparse, each row's sum starts at
+ * its first nonzero, or at b's (y is 0 before it), and the diagonal's division is
+ * a product (the rows are short: it was a third of their time). */
 static void solve_lower(const lcp_state *s, const double *b, double *y)
 {
+    int b0 = 0;
+    if (s->sparse)
+        while (b0 < s->k && b[b0] == 0) b0++;
     for (int r = 0; r < s->k; r++) {
         const double *Lr = s->L + (size_t)r * s->n;
-        y[r] = (b[r] - dot(Lr, y, r)) / Lr[r];
+        int lo = s->sparse ? (s->first[r] > b0 ? s->first[r] : b0) : 0;
+        double v = b[r] - (lo < r ? dot(Lr + lo, y + lo, r - lo) : 0);
+        y[r] = s->sparse ? v * s->inv[r] : v / Lr[r];
     }
 }
 
-/* x = L^-T y over the k positions (x may be y). */
+/* x = L^-T y over the k positions (x may be y).  Sparse, by rows of L from the
+ * last, each over its nonzeros (the same answer, summed in another order; the
+ * division a product, as in solve_lower). */
 static void solve_upper(const lcp_state *s, const double *y, double *x)
 {
+    if (s->sparse) {
+        for (int r = 0; r < s->k; r++) x[r] = y[r];
+        for (int r = s->k - 1; r >= 0; r--) {
+            const double *Lr = s->L + (size_t)r * s->n;
+            double xr = x[r] *= s->inv[r];
+            for (int c = s->first[r]; c < r; c++) x[c] -= Lr[c] * xr;
+        }
+        return;
+    }
     for (int r = s->k - 1; r >= 0; r--) {
         double v = y[r];
         for (int c = r + 1; c < s->k; c++) v -= s->L[(size_t)c * s->n + r] * x[c];
@@ -177,10 +254,67 @@ static void clamp(lcp_state *s, int j, const double *y, double sj)
     double *Lk = s->L + (size_t)s->k * s->n;
     for (int p = 0; p < s->k; p++) Lk[p] = y[p];
     Lk[s->k] = sqrt(sj);
+    if (s->sparse) {
+        int f = 0;
+        while (f < s->k && y[f] == 0) f++;
+        s->first[s->k] = f;
+        s->inv[s->k] = 1 / Lk[s->k];
+    }
     s->at[s->k] = j;
     s->pos[j] = s->k;
     s->set[j] = IN_C;
     s->k++;
+}
+
+/* The plane rotation of unclamp's step at the diagonal *a with x_i: *a becomes
+ * their length; c and sn as Golub and Van Loan's update uses them. */
+static void rotation(double *a, double xi, double *c, double *sn)
+{
+    double r = sqrt(*a * *a + xi * xi);
+    *c = r / *a;
+    *sn = xi / *a;
+    *a = r;
+}
+
+/* unclamp's rank-one update of the m rows from position p on, sparse: at step i
+ * only the rows that hold column p + i or an x_t not 0 change (the others' 0
+ * stays 0), and a row does from the step at its first column on (x_t is 0
+ * before: it starts as the row's column p, and only a column held makes it
+ * more), so the rows join a list of those changing as the steps reach their
+ * first columns, and leave it at their own diagonals.  The same numbers as the
+ * dense update's. */
+static void rotate_sparse(lcp_state *s, int p, int m, double *x)
+{
+    int n = s->n, *head = s->pair, *next = s->pair + n, live = -1;
+    for (int i = 0; i < m; i++) head[i] = -1;
+    for (int t = m - 1; t >= 0; t--) {
+        int at = s->first[p + t] - p;
+        if (at < 0) at = 0;
+        next[t] = head[at];
+        head[at] = t;
+    }
+    for (int i = 0; i < m; i++) {
+        double c, sn, *diag = s->L + (size_t)(p + i) * n + p + i;
+        rotation(diag, x[i], &c, &sn);
+        s->inv[p + i] = 1 / *diag;
+        for (int t = head[i], after; t >= 0; t = after) {
+            after = next[t];
+            next[t] = live;
+            live = t;
+        }
+        for (int t = live, prev = -1, after; t >= 0; t = after) {
+            after = next[t];
+            if (t <= i) {
+                if (prev < 0) live = after;
+                else next[prev] = after;
+                continue;
+            }
+            double *Lt = s->L + (size_t)(p + t) * n;
+            Lt[p + i] = (Lt[p + i] + sn * x[t]) / c;
+            x[t] = c * x[t] - sn * Lt[p + i];
+            prev = t;
+        }
+    }
 }
 
 /* The contact at position p leaves C for NC, its force 0.  Deleting row and column
@@ -192,23 +326,37 @@ static void unclamp(lcp_state *s, int p)
     int n = s->n, k = s->k, m = k - 1 - p;
     double *L = s->L, *x = s->tmp;
     int j = s->at[p];
-    for (int i = 0; i < m; i++) x[i] = L[(size_t)(p + 1 + i) * n + p];
+    /* (sparse, a row's columns before its first are not read, nor moved: the
+     * update fills no column before a row's first, for it mixes a row's columns
+     * from p on, with x_t nonzero only where row t holds column p or, later,
+     * one of those mixed) */
+    for (int i = 0; i < m; i++)
+        x[i] = !s->sparse || s->first[p + 1 + i] <= p ? L[(size_t)(p + 1 + i) * n + p] : 0;
     for (int r = p + 1; r < k; r++) {
         double *dst = L + (size_t)(r - 1) * n, *src = L + (size_t)r * n;
-        for (int c = 0; c < p; c++) dst[c] = src[c];
-        for (int c = p; c < r; c++) dst[c] = src[c + 1];
+        int f = 0;
+        if (s->sparse) {
+            f = s->first[r] > p ? s->first[r] - 1 : s->first[r];
+            s->first[r - 1] = f;
+            s->inv[r - 1] = s->inv[r];
+        }
+        for (int c = f; c < p; c++) dst[c] = src[c];
+        for (int c = f > p ? f : p; c < r; c++) dst[c] = src[c + 1];
         s->at[r - 1] = s->at[r];
         s->pos[s->at[r - 1]] = r - 1;
     }
-    for (int i = 0; i < m; i++) {
-        double *Li = L + (size_t)(p + i) * n;
-        double a = Li[p + i], r = sqrt(a * a + x[i] * x[i]);
-        double c = r / a, sn = x[i] / a;
-        Li[p + i] = r;
-        for (int t = i + 1; t < m; t++) {
-            double *Lt = L + (size_t)(p + t) * n;
-            Lt[p + i] = (Lt[p + i] + sn * x[t]) / c;
-            x[t] = c * x[t] - sn * Lt[p + i];
+    if (s->sparse) {
+        rotate_sparse(s, p, m, x);
+    } else {
+        for (int i = 0; i < m; i++) {
+            double *Li = L + (size_t)(p + i) * n;
+            double c, sn;
+            rotation(Li + p + i, x[i], &c, &sn);
+            for (int t = i + 1; t < m; t++) {
+                double *Lt = L + (size_t)(p + t) * n;
+                Lt[p + i] = (Lt[p + i] + sn * x[t]) / c;
+                x[t] = c * x[t] - sn * Lt[p + i];
+            }
         }
     }
     s->k--;
@@ -270,18 +418,14 @@ static void settle(lcp_state *s, int refine)
     solve_upper(s, x, x);
     for (int it = 0; it < refine; it++) {
         for (int p = 0; p < k; p++) {
-            const double *Ai = s->A + (size_t)s->at[p] * n;
-            r[p] = -s->q[s->at[p]] - dot_at(s, Ai, x);
+            r[p] = -s->q[s->at[p]] - row_dot(s, s->at[p], x);
         }
         solve_lower(s, r, r);
         solve_upper(s, r, r);
         for (int p = 0; p < k; p++) x[p] += r[p];
     }
     for (int p = 0; p < k; p++) s->z[s->at[p]] = x[p];
-    for (int i = 0; i < n; i++) {
-        const double *Ai = s->A + (size_t)i * n;
-        s->w[i] = s->set[i] == IN_C ? 0 : s->q[i] + dot_at(s, Ai, x);
-    }
+    for (int i = 0; i < n; i++) s->w[i] = s->set[i] == IN_C ? 0 : s->q[i] + row_dot(s, i, x);
 }
 
 /* The direction of d's drive: dz over C (by position) with dz_d = 1 keeping w_C
@@ -296,8 +440,7 @@ static double direction(lcp_state *s, int d)
     for (int p = 0; p < k; p++) s->dz[p] = -s->dz[p];
     for (int j = 0; j < n; j++) {
         if (j != d && s->set[j] != IN_NC) continue;
-        const double *Aj = s->A + (size_t)j * n;
-        s->dw[j] = Aj[d] + dot_at(s, Aj, s->dz);
+        s->dw[j] = s->A[(size_t)j * n + d] + row_dot(s, j, s->dz);
     }
     return sd;
 }
@@ -455,7 +598,14 @@ static int verify(lcp_state *s)
     }
     double zs = z_size(s);
     for (int i = 0; i < n; i++) {
-        double v = w_of(s->A + (size_t)i * n, s->q[i], s->z, n), tw = tol_w(s, i, zs);
+        double v = s->q[i], tw = tol_w(s, i, zs);
+        if (s->sparse) {
+            /* (w_of's sum but for the zeros' terms) */
+            for (int e = s->nzs[i]; e < s->nzs[i + 1]; e++)
+                v += s->A[(size_t)i * n + s->nzc[e]] * s->z[s->nzc[e]];
+        } else {
+            v = w_of(s->A + (size_t)i * n, s->q[i], s->z, n);
+        }
         s->w[i] = v;
         if (s->set[i] == IN_C && (v < -tw || (s->z[i] > 0 && v > tw))) {
             return -1;
@@ -469,35 +619,89 @@ static int verify(lcp_state *s)
     return back;
 }
 
-int lcp_solve(int n, const double *A, const double *q, double *z, double *w, lcp_work *work)
+/* A's nonzeros, row by row, into nzs/nzc (row i's columns in index order);
+ * whether all of A is finite. */
+static bool nonzeros(lcp_state *s)
+{
+    int n = s->n, e = 0;
+    bool ok = true;
+    for (int i = 0; i < n; i++) {
+        s->nzs[i] = e;
+        const double *Ai = s->A + (size_t)i * n;
+        for (int j = 0; j < n; j++) {
+            ok = ok && isfinite(Ai[j]);
+            if (Ai[j] != 0) s->nzc[e++] = j;
+        }
+    }
+    s->nzs[n] = e;
+    return ok;
+}
+
+/* The warm start from the guess z0 >= 0 (by index, z0_i > 0 guessed clamped):
+ * the guessed contacts clamped in index order, but for those whose rows depend
+ * on the ones clamped before; then from z0 on C towards z_C = -A_CC^-1 q_C (an
+ * active set's step, as Lawson and Hanson's for least squares with z >= 0): where
+ * a force would fall below 0 on the way, the step stops where the first does,
+ * those at 0 there let go (to be taken again), and on from there.  The
+ * invariants hold at the end (z_C >= 0, w_C = 0, NC empty): it is as if these
+ * contacts had been taken first and clamped. */
+static void warm(lcp_state *s, double *z0)
+{
+    int n = s->n;
+    double *x = s->yj;
+    for (int i = 0; i < n; i++) {
+        if (!(z0[i] > 0)) continue;
+        double si = schur(s, i, s->y);
+        if (si > PIVOT_TOL * s->A[(size_t)i * n + i]) clamp(s, i, s->y, si);
+    }
+    for (;;) {
+        for (int p = 0; p < s->k; p++) x[p] = -s->q[s->at[p]];
+        solve_lower(s, x, x);
+        solve_upper(s, x, x);
+        double t = 1;
+        for (int p = 0; p < s->k; p++) {
+            double a = z0[s->at[p]];
+            if (x[p] < 0 && a / (a - x[p]) < t) t = a / (a - x[p]);
+        }
+        if (t == 1) break;
+        for (int p = 0; p < s->k; p++) {
+            int j = s->at[p];
+            z0[j] = x[p] < 0 && z0[j] / (z0[j] - x[p]) == t ? 0 : z0[j] + t * (x[p] - z0[j]);
+        }
+        for (int j = 0; j < n; j++) {
+            if (s->set[j] != IN_C || z0[j] != 0) continue;
+            unclamp(s, s->pos[j]);
+            s->set[j] = UNSEEN;
+            s->pivots++;
+        }
+    }
+    settle(s, 0);
+}
+
+static int pivot(lcp_state *s);
+
+/* lcp_solve and lcp_solve_warm: from the guess z > 0 when warm. */
+static int solve(int n, const double *A, const double *q, double *z, double *w, lcp_work *work,
+                 bool warmed)
 {
     assert(n >= 0);
     lcp_state s;
     state_init(&s, n, A, q, z, w, work);
     bool ok = true;
     for (int i = 0; i < n; i++) {
+        ok = ok && isfinite(q[i]) && A[(size_t)i * n + i] >= 0;
+        if (!s.sparse)
+            for (int j = 0; j < n; j++) ok = ok && isfinite(A[(size_t)i * n + j]);
+        /* (the guess, in dw till the pivots' first use) */
+        s.dw[i] = warmed && isfinite(z[i]) && z[i] > 0 ? z[i] : 0;
         z[i] = 0;
         w[i] = q[i];
-        ok = ok && isfinite(q[i]) && A[(size_t)i * n + i] >= 0;
-        for (int j = 0; j < n; j++) ok = ok && isfinite(A[(size_t)i * n + j]);
         s.root[i] = sqrt(fmax(A[(size_t)i * n + i], 0));
         s.qmax = fmax(s.qmax, fabs(q[i]));
     }
-    int r = ok ? 1 : -1;
-    while (r == 1) {
-        int d = 0;
-        while (d < n && s.set[d] != UNSEEN) d++;
-        if (d == n) {
-            r = verify(&s);
-        } else if (w[d] >= -tol_w(&s, d, z_size(&s))) {
-            s.set[d] = IN_NC;
-        } else if (drive(&s, d) < 0) {
-            r = -1;
-        } else {
-            settle(&s, 0);
-        }
-        if (s.pivots > 100 + 20L * n) r = -1;
-    }
+    if (s.sparse) ok = nonzeros(&s) && ok;
+    if (ok && warmed) warm(&s, s.dw);
+    int r = ok ? pivot(&s) : -1;
     if (r < 0) {
         for (int i = 0; i < n; i++) {
             z[i] = 0;
@@ -505,6 +709,41 @@ int lcp_solve(int n, const double *A, const double *q, double *z, double *w, lcp
         }
     }
     return r;
+}
+
+/* The contacts taken in index order until the answer holds: 0, or -1. */
+static int pivot(lcp_state *s)
+{
+    int n = s->n, r = 1, d = 0;
+    double *w = s->w, zs = z_size(s);
+    while (r == 1) {
+        /* (the contacts before the last taken are seen: but after verify) */
+        while (d < n && s->set[d] != UNSEEN) d++;
+        if (d == n) {
+            r = verify(s);
+            d = 0;
+            zs = z_size(s);
+        } else if (w[d] >= -tol_w(s, d, zs)) {
+            s->set[d] = IN_NC;
+        } else if (drive(s, d) < 0) {
+            r = -1;
+        } else {
+            settle(s, 0);
+            zs = z_size(s);
+        }
+        if (s->pivots > 100 + 20L * n) r = -1;
+    }
+    return r;
+}
+
+int lcp_solve(int n, const double *A, const double *q, double *z, double *w, lcp_work *work)
+{
+    return solve(n, A, q, z, w, work, false);
+}
+
+int lcp_solve_warm(int n, const double *A, const double *q, double *z, double *w, lcp_work *work)
+{
+    return solve(n, A, q, z, w, work, true);
 }
 
 bool lcp_unique(int n, const double *A, const double *q, const double *z, lcp_work *work)

@@ -53,6 +53,16 @@ size_t lcp_work_size(int n);
  * the same bits. */
 int lcp_solve(int n, const double *A, const double *q, double *z, double *w, lcp_work *work);
 
+/* lcp_solve from a guess: z on entry is one, as the answer of a problem like
+ * this one just solved (the same A, q moved a little).  The contacts with
+ * z_i > 0 (finite) are clamped first, z goes from the guess towards
+ * -A_CC^-1 q_C, letting go of the forces that would fall below 0 on the way, and
+ * the pivoting goes on from there, so that a good guess leaves fewer pivots to
+ * make than one or more a contact.
+ * The answer is held to the same conditions as lcp_solve's and returned alike;
+ * where the answer is not unique (z, not w) it may be another one. */
+int lcp_solve_warm(int n, const double *A, const double *q, double *z, double *w, lcp_work *work);
+
 /* Whether z, a solution from lcp_solve, is the problem's only one: true when the
  * contacts that may carry force (w_i within LCP_TOL of 0) have independent rows of A,
  * so their z_i are determined.  False when they do not: z is then one of many,
