@@ -462,15 +462,32 @@ static int solve_full(int k, double *M, double *r, double *x)
 /* Rounds of a polish, at most (but its early try: friction_cone_solve). */
 #define POLISH_ROUNDS 20
 
+/* After a polish fails (mostly: its rounds spent turning slips, and swapping
+ * points between sticking and sliding, that the sweeps have not yet settled),
+ * the next is tried only once the sweeps' change is this many times smaller
+ * than when it failed.  Each round solves its pattern afresh, cubic in the
+ * points; in a closed box of 50 rough objects (issue 35) most polishes failed
+ * after all 20 rounds, one every tenth sweep, and the polishes did 15 times
+ * the sweeps' work. */
+#define POLISH_PROGRESS 0.1
+
+/* The polishes of one solve do at most this many times the work of all its
+ * sweeps, counted as a round's nu^3 (its elimination) against a sweep's n^2
+ * (three columns of A a point): a round of 60 points all sticking costs some
+ * 60 sweeps.  Small problems keep all their rounds (3 points: 33 rounds of 9
+ * unknowns), large ones a few. */
+#define POLISH_WORK 1
+
 /* Polishes z (the sweeps' answer, nearly right) to the exact answer of its
  * pattern: points apart stay 0, points that stick get w_k = 0, points that slide
  * get wn = 0 with zt along their slip (the slips found again, a few times).
  * True, with z and w written, when within `rounds` rounds the answer holds
  * within tol (or within what the sweeps' answer leaves: where the pattern's
  * system is singular, and for the gaps of points apart when the sweeps are
- * stalled); else nothing changed. */
+ * stalled); else nothing changed.  Each round takes its nu^3 from *work, and
+ * none is begun that *work cannot pay for. */
 static bool polish(int m, const double *A, const double *q, const double *mu, double *z, double *w,
-                   double tol, bool stalled, int rounds)
+                   double tol, bool stalled, int rounds, double *work)
 {
     int n = 3 * m, col[3 * FRICTION_MAX_POINTS], nu = 0;
     enum { APART, STICK, SLIDE } kind[FRICTION_MAX_POINTS];
@@ -513,6 +530,9 @@ static bool polish(int m, const double *A, const double *q, const double *mu, do
             else if (kind[k] == SLIDE) col[nu++] = 3 * k;
         }
         if (nu == 0) return false;
+        double cost = (double)nu * nu * nu;
+        if (cost > *work) return false;
+        *work -= cost;
         for (int i = 0; i < nu; i++) {
             int ri = col[i];
             r[i] = -q[ri];
@@ -608,6 +628,13 @@ int friction_cone_solve(int m, const double *A, const double *q, const double *m
     }
     int status = 1;
     bool jam = false;
+    /* the change at which a polish last failed: the next is tried only once
+     * the sweeps have brought it POLISH_PROGRESS times lower */
+    double failed_at = HUGE_VAL;
+    /* the polishes' work, at most: POLISH_WORK times the sweeps' at most
+     * (a round's elimination costs about the cube of its unknowns, a sweep
+     * the square of the rows) */
+    double work = POLISH_WORK * FRICTION_SWEEPS * (double)n * n;
     /* the scale of the velocities: q's, and A's diagonal times the impulses */
     double qs = 0, diag = 0, w0[3 * FRICTION_MAX_POINTS];
     for (int i = 0; i < n; i++) qs = d_max(qs, fabs(q[i])), diag = d_max(diag, A[i * n + i]);
@@ -643,9 +670,14 @@ int friction_cone_solve(int m, const double *A, const double *q, const double *m
          * tenth sweeps' only), Bounce 83k (81k); with all its rounds after
          * the second sweep, 39k and 103k. */
         bool early = sweep == 1;
-        if (change > tol && (early || sweep % 10 == 9) &&
-            polish(m, A, q, mu, z, w, tol, change < FRICTION_STALL * tol, early ? 1 : POLISH_ROUNDS))
-            change = 0;
+        bool due = early || (sweep % 10 == 9 && change < POLISH_PROGRESS * failed_at);
+        if (change > tol && due) {
+            bool stalled = change < FRICTION_STALL * tol;
+            if (polish(m, A, q, mu, z, w, tol, stalled, early ? 1 : POLISH_ROUNDS, &work))
+                change = 0;
+            else if (!early)
+                failed_at = change;
+        }
         if (change <= tol) {
             status = 0;
             break;
