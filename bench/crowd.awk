@@ -4,9 +4,11 @@
 #   awk -v kind=groove -v a=30 -v b=60 -f bench/crowd.awk > FILE.vroc
 #     a V-groove of static faces rising at a and b degrees from the horizontal;
 #   awk -v kind=slot -f bench/crowd.awk > FILE.vroc
-#     a slot on a floor 1e-7 m wider than a ball, the balls in four layers in it.
+#     a slot on a floor 1e-7 m wider than a ball, the balls in four layers in it;
+#   -v friction=0 makes either world frictionless (the defaults' friction else).
 BEGIN {
     pi = atan2(0, -1); L = 1.3
+    if (friction == "0") print "default_friction = 0; default_rolling_friction = 0"
     if (kind == "groove") {
         ra = a * pi / 180; rb = b * pi / 180; W = 1; t = 0.05
         printf "cube face-a; mass = -1; size = (%.17g, %.17g, %.17g); rotate = (0, 1, 0) %.17g; translate = (%.17g, 0, %.17g)\n", W, L + 0.1, t, -ra, W * cos(ra) + t * sin(ra), W * sin(ra) - t * cos(ra)
