@@ -622,9 +622,11 @@ static void hundred_in_slot(bool rough)
      * it in a frame while it creeps, and 1.2e-6 once as it settles: the piles'
      * residue, issue 35's item 3, not this test's; a rise of 1e-5 fails.  With
      * friction, 1.9e-5 in the frame it settles, some balls lifted by a third
-     * of a millimetre: not understood (not the crowd's sweeps cut short: it
-     * rose as much with up to 1000 of them, and without over-relaxation); a
-     * rise of 1e-4 fails) */
+     * of a millimetre: not understood.  It rose as much without
+     * over-relaxation, with up to 1000 sweeps a step, and with frictionless
+     * side walls; rough piles of up to 64 points, solved densely and
+     * polished, have not been seen to gain energy, so the crowd's inexact
+     * sweeps are the suspects.  A rise of 1e-4 fails) */
     g_slot_rise = rough ? 1e-4 : 1e-5;
     char dir[] = "/tmp/vroc-slot-XXXXXX";
     if (rough) assert_non_null(g_slot_save = mkdtemp(dir));
