@@ -22,7 +22,10 @@
 #include "shell_fixture.h"
 
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #if defined(__SANITIZE_ADDRESS__)
 #define UNDER_SANITIZERS 1
@@ -408,7 +411,7 @@ static void grooves_rest(void **state)
 }
 
 /* The same grooves with the default friction (a user's: their clusters solved
- * with the friction cones, or along the normals alone past 64 points): they
+ * with the friction cones, past 64 points in blocks, friction.h): they
  * rest within 10 s too (after 1 s), and then cost under 1% of the pair checks.
  * Under the sanitizers the 30/60 groove alone. */
 static void rough_grooves_rest(void **state)
@@ -437,22 +440,27 @@ static double g_slot_r = 0.05;
  * 1e-7 m further apart than the diameter of a ball of radius r, closed at
  * y = +-1.3 by static ends (bench/crowd.awk's slot for r = 0.05), with gravity;
  * then `balls`, statements making balls of radius r in it (issue 35's crowd). */
-static void slot(double r, const char *balls)
+static void slot_of(double r, const char *balls, bool rough)
 {
     g_slot_r = r;
     double half = r + 5e-8;
     char *text = malloc(65536);
     assert_non_null(text);
     snprintf(text, 65536,
-             "restart\n" FRICTIONLESS "gravity\n"
+             "restart\n%sgravity\n"
              "cube floor; mass = -1; size = (0.5, 1.5, 0.05); translate = (0, 0, -0.05)\n"
              "cube side-e; mass = -1; size = (0.05, 1.5, 1); translate = (%.17g, 0, 1)\n"
              "cube side-w; mass = -1; size = (0.05, 1.5, 1); translate = (%.17g, 0, 1)\n"
              "cube end-n; mass = -1; size = (0.05, 0.05, 1); translate = (0, 1.35, 1)\n"
              "cube end-s; mass = -1; size = (0.05, 0.05, 1); translate = (0, -1.35, 1)\n%s",
-             half + 0.05, -half - 0.05, balls);
+             rough ? "" : FRICTIONLESS, half + 0.05, -half - 0.05, balls);
     assert_int_equal(run(text), CMD_OK);
     free(text);
+}
+
+static void slot(double r, const char *balls)
+{
+    slot_of(r, balls, false);
 }
 
 /* The rise of the energy from one frame to the next that run_slot allows,
@@ -467,6 +475,10 @@ static double g_slot_rise = 1e-9;
  * without friction do no work, and collisions with e < 1 only lose energy (to
  * 1e-9 but for the crowd of 100).  Returns the frame at whose end everything
  * rests (-1: never). */
+/* When not NULL, run_slot saves the world at every frame's end f into
+ * g_slot_save/f.vroc. */
+static const char *g_slot_save = NULL;
+
 static int run_slot(const char *what, int frames)
 {
     world *w = &g_sh.w;
@@ -490,6 +502,11 @@ static int run_slot(const char *what, int frames)
         if (now > before + g_slot_rise * before)
             fail_msg("%s, frame %d: energy rose from %.17g to %.17g J", what, f, before, now);
         before = now;
+        if (g_slot_save) {
+            char text[512];
+            snprintf(text, sizeof text, "save \"%s/%d.vroc\"\n", g_slot_save, f);
+            assert_int_equal(run(text), CMD_OK);
+        }
         if (all_rest(w)) {
             print_message("%s: the energy rose by at most %.3g of itself in a frame\n", what, most);
             return f;
@@ -528,7 +545,7 @@ static void ball_in_slot_rests(void **state)
     }
 }
 
-static void slot_crowd_rests(const char *what);
+static int slot_crowd_rests(const char *what);
 
 /* Crowds in the slot, every ball of e = 0.5 and at rest within 10 s: a row of
  * 26 balls filling it end to end (centres 0.1 m apart, touching their
@@ -561,7 +578,7 @@ static void crowd_in_slot_rests(void **state)
  * 10 s, stays at rest 2 s more at under 1% of the pair checks per simulated
  * second before, and every point was answered: nothing moved apart at a frame's
  * end, no event guard, no problem unsolved. */
-static void slot_crowd_rests(const char *what)
+static int slot_crowd_rests(const char *what)
 {
     world *w = &g_sh.w;
     int rested = run_slot(what, 100);
@@ -576,6 +593,7 @@ static void slot_crowd_rests(const char *what)
     assert_int_equal(w->st.guards, 0);
     assert_int_equal(w->st.unsolved, 0);
     assert_int_equal(w->st.separations, 0);
+    return rested;
 }
 
 /* Issue 35's crowd: 100 balls of e = 0.5 in the slot (bench/crowd.awk's), four
@@ -583,17 +601,10 @@ static void slot_crowd_rests(const char *what)
  * and thrown across at -0.5, 0 and 0.5 m/s by turns; they land on each other
  * and press into one cluster of some 400 contact points (both sides', the
  * floor's, their neighbours' in and across the layers), solved at every step
- * of the cluster (lcp.c's crowds).  Normal build only. */
-static void hundred_in_slot_rest(void **state)
+ * of the cluster (lcp.c's crowds; with friction, friction.h's crowds), rough
+ * with the defaults' friction, else frictionless. */
+static void hundred_in_slot(bool rough)
 {
-    (void)state;
-#ifdef UNDER_SANITIZERS
-    /* (some 5 minutes there; the sanitizers' crowd past a dense solve is the
-     * row of 26, crowd_in_slot_rests.  Fewer balls do not make a smaller
-     * test of this: two layers of 25 leave room along the slot, where
-     * frictionless balls slide on for more than 10 s) */
-    skip();
-#endif
     const int layers = 4;
     char *balls = malloc(16384), what[64];
     assert_non_null(balls);
@@ -604,15 +615,71 @@ static void hundred_in_slot_rest(void **state)
                           "sphere b%d; radius = 0.05; elasticity = 0.5; translate = (0, %.17g, %.17g); "
                           "velocity = (%g, 0, 0)\n",
                           i, -1.25 + j * 0.103 + (k % 2) * 0.01, 0.1 + k * 0.15, (j % 3 - 1) * 0.5);
-    slot(0.05, balls);
+    slot_of(0.05, balls, rough);
     free(balls);
-    snprintf(what, sizeof what, "%d balls in %d layers", 25 * layers, layers);
+    snprintf(what, sizeof what, "%d balls in %d layers%s", 25 * layers, layers, rough ? ", rough" : "");
     /* (a pressed crowd's cluster steps may raise its energy by some 1e-9 of
      * it in a frame while it creeps, and 1.2e-6 once as it settles: the piles'
-     * residue, issue 35's item 3, not this test's; a rise of 1e-5 fails) */
-    g_slot_rise = 1e-5;
-    slot_crowd_rests(what);
+     * residue, issue 35's item 3, not this test's; a rise of 1e-5 fails.  With
+     * friction, 1.9e-5 in the frame it settles, some balls lifted by a third
+     * of a millimetre: not understood.  It rose as much without
+     * over-relaxation, with up to 1000 sweeps a step, and with frictionless
+     * side walls; rough piles of up to 64 points, solved densely and
+     * polished, have not been seen to gain energy, so the crowd's inexact
+     * sweeps are the suspects.  A rise of 1e-4 fails) */
+    g_slot_rise = rough ? 1e-4 : 1e-5;
+    char dir[] = "/tmp/vroc-slot-XXXXXX";
+    if (rough) assert_non_null(g_slot_save = mkdtemp(dir));
+    int rested = slot_crowd_rests(what);
     g_slot_rise = 1e-9;
+    if (!rough) return;
+    g_slot_save = NULL;
+    /* saved at the last frame's end before the rest (the crowd one cluster,
+     * rough past 64 points, pressed and moving) and read back, the run goes
+     * on to the bit: the same hash at the end */
+    char text[512], *whole;
+    assert_int_equal(run("hash\n"), CMD_OK);
+    assert_non_null(whole = strdup(g_out));
+    int k = rested - 1;
+    assert_true(k >= 1);
+    snprintf(text, sizeof text, "restart; read \"%s/%d.vroc\"; run %d; hash\n", dir, k, rested + 20 - k);
+    assert_int_equal(run(text), CMD_OK);
+    print_message("%s: saved at frame %d and read back, the same hash %d frames on\n", what, k, rested + 20 - k);
+    assert_string_equal(g_out, whole);
+    free(whole);
+    for (int f = 1; f <= rested; f++) {
+        snprintf(text, sizeof text, "%s/%d.vroc", dir, f);
+        remove(text);
+    }
+    rmdir(dir);
+}
+
+/* The hundred frictionless (normal build only: some 5 minutes under the
+ * sanitizers; their crowd past a dense solve is the row of 26,
+ * crowd_in_slot_rests.  Fewer balls do not make a smaller test of this: two
+ * layers of 25 leave room along the slot, where frictionless balls slide on
+ * for more than 10 s). */
+static void hundred_in_slot_rest(void **state)
+{
+    (void)state;
+#ifdef UNDER_SANITIZERS
+    skip();
+#endif
+    hundred_in_slot(false);
+}
+
+/* The hundred with the defaults' friction: past 64 points their clusters' cone
+ * problems are solved in blocks (friction.h), in the steps, the instants and the
+ * balance, so that the spins the collisions gave are braked (along the normals
+ * alone, five balls spun in place for good) and a pile that friction holds is
+ * found held.  Normal build only, as the frictionless hundred. */
+static void rough_hundred_in_slot_rest(void **state)
+{
+    (void)state;
+#ifdef UNDER_SANITIZERS
+    skip();
+#endif
+    hundred_in_slot(true);
 }
 
 int main(void)
@@ -621,6 +688,7 @@ int main(void)
         cmocka_unit_test(ball_in_slot_rests),
         cmocka_unit_test(crowd_in_slot_rests),
         cmocka_unit_test(hundred_in_slot_rest),
+        cmocka_unit_test(rough_hundred_in_slot_rest),
         cmocka_unit_test(grooves_rest),
         cmocka_unit_test(rough_grooves_rest),
         cmocka_unit_test(closed_boxes_keep_their_floor),

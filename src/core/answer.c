@@ -45,6 +45,7 @@ void answer_free(answer_scratch *s)
     free(s->kicks);
     free(s->seeds);
     free(s->lcp);
+    if (s->fw) friction_work_free(s->fw);
     free(s->fw);
     if (s->rw) rows_free(s->rw);
     free(s->rw);
@@ -56,7 +57,7 @@ int answer_prepare(world *w, bool changed)
 {
     answer_scratch *s = &w->answer;
     if (!s->lcp && !(s->lcp = malloc(lcp_work_size(IMPULSE_MAX_ROWS)))) return -1;
-    if (!s->fw && !(s->fw = malloc(sizeof *s->fw))) return -1;
+    if (!s->fw && !(s->fw = calloc(1, sizeof *s->fw))) return -1;
     if (!s->rw && !(s->rw = calloc(1, sizeof *s->rw))) return -1;
     if (rows_room(s->rw, SIM_CLUSTER_ROWS, SIM_CLUSTER_ROWS) != 0) return -1;
     if (instant_prepare(&s->instant, w->n) != 0) return -1;

@@ -23,6 +23,7 @@
 
 #include "contact.h"
 #include "facespin.h"
+#include "grow.h"
 #include "tolerance.h"
 
 /* Stretches of a turning slip in one impact (each at most 1/64 of the impulse's
@@ -355,8 +356,13 @@ static bool slide_dir(double B[3][3], const double b[3], double mu, double th0, 
 
 /* Point k's own problem: w = B z + b, z in the cone of mu.  z written (on entry:
  * the last answer, whose slip direction starts the search); true when it has a
- * consistent answer. */
-static bool local_solve(double B[3][3], const double b[3], double mu, double z[3])
+ * consistent answer.  (Inlined into both sweeps, the dense and the crowd's, as
+ * it was into the dense one's alone: called, it cost Bounce's first 100 frames
+ * 0.2% more instructions.) */
+static inline bool local_solve(double B[3][3], const double b[3], double mu, double z[3])
+    __attribute__((always_inline));
+
+static inline bool local_solve(double B[3][3], const double b[3], double mu, double z[3])
 {
     double last1 = z[1], last2 = z[2];
     z[0] = z[1] = z[2] = 0;
@@ -693,30 +699,291 @@ int friction_cone_solve(int m, const double *A, const double *q, const double *m
     return status;
 }
 
+/* ---- crowds: the cone problem in blocks, past FRICTION_MAX_POINTS ---- */
+
+/* Room in c for m points, and its bodies' lists for bodies below nbody: 0, or -1
+ * when out of memory (c keeps what it had, and its room says so). */
+static int crowd_room(friction_crowd *c, int m, int nbody)
+{
+    bool ok = true;
+    if (m > c->cap) {
+        long n = grow_doubled(m, c->cap);
+        c->rows = grow_resized(c->rows, sizeof *c->rows, 3 * n, &ok);
+        c->q = grow_resized(c->q, sizeof *c->q, 3 * n, &ok);
+        c->z = grow_resized(c->z, sizeof *c->z, 3 * n, &ok);
+        c->w = grow_resized(c->w, sizeof *c->w, 3 * n, &ok);
+        c->w0 = grow_resized(c->w0, sizeof *c->w0, 3 * n, &ok);
+        c->mu = grow_resized(c->mu, sizeof *c->mu, n, &ok);
+        c->start = grow_resized(c->start, sizeof *c->start, n + 1, &ok);
+        c->mark = grow_resized(c->mark, sizeof *c->mark, n, &ok);
+        c->link = grow_resized(c->link, sizeof *c->link, 2 * n, &ok);
+        c->resp = grow_resized(c->resp, sizeof *c->resp, 12 * n, &ok);
+        if (ok) c->cap = (int)n;
+    }
+    if (ok && nbody > c->cap_bodies) {
+        long n = grow_doubled(nbody, c->cap_bodies);
+        c->head = grow_resized(c->head, sizeof *c->head, n, &ok);
+        if (ok) c->cap_bodies = (int)n;
+    }
+    return ok ? 0 : -1;
+}
+
+void friction_work_free(friction_work *fw)
+{
+    friction_crowd *c = &fw->crowd;
+    free(c->rows);
+    free(c->q);
+    free(c->z);
+    free(c->w);
+    free(c->w0);
+    free(c->mu);
+    free(c->start);
+    free(c->col);
+    free(c->B);
+    free(c->mark);
+    free(c->link);
+    free(c->head);
+    free(c->resp);
+    *c = (friction_crowd){0};
+}
+
+friction_problem friction_problem_of(friction_work *fw, int m)
+{
+    if (m <= FRICTION_MAX_POINTS) return (friction_problem){fw->rows, fw->q, fw->z, fw->w, fw->mu};
+    friction_crowd *c = &fw->crowd;
+    return (friction_problem){c->rows, c->q, c->z, c->w, c->mu};
+}
+
+impulse_row *friction_rows_in(friction_work *fw, const impulse_row *rows, int m)
+{
+    if (m > FRICTION_MAX_POINTS && crowd_room(&fw->crowd, m, 0) != 0) return NULL;
+    impulse_row *out = friction_problem_of(fw, m).rows;
+    friction_rows(rows, m, out);
+    return out;
+}
+
+/* Whether body x of a row takes its impulses. */
+static bool moves(int x, body *const *bs, const bool *mobile)
+{
+    return mobile[x] && !body_is_static(bs[x]);
+}
+
+/* Block (k, l) of the crowd, the nb-th, unless k has it already: with fill,
+ * its point and entries written.  Returns the blocks then. */
+static int crowd_block(friction_crowd *c, int k, int l, int nb, bool fill, body *const *bs,
+                       const bool *mobile)
+{
+    if (c->mark[l] == k) return nb;
+    c->mark[l] = k;
+    if (!fill) return nb + 1;
+    c->col[nb] = l;
+    double *B = &c->B[9 * (size_t)nb];
+    if (l < k) {
+        /* block (l, k), made already, turned over (the matrix is symmetric) */
+        for (int b = c->start[l]; b < c->start[l + 1]; b++) {
+            if (c->col[b] != k) continue;
+            const double *T = &c->B[9 * (size_t)b];
+            for (int i = 0; i < 3; i++)
+                for (int j = 0; j < 3; j++) B[3 * i + j] = T[3 * j + i];
+            return nb + 1;
+        }
+    }
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            const impulse_row *ri = &c->rows[3 * k + i], *rj = &c->rows[3 * l + j];
+            double a = impulse_effect(ri, rj, &c->resp[4 * (3 * l + j)], bs, mobile);
+            /* (made symmetric as impulse_matrix makes it, but on the diagonal) */
+            B[3 * i + j] = ri == rj ? a : 0.5 * (a + impulse_effect(rj, ri, &c->resp[4 * (3 * k + i)], bs, mobile));
+        }
+    return nb + 1;
+}
+
+/* The crowd's blocks: point k's, with each point l that shares a mobile body
+ * with it (its own first, then those on its p's body and on its q's, each
+ * once).  With fill false, only counted (into start); else col and B written. */
+static int crowd_blocks(friction_crowd *c, const impulse_row *rows, int m, body *const *bs,
+                        const bool *mobile, bool fill)
+{
+    int nb = 0;
+    for (int k = 0; k < m; k++) c->mark[k] = -1;
+    for (int k = 0; k < m; k++) {
+        c->start[k] = nb;
+        nb = crowd_block(c, k, k, nb, fill, bs, mobile);
+        for (int s = 0; s < 2; s++) {
+            int x = s == 0 ? rows[k].p : rows[k].q;
+            if (!moves(x, bs, mobile)) continue;
+            for (int e = c->head[x]; e >= 0; e = c->link[e]) nb = crowd_block(c, k, e / 2, nb, fill, bs, mobile);
+        }
+    }
+    c->start[m] = nb;
+    return nb;
+}
+
+int friction_crowd_matrix(friction_crowd *c, const impulse_row *rows, int m, body *const *bs,
+                        const bool *mobile)
+{
+    int nbody = 0;
+    for (int k = 0; k < m; k++) nbody = rows[k].p + 1 > nbody ? rows[k].p + 1 : nbody,
+                                nbody = rows[k].q + 1 > nbody ? rows[k].q + 1 : nbody;
+    if (crowd_room(c, m, nbody) != 0) return -1;
+    friction_rows(rows, m, c->rows);
+    for (int i = 0; i < 3 * m; i++) impulse_response(&c->rows[i], bs, mobile, &c->resp[4 * i]);
+    /* the points on each body, as lists threaded through link (2k + side) */
+    for (int x = 0; x < nbody; x++) c->head[x] = -1;
+    for (int k = m - 1; k >= 0; k--)
+        for (int s = 1; s >= 0; s--) {
+            int x = s == 0 ? rows[k].p : rows[k].q;
+            if (!moves(x, bs, mobile)) continue;
+            c->link[2 * k + s] = c->head[x];
+            c->head[x] = 2 * k + s;
+        }
+    int nb = crowd_blocks(c, rows, m, bs, mobile, false);
+    if (nb > c->cap_blocks) {
+        bool ok = true;
+        long n = grow_doubled(nb, c->cap_blocks);
+        c->col = grow_resized(c->col, sizeof *c->col, n, &ok);
+        c->B = grow_resized(c->B, 9 * sizeof *c->B, n, &ok);
+        if (!ok) return -1;
+        c->cap_blocks = (int)n;
+    }
+    crowd_blocks(c, rows, m, bs, mobile, true);
+    return 0;
+}
+
+int friction_matrix(friction_work *fw, const impulse_row *rows, int m, body *const *bs,
+                    const bool *mobile)
+{
+    if (m > FRICTION_MAX_POINTS) return friction_crowd_matrix(&fw->crowd, rows, m, bs, mobile);
+    friction_rows(rows, m, fw->rows);
+    impulse_matrix(fw->rows, 3 * m, bs, mobile, fw->A);
+    return 0;
+}
+
+void friction_crowd_mulv(const friction_crowd *c, int m, const double *x, double *y)
+{
+    for (int k = 0; k < m; k++) {
+        double s[3] = {0, 0, 0};
+        for (int b = c->start[k]; b < c->start[k + 1]; b++) {
+            const double *B = &c->B[9 * (size_t)b], *xl = &x[3 * c->col[b]];
+            for (int i = 0; i < 3; i++) s[i] += B[3 * i] * xl[0] + B[3 * i + 1] * xl[1] + B[3 * i + 2] * xl[2];
+        }
+        for (int i = 0; i < 3; i++) y[3 * k + i] = s[i];
+    }
+}
+
+int friction_crowd_solve(friction_crowd *c, int m, int sweeps, bool *painleve)
+{
+    int n = 3 * m;
+    double *z = c->z, *w = c->w;
+    bool finite = true;
+    for (int i = 0; i < n; i++) finite = finite && isfinite(c->q[i]) && isfinite(z[i]);
+    for (long i = 0; i < 9L * c->start[m]; i++) finite = finite && isfinite(c->B[i]);
+    if (!finite) {
+        for (int k = 0; k < n; k++) z[k] = 0, w[k] = c->q[k];
+        return -1;
+    }
+    friction_crowd_mulv(c, m, z, w);
+    double qs = 0, diag = 0;
+    for (int i = 0; i < n; i++) w[i] += c->q[i], qs = d_max(qs, fabs(c->q[i]));
+    for (int k = 0; k < m; k++)
+        for (int i = 0; i < 3; i++) diag = d_max(diag, c->B[9 * (size_t)c->start[k] + 4 * i]);
+    int status = 1;
+    bool jam = false;
+    for (int sweep = 0; sweep < sweeps; sweep++) {
+        double change = 0, size = 0;
+        jam = false;
+        for (int i = 0; i < n; i++) c->w0[i] = w[i];
+        for (int k = 0; k < m; k++) {
+            int o = 3 * k;
+            const double *Bk = &c->B[9 * (size_t)c->start[k]]; /* (its own block) */
+            double B[3][3], b[3], zk[3] = {z[o], z[o + 1], z[o + 2]};
+            for (int i = 0; i < 3; i++) {
+                for (int j = 0; j < 3; j++) B[i][j] = Bk[3 * i + j];
+                b[i] = w[o + i] - (B[i][0] * z[o] + B[i][1] * z[o + 1] + B[i][2] * z[o + 2]);
+            }
+            if (!local_solve(B, b, c->mu[k], zk)) jam = true;
+            /* over-relaxed (within the cone) */
+            for (int j = 0; j < 3; j++) zk[j] = z[o + j] + FRICTION_CROWD_OMEGA * (zk[j] - z[o + j]);
+            double zt = sqrt(zk[1] * zk[1] + zk[2] * zk[2]);
+            if (!(zk[0] > 0)) zk[0] = zk[1] = zk[2] = 0;
+            else if (zt > c->mu[k] * zk[0]) zk[1] *= c->mu[k] * zk[0] / zt, zk[2] *= c->mu[k] * zk[0] / zt;
+            double dz[3] = {zk[0] - z[o], zk[1] - z[o + 1], zk[2] - z[o + 2]};
+            if (dz[0] != 0 || dz[1] != 0 || dz[2] != 0) {
+                /* w_l += A_lk dz = (A_kl)^T dz, over k's blocks (A symmetric) */
+                for (int bl = c->start[k]; bl < c->start[k + 1]; bl++) {
+                    const double *A = &c->B[9 * (size_t)bl];
+                    double *wl = &w[3 * c->col[bl]];
+                    for (int j = 0; j < 3; j++) wl[j] += A[j] * dz[0] + A[3 + j] * dz[1] + A[6 + j] * dz[2];
+                }
+                for (int j = 0; j < 3; j++) z[o + j] = zk[j];
+            }
+            size = d_max(size, fabs(zk[0]) + sqrt(zk[1] * zk[1] + zk[2] * zk[2]));
+        }
+        for (int i = 0; i < n; i++) change = d_max(change, fabs(w[i] - c->w0[i]));
+        c->sweeps = sweep + 1;
+        if (change <= FRICTION_TOL * (qs + diag * size)) {
+            status = 0;
+            break;
+        }
+    }
+    /* w afresh */
+    friction_crowd_mulv(c, m, z, w);
+    for (int i = 0; i < n; i++) w[i] += c->q[i];
+    if (painleve && jam) *painleve = true;
+    return status;
+}
+
+int friction_solve(friction_work *fw, int m, int sweeps, bool *painleve)
+{
+    if (m > FRICTION_MAX_POINTS) return friction_crowd_solve(&fw->crowd, m, sweeps, painleve);
+    return friction_cone_solve(m, fw->A, fw->q, fw->mu, fw->z, fw->w, painleve);
+}
+
 int friction_compress(const impulse_row *rows, int m, body *const *bs, const bool *mobile,
                       const double *u, double *lambda, friction_work *fw, friction_flags *f)
 {
-    if (m <= 0 || m > FRICTION_MAX_POINTS) return -1;
+    if (m <= 0 || friction_matrix(fw, rows, m, bs, mobile) != 0) return -1;
     int n = 3 * m;
-    friction_rows(rows, m, fw->rows);
-    impulse_matrix(fw->rows, n, bs, mobile, fw->A);
+    friction_problem P = friction_problem_of(fw, m);
     for (int i = 0; i < n; i++)
-        fw->q[i] = u && i % 3 == 0 ? u[i / 3] : impulse_speed(&fw->rows[i], bs);
-    for (int k = 0; k < m; k++) fw->mu[k] = rows[k].mu;
-    for (int i = 0; i < n; i++) fw->z[i] = 0;
-    int st = friction_cone_solve(m, fw->A, fw->q, fw->mu, fw->z, fw->w, &f->painleve);
+        P.q[i] = u && i % 3 == 0 ? u[i / 3] : impulse_speed(&P.rows[i], bs);
+    for (int k = 0; k < m; k++) P.mu[k] = rows[k].mu;
+    for (int i = 0; i < n; i++) P.z[i] = 0;
+    int st = friction_solve(fw, m, FRICTION_CROWD_SWEEPS, &f->painleve);
     if (st < 0) return -1;
     if (st > 0) f->unconverged = true;
-    impulse_apply(fw->rows, n, bs, mobile, fw->z);
-    for (int k = 0; k < m; k++) lambda[k] = fw->z[3 * k];
+    impulse_apply(P.rows, n, bs, mobile, P.z);
+    for (int k = 0; k < m; k++) lambda[k] = P.z[3 * k];
     return 0;
+}
+
+/* r A r / 2 over the normals of the m points of friction_compress's matrix
+ * (r one a point). */
+static double normal_energy(const friction_work *fw, int m, const double *r)
+{
+    double quad = 0;
+    if (m > FRICTION_MAX_POINTS) {
+        const friction_crowd *c = &fw->crowd;
+        for (int j = 0; j < m; j++) {
+            if (r[j] == 0) continue;
+            for (int b = c->start[j]; b < c->start[j + 1]; b++) quad += 0.5 * r[j] * c->B[9 * (size_t)b] * r[c->col[b]];
+        }
+        return quad;
+    }
+    int n = 3 * m;
+    for (int j = 0; j < m; j++) {
+        if (r[j] == 0) continue;
+        for (int k = 0; k < m; k++) quad += 0.5 * r[j] * fw->A[3 * j * n + 3 * k] * r[k];
+    }
+    return quad;
 }
 
 void friction_restitute(const impulse_row *rows, int m, body *const *bs, const bool *mobile,
                         double *lambda, double ke_before, friction_work *fw, friction_flags *f)
 {
-    int n = 3 * m;
-    double r[FRICTION_MAX_POINTS], lin = 0, quad = 0;
+    /* (past FRICTION_MAX_POINTS in the crowd's room, which friction_compress
+     * made) */
+    double rd[FRICTION_MAX_POINTS], *r = m > FRICTION_MAX_POINTS ? fw->crowd.w0 : rd, lin = 0;
     bool any = false;
     for (int k = 0; k < m; k++) {
         r[k] = rows[k].e * lambda[k];
@@ -725,11 +992,9 @@ void friction_restitute(const impulse_row *rows, int m, body *const *bs, const b
     if (!any) return;
     /* the energy with s r applied: ke1 + s lin + s^2 quad */
     double ke1 = friction_energy(rows, m, bs, mobile);
-    for (int j = 0; j < m; j++) {
-        if (r[j] == 0) continue;
-        lin += r[j] * impulse_speed(&rows[j], bs);
-        for (int k = 0; k < m; k++) quad += 0.5 * r[j] * fw->A[3 * j * n + 3 * k] * r[k];
-    }
+    for (int j = 0; j < m; j++)
+        if (r[j] != 0) lin += r[j] * impulse_speed(&rows[j], bs);
+    double quad = normal_energy(fw, m, r);
     double s = 1;
     if (ke1 + lin + quad > ke_before && quad > 0) {
         double r1, r2, room = ke_before - ke1;

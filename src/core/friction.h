@@ -32,7 +32,8 @@
 #include "flight.h"
 #include "impulse.h"
 
-/* Points one problem with friction may hold (3 rows each). */
+/* Points (3 rows each) up to which a problem with friction is solved densely
+ * (friction_cone_solve, with its polish); past them, in blocks (friction_crowd). */
 #define FRICTION_MAX_POINTS 64
 
 /* The cone solve stops when no impulse changes by more than this, relative to the
@@ -50,6 +51,36 @@ typedef struct {
                         * contact; the answer falls back to a sliding point's */
 } friction_flags;
 
+/* Sweeps of the cone solve past FRICTION_MAX_POINTS, at most, where it must be
+ * exact (friction_compress: the balance of objects at rest, a collision's
+ * compression; friction_crowd_solve: there is no polish there, so the sweeps
+ * alone must converge). */
+#define FRICTION_CROWD_SWEEPS 1000
+
+/* The over-relaxation of those sweeps: each point's change from its exact local
+ * answer is taken this many times over (and brought back into its cone).  A
+ * crowd's points form long chains (a slot's rows of 25 balls), along which plain
+ * Gauss-Seidel carries a change a point a sweep: a row of 25 balls on a rough
+ * floor took 961 sweeps to converge, 73 at 1.6; the slot of 100 rests with 1.5. */
+#define FRICTION_CROWD_OMEGA 1.5
+
+/* A problem of more points than FRICTION_MAX_POINTS (a crowd's cluster: a hundred
+ * balls in a slot press at some 450) in blocks: its matrix (impulse_matrix's over
+ * friction_rows, to the bit) kept as its nonzero 3 x 3 blocks alone, for block
+ * (k, l) is nonzero only where points k and l share a mobile body, a few a
+ * point.  Its arrays are grown to the largest problem met and kept. */
+typedef struct {
+    int cap, cap_blocks, cap_bodies;  /* room: points, blocks, bodies */
+    impulse_row *rows;                /* 3 a point (friction_rows) */
+    double *q, *z, *w, *w0, *mu;      /* 3 a point (mu: 1) */
+    int *start;                       /* point k's blocks: start[k] .. start[k + 1] - 1, */
+    int *col;                         /*   each block's other point (its own first), */
+    double *B;                        /*   and its 9 entries: rows of k, columns of col */
+    int *mark, *link, *head;          /* the blocks' search: points seen, points by body */
+    vec3 *resp;                       /* each row's impulse_response (4 a row) */
+    int sweeps;                       /* the last solve's sweeps (for the tests) */
+} friction_crowd;
+
 /* The scratch of the problems with friction (in answer_scratch: too large for a
  * stack). */
 typedef struct {
@@ -57,7 +88,51 @@ typedef struct {
     double A[9 * FRICTION_MAX_POINTS * FRICTION_MAX_POINTS];
     double q[3 * FRICTION_MAX_POINTS], z[3 * FRICTION_MAX_POINTS], w[3 * FRICTION_MAX_POINTS];
     double mu[FRICTION_MAX_POINTS];
+    friction_crowd crowd; /* past FRICTION_MAX_POINTS (zeroed at first) */
 } friction_work;
+
+/* The arrays of a problem of m points in fw: the dense ones up to
+ * FRICTION_MAX_POINTS, the crowd's past it. */
+typedef struct {
+    impulse_row *rows;
+    double *q, *z, *w, *mu;
+} friction_problem;
+
+friction_problem friction_problem_of(friction_work *fw, int m);
+
+/* The 3m rows of the m rows into the problem's arrays (friction_problem_of),
+ * with the matrix: dense (fw->A) up to FRICTION_MAX_POINTS, in blocks past it.
+ * Returns 0, or -1 when out of memory (past FRICTION_MAX_POINTS). */
+int friction_matrix(friction_work *fw, const impulse_row *rows, int m, body *const *bs,
+                    const bool *mobile);
+
+/* The 3m rows alone, as friction_matrix puts them: NULL when out of memory. */
+impulse_row *friction_rows_in(friction_work *fw, const impulse_row *rows, int m);
+
+/* The crowd's problem of m points (any m: friction_matrix's past
+ * FRICTION_MAX_POINTS): its 3m rows (c->rows) and its blocks.  0, or -1 when out
+ * of memory. */
+int friction_crowd_matrix(friction_crowd *c, const impulse_row *rows, int m, body *const *bs,
+                          const bool *mobile);
+
+/* y = A x over the crowd's blocks (3m each; friction_matrix's past
+ * FRICTION_MAX_POINTS), each entry summed in its blocks' order. */
+void friction_crowd_mulv(const friction_crowd *c, int m, const double *x, double *y);
+
+/* The cone problem of friction_cone_solve over the crowd's blocks (c->q, c->mu;
+ * z from c->z as given, w into c->w): block Gauss-Seidel with each point's 3 x 3
+ * problem solved exactly, as friction_cone_solve's sweeps, over-relaxed
+ * (FRICTION_CROWD_OMEGA), each sweep over the nonzero blocks alone, with no
+ * polish, for `sweeps` at most.  Returns as friction_cone_solve. */
+int friction_crowd_solve(friction_crowd *c, int m, int sweeps, bool *painleve);
+
+/* The cone solve of the problem friction_matrix set up, its q, mu and z (the
+ * guess) in friction_problem_of's arrays: friction_cone_solve, or
+ * friction_crowd_solve for `sweeps` at most. */
+int friction_solve(friction_work *fw, int m, int sweeps, bool *painleve);
+
+/* Frees the crowd's arrays of fw (fw itself is the caller's). */
+void friction_work_free(friction_work *fw);
 
 /* A pair's coefficients. */
 double friction_mu(const body *a, const body *b);
@@ -92,8 +167,9 @@ friction_flags friction_impact(const impulse_row *r, body *const *bs, const bool
 
 /* The compression of m points answered together (e = 0, cones): u their normal
  * speeds before (NULL: impulse_speed's), the tangential ones found here.  Applies the
- * impulses; writes each point's normal impulse to lambda.  Returns 0, or -1 when
- * the problem is too large or not finite (nothing applied); *f gets what it met. */
+ * impulses; writes each point's normal impulse to lambda (all three in
+ * friction_problem_of(fw, m).z).  Returns 0, or -1 when out of memory or not
+ * finite (nothing applied); *f gets what it met. */
 int friction_compress(const impulse_row *rows, int m, body *const *bs, const bool *mobile,
                       const double *u, double *lambda, friction_work *fw, friction_flags *f);
 

@@ -64,6 +64,30 @@ void impulse_matrix(const impulse_row *rows, int n, body *const *bs, const bool 
         }
 }
 
+void impulse_response(const impulse_row *rk, body *const *bs, const bool *mobile, vec3 resp[4])
+{
+    for (int side = 0; side < 2; side++) {
+        int x = side == 0 ? rk->p : rk->q;
+        resp[2 * side] = resp[2 * side + 1] = v3(0, 0, 0);
+        if (mobile[x] && !body_is_static(bs[x]))
+            response(bs[x], side == 0 ? 1 : -1, rk->n, rk->at, &resp[2 * side], &resp[2 * side + 1]);
+    }
+}
+
+double impulse_effect(const impulse_row *rj, const impulse_row *rk, const vec3 resp[4], body *const *bs,
+                      const bool *mobile)
+{
+    double a = 0; /* (impulse_matrix's sum, in its order) */
+    for (int side = 0; side < 2; side++) {
+        int x = side == 0 ? rk->p : rk->q;
+        double sj = rj->p == x ? 1 : rj->q == x ? -1 : 0;
+        if (!mobile[x] || body_is_static(bs[x]) || sj == 0) continue;
+        vec3 arm = v3_sub(rj->at, body_com(bs[x]));
+        a += sj * (v3_dot(resp[2 * side], rj->n) + v3_dot(resp[2 * side + 1], v3_cross(arm, rj->n)));
+    }
+    return a;
+}
+
 void impulse_apply(const impulse_row *rows, int n, body *const *bs, const bool *mobile,
                    const double *lambda)
 {

@@ -39,6 +39,17 @@ double impulse_speed(const impulse_row *r, body *const *bs);
 void impulse_matrix(const impulse_row *rows, int n, body *const *bs, const bool *mobile,
                     double *A);
 
+/* Row k's unit impulse's effect on its bodies (as impulse_matrix finds it): on
+ * its p, the change of linear and of angular velocity (resp[0], resp[1]), on its
+ * q (resp[2], resp[3]); zero for a body that does not move. */
+void impulse_response(const impulse_row *rk, body *const *bs, const bool *mobile, vec3 resp[4]);
+
+/* Row k's effect on row j, from row k's response: impulse_matrix's A[j][k]
+ * before it is made symmetric (the mean of this and row j's effect on row k),
+ * to the bit, for a matrix built in parts (friction.h's crowds). */
+double impulse_effect(const impulse_row *rj, const impulse_row *rk, const vec3 resp[4], body *const *bs,
+                      const bool *mobile);
+
 /* Applies impulses lambda at the rows to the mobile bodies of bs (their v, L, w).
  * (A row along a tangent, friction.h, may have lambda < 0.) */
 void impulse_apply(const impulse_row *rows, int n, body *const *bs, const bool *mobile,

@@ -366,10 +366,12 @@ static int solve(world *w, instant_work *I, solve_kind kind)
     /* (with friction, the same-instant waves' compression and restitution; the
      * speed limits' last solve stays frictionless, as it only stops what would
      * approach again) */
-    /* (beyond the cone solve's points, a crowd's, along the normals alone; beyond
-     * IMPULSE_MAX_ROWS in the clusters' scratch, rows.h) */
+    /* (a crowd's, past FRICTION_MAX_POINTS, with friction too, in blocks; but
+     * one with a held object there along the normals alone, for whether it has
+     * an answer at all (impulse_solvable) is asked of IMPULSE_MAX_ROWS at most;
+     * frictionless beyond IMPULSE_MAX_ROWS in the clusters' scratch, rows.h) */
     int ok;
-    if (kind != SOLVE_LIMITS && m <= FRICTION_MAX_POINTS && friction_any(I->take, m)) {
+    if (kind != SOLVE_LIMITS && (m <= FRICTION_MAX_POINTS || !held) && friction_any(I->take, m)) {
         ok = solve_rough(w, I, m, mob, held);
     } else if (m <= IMPULSE_MAX_ROWS) {
         ok = impulse_solve(I->take, m, w->bodies, mob, I->u, I->lambda, w->answer.lcp);

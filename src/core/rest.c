@@ -428,7 +428,8 @@ bool rest_slide_on(world *w, int i)
 
 /* The supports push the copies of rest_balanced (w->answer.now) at the nr points
  * of rows, with friction when rough (the cone solve's impulses in
- * w->answer.fw->z), or along the normals: false when that has no answer. */
+ * friction_problem_of(w->answer.fw, nr).z), or along the normals: false when
+ * that has no answer. */
 static bool push(world *w, const impulse_row *rows, int nr, bool rough)
 {
     body **bs = w->answer.now;
@@ -470,11 +471,12 @@ static void push_copies(world *w, const int *list, int n, const double *M)
  * copy's angular momentum after the second), so as to stop that.  True when
  * some couple changed and each is within what its points resist: c r N summed
  * over those that stick (friction_roll's law, friction.h), N and sticking from
- * the push's impulses (fw->z at the nr points of rows).  (The couples only
- * grow towards what holds: one that must pass that holds nothing.) */
+ * the push's impulses (friction_problem_of's z at the nr points of rows).  (The
+ * couples only grow towards what holds: one that must pass that holds
+ * nothing.) */
 static bool roll_couples(world *w, const int *list, int n, const impulse_row *rows, int nr, double *M)
 {
-    const double *z = w->answer.fw->z;
+    const double *z = friction_problem_of(w->answer.fw, nr).z;
     bool changed = false;
     for (int k = 0; k < n; k++) {
         int i = list[k];
@@ -533,9 +535,7 @@ bool rest_balanced(world *w, const int *list, int n)
     }
     int nr = rl.n;
     impulse_row *rows = rw->sub;
-    /* (with more points than the cone solve holds, balanced without friction,
-     * which asks more of the supports) */
-    bool rough = nr > 0 && nr <= FRICTION_MAX_POINTS && friction_any(rows, nr);
+    bool rough = nr > 0 && friction_any(rows, nr);
     ok = ok && nr > 0 && push(w, rows, nr, rough);
     /* Those the push leaves turning may yet be held by rolling resistance: a
      * couple of up to c r N at each point that sticks (friction.h).  A couple
