@@ -545,7 +545,25 @@ static void ball_in_slot_rests(void **state)
     }
 }
 
-static int slot_crowd_rests(const char *what);
+static int slot_crowd_rests(const char *what, int frames);
+
+/* The slot's world with a row of 26 balls of e = 0.5 filling it end to end
+ * (centres 0.1 m apart), their bottoms 0.1 (1 + i % heights) m above the floor,
+ * thrown across it at -0.5, 0 and 0.5 m/s by turns; rough: with the defaults'
+ * friction. */
+static void row_in_slot(int heights, bool rough)
+{
+    char *balls = malloc(8192);
+    assert_non_null(balls);
+    int n = 0;
+    for (int i = 0; i < 26; i++)
+        n += snprintf(balls + n, 8192 - (size_t)n,
+                      "sphere b%d; radius = 0.05; elasticity = 0.5; translate = (0, %.17g, %.17g); "
+                      "velocity = (%g, 0, 0)\n",
+                      i, -1.25 + i * 0.1, 0.05 + 0.1 * (1 + i % heights) + 0.05, (i % 3 - 1) * 0.5);
+    slot_of(0.05, balls, rough);
+    free(balls);
+}
 
 /* Crowds in the slot, every ball of e = 0.5 and at rest within 10 s: a row of
  * 26 balls filling it end to end (centres 0.1 m apart, touching their
@@ -561,28 +579,58 @@ static int slot_crowd_rests(const char *what);
 static void crowd_in_slot_rests(void **state)
 {
     (void)state;
-    char *balls = malloc(8192);
-    assert_non_null(balls);
-    int n = 0;
-    for (int i = 0; i < 26; i++)
-        n += snprintf(balls + n, 8192 - (size_t)n,
-                      "sphere b%d; radius = 0.05; elasticity = 0.5; translate = (0, %.17g, %.17g); "
-                      "velocity = (%g, 0, 0)\n",
-                      i, -1.25 + i * 0.1, 0.05 + 0.1 * (1 + i % 4) + 0.05, (i % 3 - 1) * 0.5);
-    slot(0.05, balls);
-    free(balls);
-    slot_crowd_rests("26 balls in a row");
+    row_in_slot(4, false);
+    slot_crowd_rests("26 balls in a row", 100);
+}
+
+/* The row of 26 with the defaults' friction (mu 0.5, rolling resistance c =
+ * 0.01), dropped from up to 0.4 m (heights by fours, slot.sh's) and from up
+ * to 0.3 m (by threes).  Rough balls pressed end to end lock: a ball pushed
+ * along the row would roll, and its neighbours' contacts, slipping against
+ * that, resist it in proportion to the push, so that a few balls' rolling
+ * resistance holds a row against any push.  As they land, one ball is
+ * squeezed up between two others (26 fill the slot exactly) and its wedge
+ * pushes on the rest, which friction holds.  They come to rest within what
+ * the physics gives: a drop from h lands after t0 = sqrt(2 h / g) and its
+ * bounces of e = 0.5 end by 3 t0; no ball moves faster than the drop and the
+ * throw give it, v = sqrt(2 g h + 0.5^2), and one rolling at v stops within
+ * v (1 + k) / (c g) (k = 2/5, a ball's) by rolling resistance alone, while
+ * collisions only lose energy: within 10 s, the issue's bound, where that is
+ * sooner.  (The balance found them unheld: the wedged ball slipped on both its
+ * points, and so resisted no turning, and the cone solve from nothing each
+ * round of rolling resistance's couples stalled at 5e-6 m/s^2; rest.c.)
+ * Under the sanitizers the first alone. */
+static void rough_row_in_slot_rests(void **state)
+{
+    (void)state;
+    const int heights[] = {4, 3};
+    int cases = 2;
+#ifdef UNDER_SANITIZERS
+    cases = 1;
+#endif
+    for (int k = 0; k < cases; k++) {
+        row_in_slot(heights[k], true);
+        world *w = &g_sh.w;
+        const body *b = w->bodies[w->n - 1];
+        double g = -world_accel(w).z, h = 0.1 * heights[k], c = b->rolling_friction;
+        double v = sqrt(2 * g * h + 0.25), t = 3 * sqrt(2 * h / g) + v * (1 + 0.4) / (c * g);
+        int frames = (int)fmin(100, ceil(t / 0.1));
+        char what[96];
+        snprintf(what, sizeof what, "26 rough balls in a row, from up to %g m", h);
+        print_message("%s: at rest within %.1f s by the physics, %d frames here\n", what, t, frames);
+        slot_crowd_rests(what, frames);
+    }
 }
 
 /* The crowd of the slot's world (run_slot's checks at every frame) rests within
- * 10 s, stays at rest 2 s more at under 1% of the pair checks per simulated
+ * `frames`, stays at rest 2 s more at under 1% of the pair checks per simulated
  * second before, and every point was answered: nothing moved apart at a frame's
  * end, no event guard, no problem unsolved. */
-static int slot_crowd_rests(const char *what)
+static int slot_crowd_rests(const char *what, int frames)
 {
     world *w = &g_sh.w;
-    int rested = run_slot(what, 100);
-    if (rested < 0) fail_msg("%s: not at rest after 10 s", what);
+    int rested = run_slot(what, frames);
+    if (rested < 0) fail_msg("%s: not at rest after %d frames", what, frames);
     long before = w->st.pair_checks;
     assert_int_equal(run("run 20"), CMD_OK);
     assert_true(all_rest(w));
@@ -630,7 +678,7 @@ static void hundred_in_slot(bool rough)
     g_slot_rise = rough ? 1e-4 : 1e-5;
     char dir[] = "/tmp/vroc-slot-XXXXXX";
     if (rough) assert_non_null(g_slot_save = mkdtemp(dir));
-    int rested = slot_crowd_rests(what);
+    int rested = slot_crowd_rests(what, 100);
     g_slot_rise = 1e-9;
     if (!rough) return;
     g_slot_save = NULL;
@@ -687,6 +735,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(ball_in_slot_rests),
         cmocka_unit_test(crowd_in_slot_rests),
+        cmocka_unit_test(rough_row_in_slot_rests),
         cmocka_unit_test(hundred_in_slot_rest),
         cmocka_unit_test(rough_hundred_in_slot_rest),
         cmocka_unit_test(grooves_rest),

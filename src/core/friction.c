@@ -943,12 +943,19 @@ int friction_compress(const impulse_row *rows, int m, body *const *bs, const boo
                       const double *u, double *lambda, friction_work *fw, friction_flags *f)
 {
     if (m <= 0 || friction_matrix(fw, rows, m, bs, mobile) != 0) return -1;
+    friction_problem P = friction_problem_of(fw, m);
+    for (int k = 0; k < m; k++) P.mu[k] = rows[k].mu;
+    for (int i = 0; i < 3 * m; i++) P.z[i] = 0;
+    return friction_compress_again(m, bs, mobile, u, lambda, fw, f);
+}
+
+int friction_compress_again(int m, body *const *bs, const bool *mobile, const double *u, double *lambda,
+                            friction_work *fw, friction_flags *f)
+{
     int n = 3 * m;
     friction_problem P = friction_problem_of(fw, m);
     for (int i = 0; i < n; i++)
         P.q[i] = u && i % 3 == 0 ? u[i / 3] : impulse_speed(&P.rows[i], bs);
-    for (int k = 0; k < m; k++) P.mu[k] = rows[k].mu;
-    for (int i = 0; i < n; i++) P.z[i] = 0;
     int st = friction_solve(fw, m, FRICTION_CROWD_SWEEPS, &f->painleve);
     if (st < 0) return -1;
     if (st > 0) f->unconverged = true;

@@ -173,6 +173,13 @@ friction_flags friction_impact(const impulse_row *r, body *const *bs, const bool
 int friction_compress(const impulse_row *rows, int m, body *const *bs, const bool *mobile,
                       const double *u, double *lambda, friction_work *fw, friction_flags *f);
 
+/* friction_compress's problem of m points once more, on bodies bs posed as
+ * then (so that its matrix holds) but moving otherwise: from its last
+ * impulses, which a small change of the speeds leaves near the answer (the
+ * rounds of a balance, rest.c).  Returns as friction_compress. */
+int friction_compress_again(int m, body *const *bs, const bool *mobile, const double *u, double *lambda,
+                            friction_work *fw, friction_flags *f);
+
 /* The restitution after friction_compress: e_k lambda_k along each point's
  * normal, scaled down (all alike) so far as the kinetic energy of the mobile
  * bodies would rise above ke_before.  Adds what it applied to lambda.  The

@@ -429,14 +429,20 @@ bool rest_slide_on(world *w, int i)
 /* The supports push the copies of rest_balanced (w->answer.now) at the nr points
  * of rows, with friction when rough (the cone solve's impulses in
  * friction_problem_of(w->answer.fw, nr).z), or along the normals: false when
- * that has no answer. */
-static bool push(world *w, const impulse_row *rows, int nr, bool rough)
+ * that has no answer.  A push again (rough only: a round of rolling
+ * resistance's couples) starts from the last push's impulses: the couples
+ * change the speeds little, and a cone solve started from nothing each round
+ * stopped short of its tolerance on a row of rough balls pressed end to end
+ * (300 sweeps and the polish), leaving ~5e-6 of noise against still's 1e-6,
+ * where one started from the last answer converges at once. */
+static bool push(world *w, const impulse_row *rows, int nr, bool rough, bool again)
 {
     body **bs = w->answer.now;
     row_work *rw = w->answer.rw;
     for (int k = 0; k < nr; k++) rw->u[k] = impulse_speed(&rows[k], bs);
     if (rough) {
         friction_flags f = {false, false, false};
+        if (again) return friction_compress_again(nr, bs, w->answer.mark, rw->u, rw->lam, w->answer.fw, &f) == 0;
         return friction_compress(rows, nr, bs, w->answer.mark, rw->u, rw->lam, w->answer.fw, &f) == 0;
     }
     return impulse_solve_in(rows, nr, bs, w->answer.mark, rw->u, rw->lam, rw->lcp, rw->A, rw->q, rw->wv) == 0;
@@ -466,44 +472,72 @@ static void push_copies(world *w, const int *list, int n, const double *M)
     }
 }
 
+/* What rolling resistance lets object i of the push resist: c r N summed over
+ * its points that stick (friction_roll's law, friction.h), N and sticking from
+ * the push's impulses z at the nr points of rows.  With dir (a unit axis;
+ * NULL: none), *over gets how many times more than its turning about dir a
+ * couple must be to stop it (roll_couples), HUGE_VAL without such a point. */
+static double roll_can(const body *b, int i, const impulse_row *rows, int nr, const double *z, const vec3 *dir,
+                       double *over)
+{
+    double can = 0, inertia = dir ? v3_dot(m3_mulv(body_inertia_world(b), *dir), *dir) : 0;
+    if (over) *over = HUGE_VAL;
+    for (int j = 0; j < nr; j++) {
+        const double *zj = &z[3 * j];
+        if ((rows[j].p != i && rows[j].q != i) || !(zj[0] > 0)) continue;
+        if (!(hypot(zj[1], zj[2]) < rows[j].mu * zj[0] * (1 - 1e-9))) continue;
+        can += rows[j].roll * v3_dist(rows[j].at, body_com(b)) * zj[0];
+        if (!dir) continue;
+        vec3 arm = v3_cross(*dir, v3_sub(body_com(b), rows[j].at));
+        *over = d_min(*over, 1 + b->mass * v3_len2(arm) / inertia);
+    }
+    return can;
+}
+
 /* Rolling resistance's couples M (three an object of list) after a push that
  * left the copies turning: each object's less what it is left turning (its
- * copy's angular momentum after the second), so as to stop that.  True when
- * some couple changed and each is within what its points resist: c r N summed
- * over those that stick (friction_roll's law, friction.h), N and sticking from
- * the push's impulses (friction_problem_of's z at the nr points of rows).  (The
- * couples only grow towards what holds: one that must pass that holds
- * nothing.) */
+ * copy's angular momentum after the second), so as to stop that, where that
+ * is within what it resists (roll_can).  True when some couple changed.  (The
+ * couples only grow towards what holds.  One that must pass that is left as
+ * it was this round, not given up on: in a row of rough balls pressed end to
+ * end, a ball wedged up between two others slips on both before its
+ * neighbours' couples hold them, and so resists nothing at first, though
+ * it turns by no more than the rounding; the balance still fails unless a
+ * push leaves every copy still with each couple within what it resists then,
+ * couples_hold.) */
 static bool roll_couples(world *w, const int *list, int n, const impulse_row *rows, int nr, double *M)
 {
     const double *z = friction_problem_of(w->answer.fw, nr).z;
     bool changed = false;
     for (int k = 0; k < n; k++) {
         int i = list[k];
-        const body *b = w->bodies[i];
         vec3 m0 = v3(M[3 * k], M[3 * k + 1], M[3 * k + 2]), left = w->answer.now[i]->L;
-        double len = v3_len(left);
+        double len = v3_len(left), over;
         if (!(len > 0)) continue;
         vec3 dir = v3_scale(left, 1 / len);
-        double inertia = v3_dot(m3_mulv(body_inertia_world(b), dir), dir), can = 0, over = HUGE_VAL;
-        for (int j = 0; j < nr; j++) {
-            const double *zj = &z[3 * j];
-            if ((rows[j].p != i && rows[j].q != i) || !(zj[0] > 0)) continue;
-            if (!(hypot(zj[1], zj[2]) < rows[j].mu * zj[0] * (1 - 1e-9))) continue;
-            can += rows[j].roll * v3_dist(rows[j].at, body_com(b)) * zj[0];
-            vec3 arm = v3_cross(dir, v3_sub(body_com(b), rows[j].at));
-            over = d_min(over, 1 + b->mass * v3_len2(arm) / inertia);
-        }
+        double can = roll_can(w->bodies[i], i, rows, nr, z, &dir, &over);
         /* turning about a stuck point, it answers a couple as its inertia
          * about that point, not about its centre of mass: so much more is
          * needed to stop it (a ball: 7/2 times; the least of its points',
          * so as not to overshoot) */
         vec3 m = v3_mad(m0, left, -(over < HUGE_VAL ? over : 1));
-        if (v3_len(m) > can) return false;
+        if (v3_len(m) > can) continue;
         changed = changed || v3_dist(m, m0) > 0;
         M[3 * k] = m.x, M[3 * k + 1] = m.y, M[3 * k + 2] = m.z;
     }
     return changed;
+}
+
+/* True when each couple of M (roll_couples') is within what its object resists
+ * after the last push (roll_can at its impulses). */
+static bool couples_hold(world *w, const int *list, int n, const impulse_row *rows, int nr, const double *M)
+{
+    const double *z = friction_problem_of(w->answer.fw, nr).z;
+    for (int k = 0; k < n; k++) {
+        double len = v3_len(v3(M[3 * k], M[3 * k + 1], M[3 * k + 2]));
+        if (len > 0 && len > roll_can(w->bodies[list[k]], list[k], rows, nr, z, NULL, NULL)) return false;
+    }
+    return true;
 }
 
 bool rest_balanced(world *w, const int *list, int n)
@@ -536,16 +570,17 @@ bool rest_balanced(world *w, const int *list, int n)
     int nr = rl.n;
     impulse_row *rows = rw->sub;
     bool rough = nr > 0 && friction_any(rows, nr);
-    ok = ok && nr > 0 && push(w, rows, nr, rough);
+    ok = ok && nr > 0 && push(w, rows, nr, rough, false);
     /* Those the push leaves turning may yet be held by rolling resistance: a
      * couple of up to c r N at each point that sticks (friction.h).  A couple
      * that stops an object's turning about its centre of mass leaves it
      * sliding over its stuck points, which the supports turn again (a ball:
      * 5/7 of it): so each object's couple grows by what it is left turning and
      * the supports push again, until all are still (held: a ball on a slope
-     * where tan th <= c, its couple m g r sin th) or a couple must pass what
-     * its points resist.  The couples are kept in rw->A (three an object; A
-     * is cap x cap). */
+     * where tan th <= c, its couple m g r sin th, each couple within what its
+     * points then resist) or no couple can grow within what its points
+     * resist.  The couples are kept in rw->A (three an object; A is cap x
+     * cap). */
     bool held = ok;
     for (int k = 0; k < n && held; k++) held = still(bs[list[k]]);
     if (ok && !held && rough && 3 * n <= rw->cap * rw->cap) {
@@ -554,10 +589,11 @@ bool rest_balanced(world *w, const int *list, int n)
         for (int round = 0; round < REST_ROLL_ROUNDS && ok && !held; round++) {
             if (!roll_couples(w, list, n, rows, nr, M)) break;
             push_copies(w, list, n, M);
-            ok = push(w, rows, nr, rough);
+            ok = push(w, rows, nr, rough, true);
             held = ok;
             for (int k = 0; k < n && held; k++) held = still(bs[list[k]]);
         }
+        held = held && couples_hold(w, list, n, rows, nr, M);
     }
     for (int k = 0; k < n; k++) {
         bs[list[k]] = w->bodies[list[k]];
