@@ -1,11 +1,13 @@
 /* cluster.c: a cluster's steps (cluster.h). */
 #include "cluster.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 
 #include "answer.h"
 #include "contact.h"
+#include "energy.h"
 #include "friction.h"
 #include "impulse.h"
 #include "lcp.h"
@@ -528,7 +530,7 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end)
     kick_record *rec = w->answer.kicks;
     for (int k = 0; k < n; k++) {
         const body *b = w->bodies[list[k]];
-        rec[list[k]] = (kick_record){t, h, b->v, b->L};
+        rec[list[k]] = (kick_record){t, h, b->v, b->L, energy_total(energy_of_body(w, b))};
     }
     apply_kicks(w, &pts, pts.nclosed, w->answer.now, rw->lam);
     for (int k = 0; k < n; k++) {
@@ -587,4 +589,82 @@ void cluster_settle(world *w, const int *list, int n)
             if (r.status == CLOSEST_SEPARATED && r.distance > held) p->touching = false;
         }
     }
+}
+
+double cluster_owed(const world *w, const int *list, int n, double t)
+{
+    double e0 = 0;
+    for (int k = 0; k < n; k++) {
+        const int i = list[k];
+        const kick_record *r = &w->answer.kicks[i];
+        const flight *f = &w->step.fl[i];
+        if (!(r->h > 0) || r->t0 + r->h != t || f->t0 != r->t0 || f->kind != FLIGHT_FREE ||
+            w->bodies[i]->held)
+            return NAN;
+        /* (a held object pressing on it works on it) */
+        FOR_PAIRS_OF(w, i, link, p) {
+            if (p->touching && w->bodies[link->other]->held) return NAN;
+        }
+        e0 += r->e0;
+    }
+    return e0;
+}
+
+/* The n objects of list, settled at the end of a whole step, whose energy
+ * before its kicks was `owed`: what they have more than that (the step's
+ * error: its contacts did no work) is taken back along the change the
+ * contacts' impulses made to their motion over the step (each object's, in
+ * its kick record's dv and dL), so that what the contacts do not act on stays
+ * as it was (on a frictionless floor, the motion along it and the spin about
+ * its normal; a free cluster's momentum).  Along that change the kinetic
+ * energy is a parabola; the least step down it that pays the excess is taken,
+ * or its vertex where the excess is more than the parabola holds. */
+static bool pay_excess(world *w, const int *list, int n, double owed)
+{
+    double e = 0, kinetic = 0, b = 0, c = 0;
+    for (int k = 0; k < n; k++) {
+        const body *o = w->bodies[list[k]];
+        const kick_record *r = &w->answer.kicks[list[k]];
+        energy_sum s = energy_of_body(w, o);
+        e += energy_total(s);
+        kinetic += energy_kinetic(s);
+        b += o->mass * v3_dot(o->v, r->dv) + v3_dot(o->w, r->dL);
+        c += 0.5 * (o->mass * v3_len2(r->dv) + v3_dot(r->dL, body_inertia_inv_mulv(o, r->dL)));
+    }
+    double excess = e - owed;
+    /* (rounding of the sums: a few ulps of what they add) */
+    if (!(excess > 64 * DBL_EPSILON * (fabs(owed) + kinetic)) || !(c > 0) || b == 0) return false;
+    /* kinetic energy less beta (b - c beta) = less the excess */
+    double disc = b * b - 4 * c * excess;
+    double beta = disc >= 0 ? 2 * excess / (b + copysign(sqrt(disc), b)) : b / (2 * c);
+    for (int k = 0; k < n; k++) {
+        body *o = w->bodies[list[k]];
+        const kick_record *r = &w->answer.kicks[list[k]];
+        o->v = v3_mad(o->v, r->dv, -beta);
+        o->L = v3_mad(o->L, r->dL, -beta);
+        body_update_w(o);
+    }
+    return true;
+}
+
+void cluster_settle_owing(world *w, const int *list, int n, double owed)
+{
+    bool keep = isfinite(owed);
+    kick_record *rec = w->answer.kicks;
+    /* (each kick record's dv and dL become the whole change the contacts made
+     * over the step: the start kick's and the last kicks') */
+    for (int k = 0; keep && k < n; k++) {
+        const body *o = w->bodies[list[k]];
+        rec[list[k]].dv = v3_sub(rec[list[k]].dv, o->v);
+        rec[list[k]].dL = v3_sub(rec[list[k]].dL, o->L);
+    }
+    cluster_settle(w, list, n);
+    if (!keep) return;
+    for (int k = 0; k < n; k++) {
+        const body *o = w->bodies[list[k]];
+        rec[list[k]].dv = v3_add(rec[list[k]].dv, o->v);
+        rec[list[k]].dL = v3_add(rec[list[k]].dL, o->L);
+    }
+    /* (what that left approaching stops again: that only takes energy) */
+    if (pay_excess(w, list, n, owed)) cluster_settle(w, list, n);
 }

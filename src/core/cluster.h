@@ -44,6 +44,22 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end);
  * end. */
 void cluster_settle(world *w, const int *list, int n);
 
+/* The energy the n objects of list had before their cluster steps' kicks, when
+ * each flew freely from its kick to that step's end at t, untouched on the
+ * way (by an instant, which ends the step), neither held nor touching a held
+ * object (which works on it); else NAN.  Before their kick records are
+ * cleared. */
+double cluster_owed(const world *w, const int *list, int n, double t);
+
+/* cluster_settle, and then, when the objects owed energy (cluster_owed: not
+ * NAN) and have more than that, the excess taken back from the motion the
+ * contacts gave them over the step.  Contacts without friction do no work and
+ * friction only takes, but a step's first kick lends the objects kinetic
+ * energy (half its impulse times the speed it gives) that its last kicks take
+ * back at the step's end, after they have turned: an object tipping over an
+ * edge got back ~1e-4 of the loan too much every step (issue 35). */
+void cluster_settle_owing(world *w, const int *list, int n, double owed);
+
 /* How fast a point of b may close on what it is kept against between its
  * cluster's kicks, by the steps alone: as fast as its acceleration (the force's,
  * and its turn's, at most 2 w^2 R for a free body) changes its speed over a
