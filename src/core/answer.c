@@ -83,7 +83,7 @@ int answer_prepare(world *w, bool changed)
         s->now[i] = w->bodies[i];
         s->mark[i] = false;
         s->landing[i] = -1;
-        s->kicks[i].h = 0;
+        s->kicks[i] = (kick_record){.h = 0};
     }
     return 0;
 }

@@ -530,7 +530,9 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end)
     kick_record *rec = w->answer.kicks;
     for (int k = 0; k < n; k++) {
         const body *b = w->bodies[list[k]];
-        rec[list[k]] = (kick_record){t, h, b->v, b->L, energy_total(energy_of_body(w, b))};
+        kick_record *r = &rec[list[k]];
+        double debt = r->debt_t == t ? r->debt : 0;
+        *r = (kick_record){t, h, b->v, b->L, energy_total(energy_of_body(w, b)) - debt, 0, 0};
     }
     apply_kicks(w, &pts, pts.nclosed, w->answer.now, rw->lam);
     for (int k = 0; k < n; k++) {
@@ -610,16 +612,24 @@ double cluster_owed(const world *w, const int *list, int n, double t)
     return e0;
 }
 
-/* The n objects of list, settled at the end of a whole step, whose energy
- * before its kicks was `owed`: what they have more than that (the step's
- * error: its contacts did no work) is taken back along the change the
- * contacts' impulses made to their motion over the step (each object's, in
- * its kick record's dv and dL), so that what the contacts do not act on stays
- * as it was (on a frictionless floor, the motion along it and the spin about
- * its normal; a free cluster's momentum).  Along that change the kinetic
- * energy is a parabola; the least step down it that pays the excess is taken,
- * or its vertex where the excess is more than the parabola holds. */
-static bool pay_excess(world *w, const int *list, int n, double owed)
+void cluster_carry(world *w, const int *list, int n, double owed, double t)
+{
+    kick_record *rec = w->answer.kicks;
+    double e = 0, more = 0;
+    for (int k = 0; k < n; k++) {
+        double ek = energy_total(energy_of_body(w, w->bodies[list[k]]));
+        e += ek;
+        more += d_max(0, ek - rec[list[k]].e0);
+    }
+    double excess = e - owed;
+    for (int k = 0; k < n && excess > 0 && more > 0; k++) {
+        double ek = energy_total(energy_of_body(w, w->bodies[list[k]]));
+        rec[list[k]].debt = excess * d_max(0, ek - rec[list[k]].e0) / more;
+        rec[list[k]].debt_t = t;
+    }
+}
+
+bool cluster_pay_excess(world *w, const int *list, int n, double owed)
 {
     double e = 0, kinetic = 0, b = 0, c = 0;
     for (int k = 0; k < n; k++) {
@@ -647,6 +657,25 @@ static bool pay_excess(world *w, const int *list, int n, double owed)
     return true;
 }
 
+void cluster_slow_excess(world *w, const int *list, int n, double owed)
+{
+    double e = 0, kinetic = 0;
+    for (int k = 0; k < n; k++) {
+        energy_sum s = energy_of_body(w, w->bodies[list[k]]);
+        e += energy_total(s);
+        kinetic += energy_kinetic(s);
+    }
+    double left = e - owed;
+    if (!(left > 64 * DBL_EPSILON * (fabs(owed) + kinetic)) || !(left < 0.5 * kinetic)) return;
+    double by = sqrt(1 - left / kinetic);
+    for (int k = 0; k < n; k++) {
+        body *o = w->bodies[list[k]];
+        o->v = v3_scale(o->v, by);
+        o->L = v3_scale(o->L, by);
+        body_update_w(o);
+    }
+}
+
 void cluster_settle_owing(world *w, const int *list, int n, double owed)
 {
     bool keep = isfinite(owed);
@@ -666,5 +695,7 @@ void cluster_settle_owing(world *w, const int *list, int n, double owed)
         rec[list[k]].dL = v3_add(rec[list[k]].dL, o->L);
     }
     /* (what that left approaching stops again: that only takes energy) */
-    if (pay_excess(w, list, n, owed)) cluster_settle(w, list, n);
+    if (cluster_pay_excess(w, list, n, owed)) cluster_settle(w, list, n);
+    cluster_slow_excess(w, list, n, owed);
+    cluster_carry(w, list, n, owed, rec[list[0]].t0 + rec[list[0]].h);
 }
