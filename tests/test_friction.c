@@ -422,7 +422,7 @@ static void cone_solve_in_blocks_matches_dense(void **state)
         for (int k = 0; k < m; k++) c->mu[k] = fw.mu[k] = mu;
         bool jam = false;
         int sd = friction_cone_solve(m, fw.A, fw.q, fw.mu, fw.z, fw.w, &jam);
-        int ss = friction_crowd_solve(c, m, FRICTION_CROWD_SWEEPS, &jam);
+        int ss = friction_crowd_solve(c, m, FRICTION_CROWD_SWEEPS, 0, &jam);
         assert_true(sd >= 0 && ss >= 0);
         unconverged += ss > 0;
         double scale = 0;

@@ -612,8 +612,10 @@ static bool polish(int m, const double *A, const double *q, const double *mu, do
     return false;
 }
 
-int friction_cone_solve(int m, const double *A, const double *q, const double *mu, double *z,
-                        double *w, bool *painleve)
+/* friction_cone_solve, its sweeps stopping once their change is no more than
+ * loose (a speed), where that is above FRICTION_TOL's. */
+static int cone_solve(int m, const double *A, const double *q, const double *mu, double *z, double *w,
+                      double loose, bool *painleve)
 {
     int n = 3 * m;
     for (int i = 0; i < n; i++)
@@ -667,7 +669,7 @@ int friction_cone_solve(int m, const double *A, const double *q, const double *m
             size = d_max(size, fabs(zk[0]) + sqrt(zk[1] * zk[1] + zk[2] * zk[2]));
         }
         for (int i = 0; i < n; i++) change = d_max(change, fabs(w[i] - w0[i]));
-        double tol = FRICTION_TOL * (qs + diag * size);
+        double tol = d_max(FRICTION_TOL * (qs + diag * size), loose);
         /* the polish after every tenth sweep, and once early: after the second
          * sweep its first round alone, which holds where the sweeps have found
          * the pattern (mostly so in the clusters' Newton steps, started from
@@ -697,6 +699,12 @@ int friction_cone_solve(int m, const double *A, const double *q, const double *m
     }
     if (painleve && jam) *painleve = true;
     return status;
+}
+
+int friction_cone_solve(int m, const double *A, const double *q, const double *mu, double *z,
+                        double *w, bool *painleve)
+{
+    return cone_solve(m, A, q, mu, z, w, 0, painleve);
 }
 
 /* ---- crowds: the cone problem in blocks, past FRICTION_MAX_POINTS ---- */
@@ -871,7 +879,7 @@ void friction_crowd_mulv(const friction_crowd *c, int m, const double *x, double
     }
 }
 
-int friction_crowd_solve(friction_crowd *c, int m, int sweeps, bool *painleve)
+int friction_crowd_solve(friction_crowd *c, int m, int sweeps, double loose, bool *painleve)
 {
     int n = 3 * m;
     double *z = c->z, *w = c->w;
@@ -921,7 +929,7 @@ int friction_crowd_solve(friction_crowd *c, int m, int sweeps, bool *painleve)
         }
         for (int i = 0; i < n; i++) change = d_max(change, fabs(w[i] - c->w0[i]));
         c->sweeps = sweep + 1;
-        if (change <= FRICTION_TOL * (qs + diag * size)) {
+        if (change <= d_max(FRICTION_TOL * (qs + diag * size), loose)) {
             status = 0;
             break;
         }
@@ -933,10 +941,10 @@ int friction_crowd_solve(friction_crowd *c, int m, int sweeps, bool *painleve)
     return status;
 }
 
-int friction_solve(friction_work *fw, int m, int sweeps, bool *painleve)
+int friction_solve(friction_work *fw, int m, int sweeps, double loose, bool *painleve)
 {
-    if (m > FRICTION_MAX_POINTS) return friction_crowd_solve(&fw->crowd, m, sweeps, painleve);
-    return friction_cone_solve(m, fw->A, fw->q, fw->mu, fw->z, fw->w, painleve);
+    if (m > FRICTION_MAX_POINTS) return friction_crowd_solve(&fw->crowd, m, sweeps, loose, painleve);
+    return cone_solve(m, fw->A, fw->q, fw->mu, fw->z, fw->w, loose, painleve);
 }
 
 int friction_compress(const impulse_row *rows, int m, body *const *bs, const bool *mobile,
@@ -956,7 +964,7 @@ int friction_compress_again(int m, body *const *bs, const bool *mobile, const do
     friction_problem P = friction_problem_of(fw, m);
     for (int i = 0; i < n; i++)
         P.q[i] = u && i % 3 == 0 ? u[i / 3] : impulse_speed(&P.rows[i], bs);
-    int st = friction_solve(fw, m, FRICTION_CROWD_SWEEPS, &f->painleve);
+    int st = friction_solve(fw, m, FRICTION_CROWD_SWEEPS, 0, &f->painleve);
     if (st < 0) return -1;
     if (st > 0) f->unconverged = true;
     impulse_apply(P.rows, n, bs, mobile, P.z);

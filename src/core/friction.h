@@ -123,13 +123,17 @@ void friction_crowd_mulv(const friction_crowd *c, int m, const double *x, double
  * z from c->z as given, w into c->w): block Gauss-Seidel with each point's 3 x 3
  * problem solved exactly, as friction_cone_solve's sweeps, over-relaxed
  * (FRICTION_CROWD_OMEGA), each sweep over the nonzero blocks alone, with no
- * polish, for `sweeps` at most.  Returns as friction_cone_solve. */
-int friction_crowd_solve(friction_crowd *c, int m, int sweeps, bool *painleve);
+ * polish, for `sweeps` at most, stopping once a sweep's change is no more
+ * than loose (a speed: 0 for FRICTION_TOL alone).  Returns as
+ * friction_cone_solve. */
+int friction_crowd_solve(friction_crowd *c, int m, int sweeps, double loose, bool *painleve);
 
 /* The cone solve of the problem friction_matrix set up, its q, mu and z (the
  * guess) in friction_problem_of's arrays: friction_cone_solve, or
- * friction_crowd_solve for `sweeps` at most. */
-int friction_solve(friction_work *fw, int m, int sweeps, bool *painleve);
+ * friction_crowd_solve for `sweeps` at most; the sweeps stop once their change
+ * is no more than loose (a speed), where that is above FRICTION_TOL's (0:
+ * FRICTION_TOL alone), as in the early steps of an inexact Newton's method. */
+int friction_solve(friction_work *fw, int m, int sweeps, double loose, bool *painleve);
 
 /* Frees the crowd's arrays of fw (fw itself is the caller's). */
 void friction_work_free(friction_work *fw);
