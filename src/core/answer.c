@@ -84,7 +84,7 @@ int answer_prepare(world *w, bool changed)
         s->now[i] = w->bodies[i];
         s->mark[i] = false;
         s->landing[i] = -1;
-        s->kicks[i] = (kick_record){.h = 0};
+        s->kicks[i].h = 0;
     }
     return 0;
 }
@@ -170,9 +170,10 @@ void answer_object(world *w, int i, double t, double t_end)
         return;
     }
     int n = rest_cluster(w, i, mine);
-    for (int j = 0; j < n; j++) step_sync(w, mine[j], t);
-    double owed = cluster_owed(w, mine, n, t);
-    for (int j = 0; j < n; j++) w->answer.kicks[mine[j]].h = 0;
+    for (int j = 0; j < n; j++) {
+        step_sync(w, mine[j], t);
+        w->answer.kicks[mine[j]].h = 0;
+    }
     /* the step ends with its last kicks, which stop its closed points
      * approaching; where it ends at a new support point's landing, that is
      * then an instant, which goes on to the modes and the next step itself (so
@@ -182,7 +183,7 @@ void answer_object(world *w, int i, double t, double t_end)
      * landing's speed) */
     instant_seed *seeds = w->answer.seeds;
     int ns = landings(w, mine, n, seeds);
-    cluster_settle_owing(w, mine, n, owed);
+    cluster_settle(w, mine, n);
     if (ns > 0) {
         /* (their flights from the kicked states, which the instant brings its
          * objects to t by) */

@@ -29,17 +29,11 @@ typedef struct row_work row_work;
  * so that no event allocates.  Each list and copy has the one user named here,
  * so that none is borrowed while another holds it. */
 /* The start kick of a cluster's step (cluster.h) that is under way: when it began
- * (t0), its length h (0: none under way), the velocity and angular momentum
- * the kick gave the object (dv, dL), and its energy before it (e0: kinetic, and
- * potential under the global force) less what it still owed then (debt, left
- * at time debt_t by an instant that ended its last step before its end:
- * instant.c's repay, or by a step whose excess its motion could not give
- * back: cluster.h's cluster_carry). */
+ * (t0), its length h (0: none under way), and the velocity and angular momentum
+ * the kick gave the object (dv, dL). */
 typedef struct {
     double t0, h;
     vec3 dv, dL;
-    double e0;
-    double debt, debt_t;
 } kick_record;
 
 typedef struct {

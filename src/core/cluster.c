@@ -1,13 +1,11 @@
 /* cluster.c: a cluster's steps (cluster.h). */
 #include "cluster.h"
 
-#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 
 #include "answer.h"
 #include "contact.h"
-#include "energy.h"
 #include "friction.h"
 #include "impulse.h"
 #include "lcp.h"
@@ -559,9 +557,7 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end)
     kick_record *rec = w->answer.kicks;
     for (int k = 0; k < n; k++) {
         const body *b = w->bodies[list[k]];
-        kick_record *r = &rec[list[k]];
-        double debt = r->debt_t == t ? r->debt : 0;
-        *r = (kick_record){t, h, b->v, b->L, energy_total(energy_of_body(w, b)) - debt, 0, 0};
+        rec[list[k]] = (kick_record){t, h, b->v, b->L};
     }
     apply_kicks(w, &pts, pts.nclosed, w->answer.now, rw->lam);
     for (int k = 0; k < n; k++) {
@@ -618,111 +614,4 @@ void cluster_settle(world *w, const int *list, int n)
             if (r.status == CLOSEST_SEPARATED && r.distance > held) p->touching = false;
         }
     }
-}
-
-double cluster_owed(const world *w, const int *list, int n, double t)
-{
-    double e0 = 0;
-    for (int k = 0; k < n; k++) {
-        const int i = list[k];
-        const kick_record *r = &w->answer.kicks[i];
-        const flight *f = &w->step.fl[i];
-        if (!(r->h > 0) || r->t0 + r->h != t || f->t0 != r->t0 || f->kind != FLIGHT_FREE ||
-            w->bodies[i]->held)
-            return NAN;
-        /* (a held object pressing on it works on it) */
-        FOR_PAIRS_OF(w, i, link, p) {
-            if (p->touching && w->bodies[link->other]->held) return NAN;
-        }
-        e0 += r->e0;
-    }
-    return e0;
-}
-
-void cluster_carry(world *w, const int *list, int n, double owed, double t)
-{
-    kick_record *rec = w->answer.kicks;
-    double e = 0, more = 0;
-    for (int k = 0; k < n; k++) {
-        double ek = energy_total(energy_of_body(w, w->bodies[list[k]]));
-        e += ek;
-        more += d_max(0, ek - rec[list[k]].e0);
-    }
-    double excess = e - owed;
-    for (int k = 0; k < n && excess > 0 && more > 0; k++) {
-        double ek = energy_total(energy_of_body(w, w->bodies[list[k]]));
-        rec[list[k]].debt = excess * d_max(0, ek - rec[list[k]].e0) / more;
-        rec[list[k]].debt_t = t;
-    }
-}
-
-bool cluster_pay_excess(world *w, const int *list, int n, double owed)
-{
-    double e = 0, kinetic = 0, b = 0, c = 0;
-    for (int k = 0; k < n; k++) {
-        const body *o = w->bodies[list[k]];
-        const kick_record *r = &w->answer.kicks[list[k]];
-        energy_sum s = energy_of_body(w, o);
-        e += energy_total(s);
-        kinetic += energy_kinetic(s);
-        b += o->mass * v3_dot(o->v, r->dv) + v3_dot(o->w, r->dL);
-        c += 0.5 * (o->mass * v3_len2(r->dv) + v3_dot(r->dL, body_inertia_inv_mulv(o, r->dL)));
-    }
-    double excess = e - owed;
-    /* (rounding of the sums: a few ulps of what they add) */
-    if (!(excess > 64 * DBL_EPSILON * (fabs(owed) + kinetic)) || !(c > 0) || b == 0) return false;
-    /* kinetic energy less beta (b - c beta) = less the excess */
-    double disc = b * b - 4 * c * excess;
-    double beta = disc >= 0 ? 2 * excess / (b + copysign(sqrt(disc), b)) : b / (2 * c);
-    for (int k = 0; k < n; k++) {
-        body *o = w->bodies[list[k]];
-        const kick_record *r = &w->answer.kicks[list[k]];
-        o->v = v3_mad(o->v, r->dv, -beta);
-        o->L = v3_mad(o->L, r->dL, -beta);
-        body_update_w(o);
-    }
-    return true;
-}
-
-void cluster_slow_excess(world *w, const int *list, int n, double owed)
-{
-    double e = 0, kinetic = 0;
-    for (int k = 0; k < n; k++) {
-        energy_sum s = energy_of_body(w, w->bodies[list[k]]);
-        e += energy_total(s);
-        kinetic += energy_kinetic(s);
-    }
-    double left = e - owed;
-    if (!(left > 64 * DBL_EPSILON * (fabs(owed) + kinetic)) || !(left < 0.5 * kinetic)) return;
-    double by = sqrt(1 - left / kinetic);
-    for (int k = 0; k < n; k++) {
-        body *o = w->bodies[list[k]];
-        o->v = v3_scale(o->v, by);
-        o->L = v3_scale(o->L, by);
-        body_update_w(o);
-    }
-}
-
-void cluster_settle_owing(world *w, const int *list, int n, double owed)
-{
-    bool keep = isfinite(owed);
-    kick_record *rec = w->answer.kicks;
-    /* (each kick record's dv and dL become the whole change the contacts made
-     * over the step: the start kick's and the last kicks') */
-    for (int k = 0; keep && k < n; k++) {
-        const body *o = w->bodies[list[k]];
-        rec[list[k]].dv = v3_sub(rec[list[k]].dv, o->v);
-        rec[list[k]].dL = v3_sub(rec[list[k]].dL, o->L);
-    }
-    cluster_settle(w, list, n);
-    if (!keep) return;
-    for (int k = 0; k < n; k++) {
-        const body *o = w->bodies[list[k]];
-        rec[list[k]].dv = v3_add(rec[list[k]].dv, o->v);
-        rec[list[k]].dL = v3_add(rec[list[k]].dL, o->L);
-    }
-    /* (what that left approaching stops again: that only takes energy) */
-    if (cluster_pay_excess(w, list, n, owed)) cluster_settle(w, list, n);
-    cluster_slow_excess(w, list, n, owed);
-    cluster_carry(w, list, n, owed, rec[list[0]].t0 + rec[list[0]].h);
 }

@@ -44,50 +44,6 @@ double cluster_kick(world *w, const int *list, int n, double t, double t_end);
  * end. */
 void cluster_settle(world *w, const int *list, int n);
 
-/* The energy the n objects of list had before their cluster steps' kicks (less
- * what an instant had left them owing as the steps began: kick_record), when
- * each flew freely from its kick to that step's end at t, untouched on the
- * way (by an instant, which ends the step), neither held nor touching a held
- * object (which works on it); else NAN.  Before their kick records are
- * cleared. */
-double cluster_owed(const world *w, const int *list, int n, double t);
-
-/* cluster_settle, and then, when the objects owed energy (cluster_owed: not
- * NAN) and have more than that, the excess taken back from the motion the
- * contacts gave them over the step.  Contacts without friction do no work and
- * friction only takes, but a step's first kick lends the objects kinetic
- * energy (half its impulse times the speed it gives) that its last kicks take
- * back at the step's end, after they have turned: an object tipping over an
- * edge got back ~1e-4 of the loan too much every step (issue 35). */
-void cluster_settle_owing(world *w, const int *list, int n, double owed);
-
-/* The n objects of list, whose energy was `owed` before impulses that did no
- * work (frictionless contacts, e <= 1) changed their motion by their kick
- * records' dv and dL: what they have more than that (the impulses' error: a
- * step's kicks that lent energy and took back a different amount, or an
- * instant that ended a step with its loan) is taken back along that change,
- * so that what the impulses did not act on stays as it was (on a frictionless
- * floor, the motion along it and the spin about its normal; a free cluster's
- * momentum).  Along that change the kinetic energy is a parabola; the least
- * step down it that pays the excess is taken, or its vertex where the excess
- * is more than the parabola holds.  True when it took something (what it left
- * approaching is the caller's to stop). */
-bool cluster_pay_excess(world *w, const int *list, int n, double owed);
-
-/* What the n objects of list still have more than `owed` after
- * cluster_pay_excess and their stop, taken from all their motion, slowed by
- * as much as that takes, where it is less than half their kinetic energy
- * (the impulses' error is no more theirs than the rest of the motion's; a
- * free cluster's momentum is not kept there).  No point between two of them,
- * or on a static object, approaches that did not: each speed scales alike. */
-void cluster_slow_excess(world *w, const int *list, int n, double owed);
-
-/* What the n objects of list have more than they owed (after
- * cluster_pay_excess), left owing by those that have more than their kick
- * records' e0 (in proportion), for the steps that begin at t to take back
- * at their ends (cluster_kick takes it from its e0). */
-void cluster_carry(world *w, const int *list, int n, double owed, double t);
-
 /* How fast a point of b may close on what it is kept against between its
  * cluster's kicks, by the steps alone: as fast as its acceleration (the force's,
  * and its turn's, at most 2 w^2 R for a free body) changes its speed over a

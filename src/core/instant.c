@@ -16,7 +16,6 @@
 
 #include "answer.h"
 #include "cluster.h"
-#include "energy.h"
 #include "friction.h"
 #include "grow.h"
 #include "impulse.h"
@@ -88,12 +87,6 @@ struct instant_work {
     bool checked;   /* and instant_answer has seen that the seeds close without */
     int *backs;     /* the seeds' objects they were taken back from, nbacks */
     int nbacks;
-    /* per object, from when it joined (repay): the energy it owes (kicked, its
-     * energy before the kick; NAN where unknown), its velocity and angular
-     * momentum without the kick; and the mobile objects (nmob) */
-    double *owe;
-    vec3 *v0, *L0;
-    int *mob, nmob;
 };
 
 /* Makes room for at least nc contacts and nr rows, keeping what I holds: 0, or
@@ -131,10 +124,6 @@ int instant_prepare(instant_work **iw, int n)
     I->opened = grow_resized(I->opened, sizeof *I->opened, n, &ok);
     I->objects = grow_resized(I->objects, sizeof *I->objects, n, &ok);
     I->backs = grow_resized(I->backs, sizeof *I->backs, n, &ok);
-    I->owe = grow_resized(I->owe, sizeof *I->owe, n, &ok);
-    I->v0 = grow_resized(I->v0, sizeof *I->v0, n, &ok);
-    I->L0 = grow_resized(I->L0, sizeof *I->L0, n, &ok);
-    I->mob = grow_resized(I->mob, sizeof *I->mob, n, &ok);
     if (!ok) return -1;
     for (int i = I->cap; i < n; i++) I->joined[i] = I->opened[i] = false;
     I->cap = n;
@@ -148,10 +137,6 @@ void instant_free(instant_work *iw)
     free(iw->opened);
     free(iw->objects);
     free(iw->backs);
-    free(iw->owe);
-    free(iw->v0);
-    free(iw->L0);
-    free(iw->mob);
     free(iw->c);
     free(iw->wave);
     free(iw->row);
@@ -188,28 +173,6 @@ static void kick_share(world *w, const instant_work *I, int i, double sign)
     step_start(w, i, I->t);
 }
 
-/* What mobile object i, joining the instant at its time, owes (repay): its
- * energy there, less what an instant at this time left it owing; or where a
- * cluster's step kicked it and it has flown freely since, its energy before
- * the kick; and its motion without the kick. */
-static void note_owed(world *w, instant_work *I, int i)
-{
-    if (!mobile(w, i)) return;
-    I->mob[I->nmob++] = i;
-    const body *b = w->bodies[i];
-    const kick_record *k = &w->answer.kicks[i];
-    const flight *f = &w->step.fl[i];
-    I->v0[i] = b->v;
-    I->L0[i] = b->L;
-    if (k->h > 0 && I->t >= k->t0 && I->t < k->t0 + k->h) {
-        I->owe[i] = f->kind == FLIGHT_FREE && f->t0 == k->t0 ? k->e0 : NAN;
-        I->v0[i] = v3_sub(b->v, k->dv);
-        I->L0[i] = v3_sub(b->L, k->dL);
-    } else {
-        I->owe[i] = energy_total(energy_of_body(w, b)) - (k->debt_t == I->t ? k->debt : 0);
-    }
-}
-
 /* Object i joins the instant: brought to its time.  One within the first half
  * of a cluster's step has its velocities as the step's contact forces would
  * have them there: the step's start kick gave it at once the impulse of the
@@ -227,7 +190,6 @@ static void join(world *w, instant_work *I, int i)
     I->objects[I->nobj++] = i;
     I->hand = I->hand || w->bodies[i]->held;
     step_sync(w, i, I->t);
-    note_owed(w, I, i);
     kick_record *k = &w->answer.kicks[i];
     if (I->take_back && k->h > 0 && I->t >= k->t0 && I->t < k->t0 + k->h) {
         kick_share(w, I, i, -1);
@@ -535,48 +497,6 @@ static void limit_all(world *w, instant_work *I)
     solve(w, I, SOLVE_LIMITS);
 }
 
-/* An instant within a cluster's step ends it before its last kicks, with what
- * its start kick lent the objects (cluster.h's cluster_settle_owing) not taken
- * back: all of it where the kicks made the instant (instant_answer), the
- * share join leaves elsewhere.  So the instant's objects leave with no more
- * energy than they owed (note_owed), as a whole step's end does, since its
- * impulses (e <= 1, no friction) make none: the excess is taken back from the
- * change that the kicks and the instant made to their motion
- * (cluster_pay_excess), and what that leaves approaching stops.  Not where a
- * held object is among them or touches one: it works on them; nor with
- * friction, whose change to their motion is what it took (given back, it
- * would keep them sliding). */
-static void repay(world *w, instant_work *I)
-{
-    if (I->hand || I->nmob == 0) return;
-    for (int k = 0; k < I->nc; k++)
-        if (I->c[k].rough) return;
-    double owed = 0;
-    kick_record *rec = w->answer.kicks;
-    for (int k = 0; k < I->nmob; k++) {
-        int i = I->mob[k];
-        const body *b = w->bodies[i];
-        FOR_PAIRS_OF(w, i, link, p) {
-            if (p->touching && w->bodies[link->other]->held) return;
-        }
-        owed += I->owe[i];
-        /* (its kick record is spent: join) */
-        rec[i].e0 = I->owe[i];
-        rec[i].debt = 0;
-        rec[i].dv = v3_sub(b->v, I->v0[i]);
-        rec[i].dL = v3_sub(b->L, I->L0[i]);
-    }
-    if (cluster_pay_excess(w, I->mob, I->nmob, owed)) {
-        for (int k = 0; k < I->nc; k++) I->wave[k] = true;
-        solve(w, I, SOLVE_LIMITS);
-    }
-    cluster_slow_excess(w, I->mob, I->nmob, owed);
-    /* what their motion could not give back (as where they are still: the
-     * kick also lifted them over the part of the step they flew) stays owed,
-     * for the steps that they begin now (go_on) to take back at their ends */
-    cluster_carry(w, I->mob, I->nmob, owed, I->t);
-}
-
 /* One event for each contact that took an impulse, at the mean of where its
  * impulses act. */
 static void report(world *w, const instant_work *I)
@@ -635,7 +555,7 @@ void instant_answer(world *w, const instant_seed *seeds, int n, double t, double
 {
     instant_work *I = w->answer.instant;
     I->t = t;
-    I->nc = I->nr = I->nobj = I->nbacks = I->nmob = 0;
+    I->nc = I->nr = I->nobj = I->nbacks = 0;
     I->take_back = true;
     I->checked = false;
     I->hand = false;
@@ -676,7 +596,6 @@ void instant_answer(world *w, const instant_seed *seeds, int n, double t, double
         }
         waves(w, I);
         limit_all(w, I);
-        repay(w, I);
         report(w, I);
         stay_or_part(w, I);
         go_on(w, I, t_end);
